@@ -1,0 +1,11 @@
+#pragma once
+// General MIDI level 1 program names, for reports and instrument auto-detection.
+
+#include <string_view>
+
+namespace tutti::music {
+
+// Program 0..127 (0 = Acoustic Grand Piano). Out of range gives "Unknown".
+std::string_view general_midi_program_name(int program);
+
+}  // namespace tutti::music

@@ -1,0 +1,98 @@
+#include "app/info_command.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/exit_codes.hpp"
+#include "testdata.hpp"
+
+namespace tutti::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct InfoRun {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+InfoRun run(const fs::path& file, bool json) {
+  std::ostringstream out;
+  std::ostringstream err;
+  InfoRun r;
+  r.code = run_info(InfoOptions{file, json}, out, err);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
+class InfoCommandTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    pig_ = fs::temp_directory_path() / "tutti-info-test.txt";
+    std::ofstream(pig_) << "//Version: PigletFormat 1.0\n"
+                           "0\t0.0\t0.5\tC4\t64\t80\t0\t1\n"
+                           "1\t0.5\t1.0\tG4\t64\t80\t0\t5\n"
+                           "2\t0.0\t2.0\tC3\t64\t80\t1\t-5\n";
+  }
+  void TearDown() override { fs::remove(pig_); }
+  fs::path pig_;
+};
+
+TEST_F(InfoCommandTest, JsonHasTheDocumentedShape) {
+  const InfoRun r = run(pig_, true);
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_TRUE(r.err.empty());
+  const auto json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json["notes"], 3);
+  EXPECT_DOUBLE_EQ(json["duration_s"].get<double>(), 2.0);
+  EXPECT_EQ(json["format"], "PIG");
+  ASSERT_EQ(json["parts"].size(), 2u);
+  const auto& right = json["parts"][0];
+  EXPECT_EQ(right["name"], "Right hand");
+  EXPECT_EQ(right["program"], 0);
+  EXPECT_EQ(right["notes"], 2);
+  EXPECT_EQ(right["lowest"], 60);
+  EXPECT_EQ(right["highest"], 67);
+  EXPECT_EQ(json["parts"][1]["lowest"], 48);
+  EXPECT_EQ(json["fingered_notes"], 3);
+}
+
+TEST_F(InfoCommandTest, TextReportNamesPartsAndRanges) {
+  const InfoRun r = run(pig_, false);
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("notes: 3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Right hand"), std::string::npos);
+  EXPECT_NE(r.out.find("C4..G4 (60..67)"), std::string::npos) << r.out;
+}
+
+TEST_F(InfoCommandTest, SameInputSameBytes) {
+  EXPECT_EQ(run(pig_, true).out, run(pig_, true).out);
+}
+
+TEST_F(InfoCommandTest, BadFileGivesOneErrorLineAndExitTwo) {
+  const InfoRun r = run("/definitely/missing.mid", true);
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_EQ(r.err, "error: /definitely/missing.mid: no such file\n");
+}
+
+TEST_F(InfoCommandTest, ThirdPartyPieceReportsParts) {
+  TUTTI_REQUIRE_TESTDATA();
+  const InfoRun r = run(test::testdata("musicxml/music21/bwv69.6.xml"), true);
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  EXPECT_GE(json["parts"].size(), 4u);
+  int total = 0;
+  for (const auto& part : json["parts"]) total += part["notes"].get<int>();
+  EXPECT_EQ(total, json["notes"].get<int>());
+  EXPECT_GT(json["duration_s"].get<double>(), 10.0);
+}
+
+}  // namespace
+}  // namespace tutti::app

@@ -1,0 +1,166 @@
+#include "ecs/schedule.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tutti::ecs {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+struct Note {
+  int pitch = 0;
+};
+
+TEST(ScheduleTest, PhaseNames) {
+  EXPECT_EQ(phase_name(Phase::plan), "plan");
+  EXPECT_EQ(phase_name(Phase::sync), "sync");
+  EXPECT_EQ(phase_name(Phase::evaluate), "evaluate");
+  EXPECT_EQ(phase_name(Phase::express), "express");
+  EXPECT_EQ(phase_name(Phase::pose), "pose");
+  EXPECT_EQ(phase_name(Phase::render), "render");
+  EXPECT_EQ(phase_name(static_cast<Phase>(42)), "unknown");
+}
+
+TEST(ScheduleTest, RunsPhasesInOrderAndSystemsInAddedOrder) {
+  Schedule schedule;
+  std::vector<std::string> log;
+  auto logger = [&log](std::string name) {
+    return [&log, name](World&, const FrameTime&) { log.push_back(name); };
+  };
+  schedule.add(Phase::render, "draw", logger("draw"));
+  schedule.add(Phase::evaluate, "hand_pose", logger("hand_pose"));
+  schedule.add(Phase::sync, "audio_clock", logger("audio_clock"));
+  schedule.add(Phase::evaluate, "bow", logger("bow"));
+  schedule.add(Phase::plan, "fingering", logger("fingering"));
+  schedule.add(Phase::pose, "ik", logger("ik"));
+  schedule.add(Phase::express, "breath", logger("breath"));
+
+  World world;
+  schedule.run(world, FrameTime{1.0, 0.5});
+  EXPECT_THAT(log,
+              ElementsAre("fingering", "audio_clock", "hand_pose", "bow", "breath", "ik", "draw"));
+  EXPECT_EQ(schedule.size(), 7U);
+  EXPECT_TRUE(schedule.contains("bow"));
+  EXPECT_FALSE(schedule.contains("Bow"));
+}
+
+TEST(ScheduleTest, PassesTheWorldAndTheFrame) {
+  Schedule schedule;
+  World world;
+  const Entity e = world.create();
+  FrameTime seen;
+  schedule.add(Phase::sync, "clock", [&](World& w, const FrameTime& frame) {
+    seen = frame;
+    w.add<Note>(e, 60);
+  });
+  schedule.run(world, FrameTime{2.5, 1.0 / 60.0});
+  EXPECT_EQ(seen.t_s, 2.5);
+  EXPECT_EQ(seen.dt_s, 1.0 / 60.0);
+  EXPECT_EQ(world.get<Note>(e).pitch, 60);
+}
+
+TEST(ScheduleTest, DescribeListsNonEmptyPhasesInRunOrder) {
+  Schedule schedule;
+  EXPECT_EQ(schedule.describe(), "");
+  const auto noop = [](World&, const FrameTime&) {};
+  schedule.add(Phase::evaluate, "hand_pose", noop);
+  schedule.add(Phase::sync, "audio_clock", noop);
+  schedule.add(Phase::evaluate, "bow", noop);
+  schedule.add(Phase::render, "draw", noop);
+  EXPECT_EQ(schedule.describe(), "sync: audio_clock\nevaluate: hand_pose, bow\nrender: draw\n");
+}
+
+TEST(ScheduleTest, RejectsDuplicateNamesAcrossPhases) {
+  Schedule schedule;
+  const auto noop = [](World&, const FrameTime&) {};
+  schedule.add(Phase::evaluate, "hand_pose", noop);
+  EXPECT_THAT([&] { schedule.add(Phase::evaluate, "hand_pose", noop); },
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("a system named 'hand_pose' is already scheduled")));
+  EXPECT_THROW(schedule.add(Phase::pose, "hand_pose", noop), std::invalid_argument);
+  EXPECT_THROW(schedule.add(Phase::pose, "", noop), std::invalid_argument);
+  EXPECT_THROW(schedule.add(Phase::pose, "empty", System{}), std::invalid_argument);
+  EXPECT_THROW(schedule.add(static_cast<Phase>(9), "bad_phase", noop), std::invalid_argument);
+  EXPECT_EQ(schedule.size(), 1U);
+  EXPECT_EQ(schedule.describe(), "evaluate: hand_pose\n");
+}
+
+TEST(ScheduleTest, FlushesDeferredCommandsAfterEachPhase) {
+  Schedule schedule;
+  World world;
+  const Entity e = world.create();
+  std::vector<std::string> log;
+  schedule.add(Phase::evaluate, "spawn", [&](World& w, const FrameTime&) {
+    w.view<Note>().each([](Note&) {});  // nothing yet
+    w.defer([e](World& inner) { inner.add<Note>(e, 64); });
+  });
+  schedule.add(Phase::evaluate, "same_phase", [&](World& w, const FrameTime&) {
+    log.push_back(w.has<Note>(e) ? "same phase sees it" : "same phase does not");
+  });
+  schedule.add(Phase::express, "next_phase", [&](World& w, const FrameTime&) {
+    log.push_back(w.has<Note>(e) ? "next phase sees it" : "next phase does not");
+  });
+  schedule.run(world, FrameTime{});
+  EXPECT_THAT(log, ElementsAre("same phase does not", "next phase sees it"));
+  EXPECT_EQ(world.deferred(), 0U);
+}
+
+TEST(ScheduleTest, CommandsDeferredByTheLastPhaseAreFlushedByRun) {
+  Schedule schedule;
+  World world;
+  const Entity e = world.create();
+  schedule.add(Phase::render, "late", [e](World& w, const FrameTime&) {
+    w.defer([e](World& inner) { inner.add<Note>(e, 1); });
+  });
+  schedule.run(world, FrameTime{});
+  EXPECT_TRUE(world.has<Note>(e));
+}
+
+TEST(ScheduleTest, CannotAddOrRunFromARunningSystem) {
+  Schedule schedule;
+  World world;
+  bool add_rejected = false;
+  bool run_rejected = false;
+  schedule.add(Phase::plan, "meddler", [&](World& w, const FrameTime& frame) {
+    try {
+      schedule.add(Phase::pose, "late_comer", [](World&, const FrameTime&) {});
+    } catch (const std::logic_error&) {
+      add_rejected = true;
+    }
+    try {
+      schedule.run(w, frame);
+    } catch (const std::logic_error&) {
+      run_rejected = true;
+    }
+  });
+  schedule.run(world, FrameTime{});
+  EXPECT_TRUE(add_rejected);
+  EXPECT_TRUE(run_rejected);
+  EXPECT_FALSE(schedule.contains("late_comer"));
+}
+
+TEST(ScheduleTest, ASystemExceptionPropagatesAndTheScheduleStaysUsable) {
+  Schedule schedule;
+  World world;
+  int later_runs = 0;
+  bool fail = true;
+  schedule.add(Phase::sync, "flaky", [&](World&, const FrameTime&) {
+    if (fail) throw std::runtime_error("device lost");
+  });
+  schedule.add(Phase::pose, "later", [&](World&, const FrameTime&) { ++later_runs; });
+  EXPECT_THROW(schedule.run(world, FrameTime{}), std::runtime_error);
+  EXPECT_EQ(later_runs, 0);
+  fail = false;
+  schedule.run(world, FrameTime{});
+  EXPECT_EQ(later_runs, 1);
+}
+
+}  // namespace
+}  // namespace tutti::ecs
