@@ -32,10 +32,10 @@ inline std::set<std::string> broken_testdata_files(const std::string& prefix = "
 
 }  // namespace tutti::test
 
-#define TUTTI_REQUIRE_TESTDATA()                                                       \
-  do {                                                                                 \
-    if (!std::filesystem::is_directory(::tutti::test::testdata_dir())) {              \
-      GTEST_SKIP() << "third-party test data not found at "                           \
-                   << ::tutti::test::testdata_dir() << " (expected ../shared/testdata)"; \
-    }                                                                                  \
+#define TUTTI_REQUIRE_TESTDATA()                                                             \
+  do {                                                                                       \
+    if (!std::filesystem::is_directory(::tutti::test::testdata_dir())) {                     \
+      GTEST_SKIP() << "third-party test data not found at " << ::tutti::test::testdata_dir() \
+                   << " (expected ../shared/testdata)";                                      \
+    }                                                                                        \
   } while (false)

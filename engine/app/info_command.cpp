@@ -17,10 +17,9 @@ int run_info(const InfoOptions& options, std::ostream& out, std::ostream& err) {
   }
   // load_score already succeeded, so the bytes are readable; detect again only for the label.
   auto bytes = read_file_bytes(options.file);
-  const auto format =
-      bytes ? music::detect_score_format(*bytes, options.file) : std::optional<music::ScoreFormat>{};
-  const ScoreSummary summary =
-      summarize(*score, format ? music::format_name(*format) : "unknown");
+  const auto format = bytes ? music::detect_score_format(*bytes, options.file)
+                            : std::optional<music::ScoreFormat>{};
+  const ScoreSummary summary = summarize(*score, format ? music::format_name(*format) : "unknown");
   out << (options.json ? summary_json(summary) : summary_text(summary));
   return kExitOk;
 }

@@ -13,8 +13,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("tutti ") + TUTTI_VERSION);
 
   tutti::app::InfoOptions info;
-  CLI::App* info_cmd = app.add_subcommand("info", "Parts, notes, duration, tempo and ranges of a "
-                                                  "MIDI, MusicXML (.xml/.musicxml/.mxl) or PIG file");
+  CLI::App* info_cmd = app.add_subcommand("info",
+                                          "Parts, notes, duration, tempo and ranges of a "
+                                          "MIDI, MusicXML (.xml/.musicxml/.mxl) or PIG file");
   info_cmd->add_option("FILE", info.file, "score file")->required();
   info_cmd->add_flag("--json", info.json, "print JSON instead of text");
 

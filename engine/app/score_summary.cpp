@@ -98,8 +98,8 @@ std::string summary_text(const ScoreSummary& s) {
   for (std::size_t i = 0; i < s.parts.size(); ++i) {
     const PartSummary& p = s.parts[i];
     out << "    [" << i << "] " << (p.name.empty() ? p.id : p.name) << ": "
-        << (p.percussion ? std::string("percussion") : p.instrument + " (program " +
-                                                           std::to_string(p.program) + ")");
+        << (p.percussion ? std::string("percussion")
+                         : p.instrument + " (program " + std::to_string(p.program) + ")");
     if (p.channel >= 0) out << ", channel " << p.channel + 1;
     if (p.transpose_semitones != 0) out << ", transposes " << p.transpose_semitones;
     out << ", " << p.notes << " notes, range " << range_text(p);
@@ -140,7 +140,8 @@ std::string summary_json(const ScoreSummary& s) {
   root["parts"] = std::move(parts);
   Json tempo = Json::array();
   for (const auto& change : s.tempo_changes) {
-    tempo.push_back(Json{{"tick", change.tick}, {"seconds", change.seconds}, {"bpm", change.bpm()}});
+    tempo.push_back(
+        Json{{"tick", change.tick}, {"seconds", change.seconds}, {"bpm", change.bpm()}});
   }
   root["tempo_changes"] = std::move(tempo);
   Json times = Json::array();
@@ -153,8 +154,8 @@ std::string summary_json(const ScoreSummary& s) {
   root["time_signatures"] = std::move(times);
   Json keys = Json::array();
   for (const auto& ks : s.key_signatures) {
-    keys.push_back(
-        Json{{"tick", ks.tick}, {"seconds", ks.seconds}, {"fifths", ks.fifths}, {"minor", ks.minor}});
+    keys.push_back(Json{
+        {"tick", ks.tick}, {"seconds", ks.seconds}, {"fifths", ks.fifths}, {"minor", ks.minor}});
   }
   root["key_signatures"] = std::move(keys);
   root["pedal_spans"] = s.pedal_spans;

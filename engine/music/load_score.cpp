@@ -13,9 +13,12 @@ namespace tutti::music {
 
 const char* format_name(ScoreFormat format) {
   switch (format) {
-    case ScoreFormat::midi: return "MIDI";
-    case ScoreFormat::musicxml: return "MusicXML";
-    case ScoreFormat::pig: return "PIG";
+    case ScoreFormat::midi:
+      return "MIDI";
+    case ScoreFormat::musicxml:
+      return "MusicXML";
+    case ScoreFormat::pig:
+      return "PIG";
   }
   return "unknown";
 }
@@ -67,8 +70,10 @@ Result<Score> load_score(const std::filesystem::path& path) {
     return Error{name + ": not a MIDI, MusicXML or PIG file (unrecognised content)"};
   }
   switch (*format) {
-    case ScoreFormat::midi: return read_midi(*bytes, name);
-    case ScoreFormat::musicxml: return read_musicxml(*bytes, name);
+    case ScoreFormat::midi:
+      return read_midi(*bytes, name);
+    case ScoreFormat::musicxml:
+      return read_musicxml(*bytes, name);
     case ScoreFormat::pig:
       return read_pig(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
                       name);

@@ -9,14 +9,22 @@ namespace tutti::music {
 namespace {
 std::optional<int> step_semitone(char step) {
   switch (std::toupper(static_cast<unsigned char>(step))) {
-    case 'C': return 0;
-    case 'D': return 2;
-    case 'E': return 4;
-    case 'F': return 5;
-    case 'G': return 7;
-    case 'A': return 9;
-    case 'B': return 11;
-    default: return std::nullopt;
+    case 'C':
+      return 0;
+    case 'D':
+      return 2;
+    case 'E':
+      return 4;
+    case 'F':
+      return 5;
+    case 'G':
+      return 7;
+    case 'A':
+      return 9;
+    case 'B':
+      return 11;
+    default:
+      return std::nullopt;
   }
 }
 }  // namespace

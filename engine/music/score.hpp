@@ -45,11 +45,11 @@ struct Note {
 };
 
 struct Part {
-  std::string id;    // MusicXML part id, or "track<T>-ch<C>" for MIDI
-  std::string name;  // human name ("Trumpet in Bb"), may be empty
-  int program = 0;   // General MIDI program 0..127
-  int channel = -1;  // MIDI channel 0..15, -1 = not stated
-  int track = -1;    // MIDI track index, -1 = not from a MIDI track
+  std::string id;               // MusicXML part id, or "track<T>-ch<C>" for MIDI
+  std::string name;             // human name ("Trumpet in Bb"), may be empty
+  int program = 0;              // General MIDI program 0..127
+  int channel = -1;             // MIDI channel 0..15, -1 = not stated
+  int track = -1;               // MIDI track index, -1 = not from a MIDI track
   int transpose_semitones = 0;  // sounding = written + transpose_semitones
   int staves = 1;
   bool percussion = false;  // GM channel 10 or unpitched MusicXML part
@@ -79,7 +79,14 @@ struct PedalSpan {
 };
 
 enum class TextKind : std::int8_t {
-  text, copyright, track_name, instrument_name, lyric, marker, cue_point, other
+  text,
+  copyright,
+  track_name,
+  instrument_name,
+  lyric,
+  marker,
+  cue_point,
+  other
 };
 
 struct TextEvent {

@@ -82,16 +82,14 @@ std::size_t segment_for(const std::vector<TempoChange>& changes, double value, K
 }  // namespace
 
 double TempoMap::seconds_at(double tick) const {
-  const auto& c = changes_[segment_for(changes_, tick, [](const TempoChange& t) {
-    return static_cast<double>(t.tick);
-  })];
+  const auto& c = changes_[segment_for(
+      changes_, tick, [](const TempoChange& t) { return static_cast<double>(t.tick); })];
   return c.seconds + (tick - static_cast<double>(c.tick)) * seconds_per_tick(c);
 }
 
 double TempoMap::beats_at(double tick) const {
-  const auto& c = changes_[segment_for(changes_, tick, [](const TempoChange& t) {
-    return static_cast<double>(t.tick);
-  })];
+  const auto& c = changes_[segment_for(
+      changes_, tick, [](const TempoChange& t) { return static_cast<double>(t.tick); })];
   return c.beats + (tick - static_cast<double>(c.tick)) * beats_per_tick(c);
 }
 
@@ -108,9 +106,8 @@ double TempoMap::ticks_at_beats(double beats) const {
 }
 
 double TempoMap::bpm_at(double tick) const {
-  return changes_[segment_for(changes_, tick, [](const TempoChange& t) {
-                    return static_cast<double>(t.tick);
-                  })]
+  return changes_[segment_for(changes_, tick,
+                              [](const TempoChange& t) { return static_cast<double>(t.tick); })]
       .bpm();
 }
 

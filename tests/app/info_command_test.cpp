@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -71,9 +72,7 @@ TEST_F(InfoCommandTest, TextReportNamesPartsAndRanges) {
   EXPECT_NE(r.out.find("C4..G4 (60..67)"), std::string::npos) << r.out;
 }
 
-TEST_F(InfoCommandTest, SameInputSameBytes) {
-  EXPECT_EQ(run(pig_, true).out, run(pig_, true).out);
-}
+TEST_F(InfoCommandTest, SameInputSameBytes) { EXPECT_EQ(run(pig_, true).out, run(pig_, true).out); }
 
 TEST_F(InfoCommandTest, BadFileGivesOneErrorLineAndExitTwo) {
   const InfoRun r = run("/definitely/missing.mid", true);
@@ -92,6 +91,40 @@ TEST_F(InfoCommandTest, ThirdPartyPieceReportsParts) {
   for (const auto& part : json["parts"]) total += part["notes"].get<int>();
   EXPECT_EQ(total, json["notes"].get<int>());
   EXPECT_GT(json["duration_s"].get<double>(), 10.0);
+}
+
+// The acceptance check at the command's level: `tutti info --json` agrees with an independent
+// parser (python mido, numbers recorded in tests/data/midi/mido_expected.json) on the note count
+// and the duration of every valid MIDI file in ../shared/testdata/midi.
+TEST_F(InfoCommandTest, AgreesWithMidoOnEveryValidMidiFile) {
+  TUTTI_REQUIRE_TESTDATA();
+  std::ifstream in(test::source_dir() / "tests/data/midi/mido_expected.json");
+  ASSERT_TRUE(in) << "tests/data/midi/mido_expected.json missing";
+  const auto expected = nlohmann::json::parse(in).at("files");
+  const auto broken = test::broken_testdata_files("midi/");
+  int compared_counts = 0;
+  int compared_durations = 0;
+  for (const auto& [file, mido] : expected.items()) {
+    SCOPED_TRACE(file);
+    const InfoRun r = run(test::testdata(file), true);
+    if (broken.count(file) != 0) {
+      EXPECT_EQ(r.code, kExitBadInput);
+      continue;
+    }
+    ASSERT_EQ(r.code, kExitOk) << r.err;
+    if (!mido.at("ok").get<bool>()) continue;  // mido could not read it: nothing to compare
+    const auto json = nlohmann::json::parse(r.out);
+    EXPECT_EQ(json.at("notes").get<int>(), mido.at("notes").get<int>());
+    ++compared_counts;
+    if (!mido.at("length").is_null()) {
+      const double length = mido.at("length").get<double>();
+      EXPECT_NEAR(json.at("duration_s").get<double>(), length, std::max(1e-6 * length, 1e-9));
+      ++compared_durations;
+    }
+  }
+  // Every file mido reads is compared; a shrinking count would mean the check went hollow.
+  EXPECT_GE(compared_counts, 60);
+  EXPECT_GE(compared_durations, 55);
 }
 
 }  // namespace

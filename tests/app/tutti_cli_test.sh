@@ -59,7 +59,7 @@ if [ -d "$testdata" ]; then
     done
   done
 else
-  echo "note: $testdata not found; third-party files skipped"
+  echo "SKIPPED: $testdata not found; third-party files not checked"
 fi
 
 # Hand-made hostile inputs.

@@ -88,7 +88,8 @@ Result<Score> read_pig(std::string_view text, const std::string& source_name) {
       return Error{source_name + ": line " + std::to_string(line_number) + ": " + reason};
     };
     for (char c : line) {
-      if (static_cast<unsigned char>(c) < 0x09 || c == 0x7f) return fail("binary data, not PIG text");
+      if (static_cast<unsigned char>(c) < 0x09 || c == 0x7f)
+        return fail("binary data, not PIG text");
     }
     const auto fields = split_fields(line);
     if (fields.empty()) continue;
@@ -99,8 +100,10 @@ Result<Score> read_pig(std::string_view text, const std::string& source_name) {
     Note note;
     double onset = 0.0;
     double offset = 0.0;
-    if (!parse_seconds(fields[1], onset)) return fail("bad onset time '" + std::string(fields[1]) + "'");
-    if (!parse_seconds(fields[2], offset)) return fail("bad offset time '" + std::string(fields[2]) + "'");
+    if (!parse_seconds(fields[1], onset))
+      return fail("bad onset time '" + std::string(fields[1]) + "'");
+    if (!parse_seconds(fields[2], offset))
+      return fail("bad offset time '" + std::string(fields[2]) + "'");
     if (offset < onset) return fail("offset before onset");
     const auto key = parse_pitch_name(fields[3]);
     if (!key) return fail("bad pitch '" + std::string(fields[3]) + "'");
