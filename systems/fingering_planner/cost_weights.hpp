@@ -1,0 +1,67 @@
+#pragma once
+// The weights of the fingering cost, loaded from content/piano/fingering/<preset>.json.
+// "paper" reproduces Sekiguchi & Eiho (1999) exactly; "default" adds natural spacing, crossing
+// rules, per-finger preferences and repeated-key rules. Every key is documented in
+// content/piano/README.md. Distances in white-key widths (δ), times in seconds.
+//
+// Absent keys keep the paper's value (the struct defaults below); an unknown key is an error
+// naming the JSON path, e.g. "default.json: /crossing/thumb_bogus: unknown key".
+
+#include <array>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+
+#include "core/result.hpp"
+
+namespace tutti::piano {
+
+inline constexpr double kInfiniteCost = std::numeric_limits<double>::infinity();
+
+struct CostWeights {
+  std::string name = "paper";
+
+  // --- hand area (the paper) ---
+  double area_overlap = 1.0;      // weight of 1 - Δd / max(d_i, d_i+1) when the areas overlap
+  double gap_base = 1.0;          // cost of a non-overlapping move (>= 1 in the paper)
+  double gap_speed = 0.05;        // + per white key per second of hand travel speed
+  double release_fraction = 0.0;  // Δt used >= this × inter-onset interval (0 = paper)
+
+  // --- fingers (the paper: thumb +0.1 per use, thumb on a black key +1.5) ---
+  std::array<double, 5> finger_use{0.1, 0.0, 0.0, 0.0, 0.0};
+  std::array<double, 5> black_key{1.5, 0.0, 0.0, 0.0, 0.0};
+
+  // --- same finger on consecutive events ---
+  double same_finger_other_key = kInfiniteCost;  // "inf" in the paper
+  double same_finger_speed = 0.0;                // + per white key per second (finite base only)
+  double same_finger_same_key = 0.0;             // repeated key, same finger
+  double repeat_finger_change = 0.0;             // repeated key, another finger
+
+  // --- natural spacing (0 in the paper) ---
+  double spacing_per_finger = 1.0;    // white keys between neighbouring fingers at rest
+  double spacing_stretch = 0.0;       // per white key wider than natural
+  double spacing_compress = 0.0;      // per white key narrower than natural
+  double spacing_thumb_factor = 1.0;  // multiplies both for pairs involving the thumb
+  double spacing_max_distance = 1e9;  // spacing/crossing apply to keys at most this far apart
+
+  // --- crossings: finger order opposite to key order (0 in the paper) ---
+  double cross_thumb = 0.0;                    // thumb passes under / finger over thumb
+  std::array<double, 5> cross_thumb_finger{};  // + by the other finger (index 0 unused)
+  double cross_thumb_distance = 0.0;           // + per white key beyond one
+  double cross_thumb_black = 0.0;              // + when the thumb's key is black
+  double cross_little = 0.0;                   // thumb <-> little finger crossing
+  double cross_other = 0.0;                    // crossing without the thumb
+
+  // --- events ---
+  double chord_tolerance_s = 0.001;  // onsets this close form one event
+  double unreachable = 100.0;        // per white key of missing reach when no fingering fits
+  double impossible = 1.0e6;         // what an infinite transition adds to the DP's total
+};
+
+// Errors: file missing/not JSON, unknown key (with its JSON path), wrong type, negative time.
+Result<CostWeights> load_cost_weights(const std::filesystem::path& path);
+Result<CostWeights> cost_weights_from_json(const nlohmann::json& document,
+                                           const std::string& file_name);
+
+}  // namespace tutti::piano

@@ -1,0 +1,24 @@
+#pragma once
+// The globally optimal fingering of one hand's notes: dynamic programming over events (notes
+// starting together), the state being the fingers of every key sounding at the event (held keys
+// included, so they keep their finger and keep constraining the hand). At most C(5,k) states per
+// event, so time and memory are linear in the number of notes.
+//
+// Minimises Σ strike costs + Σ transition costs (transition_cost.hpp). Infinite transitions are
+// avoided whenever possible; when unavoidable each counts `weights.impossible` in the search and
+// is reported (HandPlan::impossible_transitions + a diagnostic). Pinned notes (PlanNote::pin) are
+// hard constraints. Deterministic: ties go to the lowest candidate index.
+
+#include <span>
+
+#include "core/result.hpp"
+#include "fingering_planner/fingering_model.hpp"
+#include "fingering_planner/hand_plan.hpp"
+
+namespace tutti::piano {
+
+// Errors: invalid input notes (see hand_plan.hpp). An empty input gives an empty plan.
+Result<HandPlan> plan_hand_exact(std::span<const PlanNote> notes, music::Hand side,
+                                 const FingeringModel& model);
+
+}  // namespace tutti::piano

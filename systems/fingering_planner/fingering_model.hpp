@@ -1,0 +1,28 @@
+#pragma once
+// Everything the planners need, loaded once: keyboard geometry, hand reach, cost weights.
+// Files: <content>/piano/keyboard.json, <content>/piano/hands.json,
+//        <content>/piano/fingering/<weights>.json (weights = "default" or "paper").
+
+#include <filesystem>
+#include <string_view>
+
+#include "core/result.hpp"
+#include "fingering_planner/cost_weights.hpp"
+#include "piano_model/content_dir.hpp"
+#include "piano_model/hand_model.hpp"
+#include "piano_model/keyboard.hpp"
+
+namespace tutti::piano {
+
+struct FingeringModel {
+  Keyboard keyboard;
+  HandModel hand;
+  CostWeights weights;
+};
+
+// `hand_preset` empty = hands.json's default_preset. Errors are the loaders' (file + JSON path).
+Result<FingeringModel> load_fingering_model(
+    std::string_view weights = "default", std::string_view hand_preset = "",
+    const std::filesystem::path& content_dir = default_content_dir());
+
+}  // namespace tutti::piano

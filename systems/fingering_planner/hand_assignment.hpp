@@ -1,0 +1,29 @@
+#pragma once
+// Which hand plays each note of a Score. In order of precedence, per part:
+//  1. Note::hand when the file states it (PIG channel 0 = right, 1 = left);
+//  2. a part named for a hand ("right"/"left", "R.H."/"L.H.", case-insensitive);
+//  3. a part with 2+ staves: staff 1 = right hand, staff 2 and below = left hand;
+//  4. otherwise an automatic split, event by event (notes starting together): the keys are cut
+//     at one point (low part left, high part right, so hands never cross within an event),
+//     choosing the cut that keeps each hand's span reachable and at most 5 keys, keeps each hand
+//     near where it was (a far jump counts as an octave), the right hand from middle C up and the
+//     left hand below it.
+// Percussion parts get Hand::unknown (not planned).
+
+#include <vector>
+
+#include "fingering_planner/fingering_model.hpp"
+#include "music/score.hpp"
+
+namespace tutti::piano {
+
+enum class HandSource { file, part_name, staff, automatic, none };
+
+struct HandAssignment {
+  std::vector<music::Hand> hand;   // per Score::notes entry
+  std::vector<HandSource> source;  // why
+};
+
+HandAssignment assign_hands(const music::Score& score, const FingeringModel& model);
+
+}  // namespace tutti::piano

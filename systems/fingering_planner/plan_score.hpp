@@ -1,0 +1,48 @@
+#pragma once
+// Fingering for a whole Score: hands assigned (hand_assignment.hpp), each hand planned
+// (exact DP by default, or the paper's lookahead search), results mapped back to Score::notes.
+//
+// Pins: with `pins_from_marks`, every Note::finger 1..5 in the file is a hard constraint
+// (the editor will pin the same way). Strip Note::finger first to plan from scratch.
+// Keys outside the keyboard are clamped to its ends for planning (reported as a diagnostic).
+// Diagnostics carry Score::notes indices and 1-based bar numbers.
+
+#include <span>
+#include <vector>
+
+#include "core/result.hpp"
+#include "fingering_planner/fingering_model.hpp"
+#include "fingering_planner/hand_assignment.hpp"
+#include "fingering_planner/hand_plan.hpp"
+#include "music/score.hpp"
+
+namespace tutti::piano {
+
+enum class PlannerMode { exact, lookahead };
+
+struct PlanOptions {
+  PlannerMode mode = PlannerMode::exact;
+  int lookahead = 4;            // events, for PlannerMode::lookahead
+  bool pins_from_marks = true;  // Note::finger in the file = pinned
+};
+
+struct ScorePlan {
+  HandPlan right;  // diagnostics' notes are Score::notes indices
+  HandPlan left;
+  std::vector<int> right_notes;  // Score::notes index of each right-hand input note
+  std::vector<int> left_notes;
+  std::vector<int> fingers;        // per Score::notes entry, 1..5, 0 = not planned (percussion)
+  std::vector<music::Hand> hands;  // per Score::notes entry
+};
+
+Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& model,
+                             const PlanOptions& options = {});
+
+// Plans one hand with the chosen mode.
+Result<HandPlan> plan_hand(std::span<const PlanNote> notes, music::Hand side,
+                           const FingeringModel& model, const PlanOptions& options = {});
+
+// 1-based bar containing `beats` (quarter notes from the start), from the time signatures.
+int bar_at_beats(const music::Score& score, double beats);
+
+}  // namespace tutti::piano

@@ -1,0 +1,14 @@
+#include "piano_model/content_dir.hpp"
+
+#include <cstdlib>
+
+namespace tutti::piano {
+
+std::filesystem::path default_content_dir() {
+  if (const char* env = std::getenv("TUTTI_CONTENT_DIR"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  return TUTTI_CONTENT_DIR;
+}
+
+}  // namespace tutti::piano

@@ -1,0 +1,60 @@
+#include "piano_model/json_document.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "core/file_io.hpp"
+
+namespace tutti::piano {
+
+Result<nlohmann::json> read_json_file(const std::filesystem::path& path) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  nlohmann::json document =
+      nlohmann::json::parse(bytes->begin(), bytes->end(), nullptr, /*allow_exceptions=*/false);
+  if (document.is_discarded()) return Error{path.string() + ": not valid JSON"};
+  return document;
+}
+
+Error JsonReader::error(std::string_view path, std::string_view reason) const {
+  return Error{file_ + ": " + std::string(path.empty() ? "/" : path) + ": " + std::string(reason)};
+}
+
+Status JsonReader::check_keys(const nlohmann::json& object, std::string_view path,
+                              std::initializer_list<std::string_view> allowed) const {
+  if (!object.is_object()) return error(path, "expected an object");
+  for (const auto& item : object.items()) {
+    bool known = false;
+    for (std::string_view key : allowed) known = known || key == item.key();
+    if (!known) return error(std::string(path) + "/" + item.key(), "unknown key");
+  }
+  return Status::success();
+}
+
+Result<double> JsonReader::number(const nlohmann::json& object, std::string_view path,
+                                  const char* key) const {
+  const std::string where = std::string(path) + "/" + key;
+  if (!object.contains(key)) return error(where, "missing");
+  const nlohmann::json& value = object.at(key);
+  if (!value.is_number()) return error(where, "expected a number");
+  const double number = value.get<double>();
+  if (!std::isfinite(number)) return error(where, "expected a finite number");
+  return number;
+}
+
+Result<double> JsonReader::number_or(const nlohmann::json& object, std::string_view path,
+                                     const char* key, double fallback) const {
+  if (!object.contains(key)) return fallback;
+  return number(object, path, key);
+}
+
+Result<double> JsonReader::number_or_inf(const nlohmann::json& object, std::string_view path,
+                                         const char* key) const {
+  if (object.contains(key) && object.at(key).is_string()) {
+    if (object.at(key).get<std::string>() == "inf") return std::numeric_limits<double>::infinity();
+    return error(std::string(path) + "/" + key, "expected a number or \"inf\"");
+  }
+  return number(object, path, key);
+}
+
+}  // namespace tutti::piano

@@ -1,0 +1,75 @@
+// Exact planner throughput: a long single-line melody, and two-hand chordal music.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "fingering_planner/exact_planner.hpp"
+
+namespace {
+
+using namespace tutti::piano;
+
+const FingeringModel& model() {
+  static const FingeringModel m = *load_fingering_model("default");
+  return m;
+}
+
+// Deterministic pseudo-random walk over a C-major-ish range.
+std::vector<PlanNote> melody(int count, int base) {
+  std::vector<PlanNote> notes;
+  unsigned state = 12345;
+  int key = base;
+  for (int i = 0; i < count; ++i) {
+    state = state * 1103515245u + 12345u;
+    const int step = static_cast<int>((state >> 16) % 7) - 3;
+    key = std::clamp(key + step, base - 10, base + 14);
+    notes.push_back({key, i * 0.125, (i + 1) * 0.125, 0});
+  }
+  return notes;
+}
+
+// Three-note chords alternating with single notes, as in an accompaniment.
+std::vector<PlanNote> chords(int events, int base) {
+  std::vector<PlanNote> notes;
+  const int shapes[4][3] = {{0, 4, 7}, {2, 5, 9}, {-1, 2, 7}, {0, 4, 9}};
+  for (int e = 0; e < events; ++e) {
+    const auto& s = shapes[e % 4];
+    const double t = e * 0.25;
+    if (e % 2 == 0) {
+      for (int k : s) notes.push_back({base + k, t, t + 0.25, 0});
+    } else {
+      notes.push_back({base + s[1], t, t + 0.25, 0});
+    }
+  }
+  return notes;
+}
+
+void BM_ExactMelody(benchmark::State& state) {
+  const auto notes = melody(static_cast<int>(state.range(0)), 67);
+  for (auto _ : state) {
+    auto plan = plan_hand_exact(notes, tutti::music::Hand::right, model());
+    benchmark::DoNotOptimize(plan);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(notes.size()));
+  state.counters["notes/s"] = benchmark::Counter(
+      static_cast<double>(state.iterations() * notes.size()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ExactMelody)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+void BM_ExactTwoHandChords(benchmark::State& state) {
+  const auto right = chords(static_cast<int>(state.range(0)), 67);
+  const auto left = chords(static_cast<int>(state.range(0)), 48);
+  for (auto _ : state) {
+    auto r = plan_hand_exact(right, tutti::music::Hand::right, model());
+    auto l = plan_hand_exact(left, tutti::music::Hand::left, model());
+    benchmark::DoNotOptimize(r);
+    benchmark::DoNotOptimize(l);
+  }
+  const auto total = static_cast<double>(right.size() + left.size());
+  state.counters["notes/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * total,
+                                                 benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ExactTwoHandChords)->Arg(50000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
