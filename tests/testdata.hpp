@@ -3,6 +3,7 @@
 // which skips with a clear message when ../shared/testdata is not beside the checkout.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,15 @@ inline std::filesystem::path testdata_dir() { return TUTTI_TESTDATA_DIR; }
 inline std::filesystem::path source_dir() { return TUTTI_SOURCE_DIR; }
 inline std::filesystem::path testdata(const std::string& relative) {
   return testdata_dir() / relative;
+}
+
+// A path in the temporary folder that no other test process uses at the same time (ctest runs
+// tests in parallel, and the default and asan builds may run at once).
+inline std::filesystem::path unique_temp_path(const std::string& name) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string test = info ? std::string(info->test_suite_name()) + "." + info->name() : "none";
+  return std::filesystem::temp_directory_path() /
+         ("tutti-" + std::to_string(::getpid()) + "-" + test + "-" + name);
 }
 
 // The third-party files tutti must refuse (tests/data/broken_files.txt), those whose path

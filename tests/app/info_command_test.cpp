@@ -35,7 +35,7 @@ InfoRun run(const fs::path& file, bool json) {
 class InfoCommandTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    pig_ = fs::temp_directory_path() / "tutti-info-test.txt";
+    pig_ = test::unique_temp_path("info.txt");
     std::ofstream(pig_) << "//Version: PigletFormat 1.0\n"
                            "0\t0.0\t0.5\tC4\t64\t80\t0\t1\n"
                            "1\t0.5\t1.0\tG4\t64\t80\t0\t5\n"

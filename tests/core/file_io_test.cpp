@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "testdata.hpp"
+
 namespace tutti {
 namespace {
 
@@ -13,9 +15,7 @@ namespace fs = std::filesystem;
 class FileIoTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tutti-file-io-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = test::unique_temp_path("dir");
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

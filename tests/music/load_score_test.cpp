@@ -35,7 +35,7 @@ TEST(LoadScoreTest, MissingAndUnknownFilesGiveOneLineErrors) {
   ASSERT_FALSE(missing.ok());
   EXPECT_EQ(missing.error().message, "/no/such/dir/piece.mid: no such file");
 
-  const fs::path unknown = fs::temp_directory_path() / "tutti-load-score-unknown.bin";
+  const fs::path unknown = test::unique_temp_path("unknown.bin");
   std::ofstream(unknown, std::ios::binary) << "\x01\x02\x03";
   auto result = load_score(unknown);
   fs::remove(unknown);
@@ -45,7 +45,7 @@ TEST(LoadScoreTest, MissingAndUnknownFilesGiveOneLineErrors) {
 }
 
 TEST(LoadScoreTest, DispatchesPigText) {
-  const fs::path path = fs::temp_directory_path() / "tutti-load-score.txt";
+  const fs::path path = test::unique_temp_path("score.txt");
   std::ofstream(path) << "//Version: PigletFormat 1.0\n0\t0.0\t0.5\tC4\t64\t80\t0\t1\n";
   auto score = load_score(path);
   fs::remove(path);

@@ -11,6 +11,7 @@
 #include "music/midi/midi_reader.hpp"
 #include "score_compare.hpp"
 #include "smf_bytes.hpp"
+#include "testdata.hpp"
 
 namespace tutti::music {
 namespace {
@@ -171,7 +172,7 @@ TEST(MidiWriter, VelocityZeroIsWrittenAsOneSoItStaysANote) {
 }
 
 TEST(MidiWriter, WritesFilesAtomically) {
-  const auto dir = std::filesystem::temp_directory_path() / "tutti_midi_writer_test";
+  const auto dir = test::unique_temp_path("midi_writer");
   std::filesystem::create_directories(dir);
   const auto path = dir / "song.mid";
   const Score score = hand_made_score();

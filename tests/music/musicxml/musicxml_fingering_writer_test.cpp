@@ -333,7 +333,7 @@ TEST(MusicXmlFingeringWriterTest, ScoresThatDoNotMatchTheFileAreRefused) {
 TEST(MusicXmlFingeringWriterTest, WritesTheFileAtomically) {
   TUTTI_REQUIRE_TESTDATA();
   const fs::path original = test::testdata("musicxml/lilypond-test-suite/43a-PianoStaff.xml");
-  const fs::path output = fs::temp_directory_path() / "tutti-musicxml-writer-test-43a.musicxml";
+  const fs::path output = test::unique_temp_path("43a.musicxml");
   const auto read = read_musicxml_file(original);
   ASSERT_TRUE(read.ok()) << read.error().message;
   const Status status = write_musicxml_with_fingering(
