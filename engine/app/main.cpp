@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/exit_codes.hpp"
+#include "app/fingering_command.hpp"
 #include "app/info_command.hpp"
 
 int main(int argc, char** argv) {
@@ -19,6 +20,26 @@ int main(int argc, char** argv) {
   info_cmd->add_option("FILE", info.file, "score file")->required();
   info_cmd->add_flag("--json", info.json, "print JSON instead of text");
 
+  tutti::app::FingeringOptions fingering;
+  CLI::App* fingering_cmd = app.add_subcommand(
+      "fingering",
+      "Plan piano fingering and hand paths for a MIDI, MusicXML or PIG file; write MusicXML "
+      "(marks added to the input), PIG, MIDI (lyric events \"RH3:64\") or JSON");
+  fingering_cmd->add_option("IN", fingering.input, "score file")->required();
+  fingering_cmd->add_option("-o,--output", fingering.output,
+                            "output file (format from .musicxml/.xml, .txt/.pig, .mid, .json); "
+                            "none = a listing on stdout");
+  fingering_cmd->add_option("--format", fingering.format, "musicxml, pig, midi or json");
+  fingering_cmd->add_option("--mode", fingering.mode, "exact (default) or lookahead");
+  fingering_cmd->add_option("--lookahead", fingering.lookahead, "events, for --mode lookahead");
+  fingering_cmd->add_option("--hand-size", fingering.hand_size, "small, medium or large");
+  fingering_cmd->add_option("--weights", fingering.weights,
+                            "cost weights: default, paper, or a .json file");
+  fingering_cmd->add_flag("--keep-fingers", fingering.keep_fingers,
+                          "keep the file's finger marks as pins (else they are ignored)");
+  fingering_cmd->add_option("--plot", fingering.plot, "write a piano-roll PNG");
+  fingering_cmd->add_option("--plot-seconds", fingering.plot_seconds, "plot window A:B seconds");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -29,5 +50,6 @@ int main(int argc, char** argv) {
   }
 
   if (*info_cmd) return tutti::app::run_info(info, std::cout, std::cerr);
+  if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
   return tutti::app::kExitBadInput;
 }

@@ -90,10 +90,11 @@ Result<CostWeights> cost_weights_from_json(const nlohmann::json& document,
   }
 
   const nlohmann::json& fingers = section("fingers");
-  TUTTI_TRY(reader.check_keys(fingers, "/fingers", {"use", "black_key"}));
+  TUTTI_TRY(reader.check_keys(fingers, "/fingers", {"use", "black_key", "thumb_on_tonic"}));
   SectionReader f(reader, fingers, "/fingers");
   TUTTI_TRY(f.five("use", w.finger_use));
   TUTTI_TRY(f.five("black_key", w.black_key));
+  TUTTI_TRY(f.number("thumb_on_tonic", w.thumb_on_tonic));
 
   const nlohmann::json& same = section("same_finger");
   TUTTI_TRY(reader.check_keys(

@@ -31,6 +31,10 @@ struct CostWeights {
   // --- fingers (the paper: thumb +0.1 per use, thumb on a black key +1.5) ---
   std::array<double, 5> finger_use{0.1, 0.0, 0.0, 0.0, 0.0};
   std::array<double, 5> black_key{1.5, 0.0, 0.0, 0.0, 0.0};
+  // Per thumb strike on the tonic (a white key) (0 in the paper; negative = preferred): pianists
+  // anchor scale fingerings on the tonic (thumb on C and G in C major, left hand). The tonic
+  // comes from PlanNote::tonic (plan_score: key signature, else the key the notes fit best).
+  double thumb_on_tonic = 0.0;
 
   // --- same finger on consecutive events ---
   double same_finger_other_key = kInfiniteCost;  // "inf" in the paper

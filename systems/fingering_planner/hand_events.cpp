@@ -124,6 +124,7 @@ Result<PreparedHand> prepare_hand(std::span<const PlanNote> notes, music::Hand s
     }
     HandEvent event;
     event.onset_s = onset;
+    event.tonic = notes[static_cast<std::size_t>(order[start])].tonic;
     event.note_begin = static_cast<int>(hand.event_notes.size());
     for (std::size_t i = start; i < stop; ++i) hand.event_notes.push_back(order[i]);
     event.note_end = static_cast<int>(hand.event_notes.size());
@@ -246,7 +247,7 @@ Result<PreparedHand> prepare_hand(std::span<const PlanNote> notes, music::Hand s
           shape.x_mm[fi] = static_cast<float>(0.5 * (x_lo + x_hi));
         }
         any_reachable = any_reachable || shape.lo_mm <= shape.hi_mm;
-        c.strike = strike_cost(shape, model);
+        c.strike = strike_cost(shape, model, event.tonic);
         hand.candidates.push_back(c);
       }
       event.cand_end = static_cast<int>(hand.candidates.size());

@@ -34,6 +34,7 @@ struct HandSlot {
 struct HandEvent {
   double onset_s = 0.0;
   double end_s = 0.0;
+  int tonic = -1;     // pitch class of the tonic (first note's PlanNote::tonic), -1 = unknown
   double dt_s = 0.0;  // effective release-to-attack time from the previous event
   int slot_begin = 0, slot_end = 0;
   int note_begin = 0, note_end = 0;  // into PreparedHand::event_notes

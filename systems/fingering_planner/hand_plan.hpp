@@ -22,6 +22,7 @@ struct PlanNote {
   double onset_s = 0.0;
   double offset_s = 0.0;  // >= onset_s; the key is held until then (constrains the hand)
   int pin = 0;            // 1..5 = this finger is required, 0 = free
+  int tonic = -1;         // pitch class (0 = C .. 11) of the key's tonic here, -1 = unknown
 };
 
 enum class DiagnosticKind {

@@ -1,6 +1,7 @@
 #include "fingering_planner/plan_score.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "fingering_planner/exact_planner.hpp"
@@ -15,6 +16,47 @@ Result<HandPlan> plan_hand(std::span<const PlanNote> notes, music::Hand side,
     return plan_hand_lookahead(notes, side, model, options.lookahead);
   }
   return plan_hand_exact(notes, side, model);
+}
+
+std::vector<int> note_tonics(const music::Score& score) {
+  std::vector<int> out(score.notes.size(), -1);
+  if (score.notes.empty()) return out;
+  if (!score.key_signatures.empty()) {
+    for (std::size_t i = 0; i < score.notes.size(); ++i) {
+      const music::KeySignature* in_force = &score.key_signatures.front();
+      for (const music::KeySignature& k : score.key_signatures) {
+        if (k.tick > score.notes[i].onset_ticks) break;
+        in_force = &k;
+      }
+      const int major = ((in_force->fifths * 7) % 12 + 12) % 12;
+      out[i] = in_force->minor ? (major + 9) % 12 : major;
+    }
+    return out;
+  }
+  std::array<double, 12> weight{};
+  int first_low = score.notes.front().pitch;
+  const std::int64_t first_tick = score.notes.front().onset_ticks;
+  for (const music::Note& n : score.notes) {
+    weight[static_cast<std::size_t>(((n.pitch % 12) + 12) % 12)] +=
+        std::max(n.offset_s - n.onset_s, 0.0) + 1e-3;
+    if (n.onset_ticks == first_tick) first_low = std::min(first_low, n.pitch);
+  }
+  static constexpr std::array<std::array<int, 7>, 2> kScales = {
+      {{0, 2, 4, 5, 7, 9, 11}, {0, 2, 3, 5, 7, 8, 11}}};  // major, harmonic minor
+  int best_tonic = -1;
+  double best = -1.0;
+  for (const auto& scale : kScales) {
+    for (int t = 0; t < 12; ++t) {
+      double sum = 0.0;
+      for (int s : scale) sum += weight[static_cast<std::size_t>((t + s) % 12)];
+      const bool better =
+          sum > best + 1e-9 || (std::abs(sum - best) <= 1e-9 && t == ((first_low % 12) + 12) % 12 &&
+                                best_tonic != ((first_low % 12) + 12) % 12);
+      if (better) best = sum, best_tonic = t;
+    }
+  }
+  std::fill(out.begin(), out.end(), best_tonic);
+  return out;
 }
 
 int bar_at_beats(const music::Score& score, double beats) {
@@ -43,6 +85,8 @@ Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& mo
   out.hands = assignment.hand;
   out.fingers.assign(score.notes.size(), 0);
   std::vector<Diagnostic> clamped;
+  const std::vector<int> tonics =
+      options.tonic_from_key ? note_tonics(score) : std::vector<int>(score.notes.size(), -1);
   for (music::Hand side : {music::Hand::right, music::Hand::left}) {
     std::vector<int>& indices = side == music::Hand::right ? out.right_notes : out.left_notes;
     std::vector<PlanNote> notes;
@@ -64,6 +108,7 @@ Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& mo
       }
       p.onset_s = n.onset_s;
       p.offset_s = std::max(n.offset_s, n.onset_s);
+      p.tonic = tonics[i];
       p.pin = options.pins_from_marks && n.finger >= 1 && n.finger <= 5 ? n.finger : 0;
       notes.push_back(p);
       indices.push_back(static_cast<int>(i));

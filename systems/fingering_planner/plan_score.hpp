@@ -24,6 +24,9 @@ struct PlanOptions {
   PlannerMode mode = PlannerMode::exact;
   int lookahead = 4;            // events, for PlannerMode::lookahead
   bool pins_from_marks = true;  // Note::finger in the file = pinned
+  // Give the planner each note's tonic (PlanNote::tonic; used by fingers.thumb_on_tonic): from the
+  // key signature in force, else the major / harmonic-minor key that the notes fit best.
+  bool tonic_from_key = true;
 };
 
 struct ScorePlan {
@@ -41,6 +44,11 @@ Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& mo
 // Plans one hand with the chosen mode.
 Result<HandPlan> plan_hand(std::span<const PlanNote> notes, music::Hand side,
                            const FingeringModel& model, const PlanOptions& options = {});
+
+// Tonic pitch class (0 = C .. 11) per Score::notes entry: the key signature in force at the note
+// (fifths, minor flag); without key signatures, the major or harmonic-minor scale containing most
+// notes (duration-weighted; ties: major first, then the tonic of the lowest first note).
+std::vector<int> note_tonics(const music::Score& score);
 
 // 1-based bar containing `beats` (quarter notes from the start), from the time signatures.
 int bar_at_beats(const music::Score& score, double beats);

@@ -69,6 +69,15 @@ double strike_cost(const EventFingering& event, const FingeringModel& model) {
   return cost;
 }
 
+double strike_cost(const EventFingering& event, const FingeringModel& model, int tonic) {
+  double cost = strike_cost(event, model);
+  if (tonic >= 0 && (event.struck & 1u) != 0 && event.key[0] >= 0 && event.key[0] % 12 == tonic &&
+      !music::is_black_key(event.key[0])) {
+    cost += model.weights.thumb_on_tonic;
+  }
+  return cost;
+}
+
 double area_transition_cost(double lo_a, double hi_a, double lo_b, double hi_b, double dt_s,
                             const FingeringModel& model) {
   const CostWeights& w = model.weights;

@@ -39,6 +39,9 @@ EventFingering make_event_fingering(std::span<const FingeredKey> keys, music::Ha
 
 // Per-strike cost: finger use and black-key terms of the struck fingers.
 double strike_cost(const EventFingering& event, const FingeringModel& model);
+// The same plus fingers.thumb_on_tonic when the thumb strikes the tonic (pitch class `tonic`,
+// -1 = unknown: no term).
+double strike_cost(const EventFingering& event, const FingeringModel& model, int tonic);
 
 // Area term alone: 1 - Δd/max(d) when the areas overlap by Δd >= 0; otherwise
 // gap_base + gap_speed × (gap in white keys) / dt, infinite when dt <= 0.

@@ -1,0 +1,147 @@
+#include "finger_motion/evaluate_hand_pose.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace tutti::finger_motion {
+namespace {
+
+// Where a finger is at t before the next contact takes over: lateral x, bend, tip height, and
+// the key it touches (press depth measured against that key's top).
+struct Baseline {
+  double x_mm = 0.0;
+  double bend_rad = 0.0;
+  double z_mm = 0.0;
+  const KeyContact* touching = nullptr;
+};
+
+double key_top(const KeyHeights& keys, bool black) {
+  return black ? keys.black_top_z_mm : keys.white_top_z_mm;
+}
+
+double bend_for(const FingerGeometry& g, bool black) {
+  return black ? g.black_bend_rad : g.white_bend_rad;
+}
+
+Baseline baseline(const FingerMotionPlan& plan, const FingerGeometry& g, const KeyContact* prev,
+                  double rest_x_mm, double t_s) {
+  const KeyHeights& keys = plan.keys;
+  const double neutral_z = keys.white_top_z_mm + keys.hover_lift_mm;
+  if (prev == nullptr) return {rest_x_mm, g.neutral_bend_rad, neutral_z, nullptr};
+  const double top = key_top(keys, prev->black);
+  const double bend = bend_for(g, prev->black);
+  if (t_s <= prev->offset_s) return {prev->x_mm, bend, top - keys.dip_mm, prev};
+  const double tau = plan.timing.relax_time_constant_s;
+  const double decay = std::exp(-(t_s - prev->offset_s) / tau);
+  Baseline b;
+  b.x_mm = rest_x_mm + prev->release_offset_mm * decay;
+  b.bend_rad = g.neutral_bend_rad + (bend - g.neutral_bend_rad) * decay;
+  b.touching = prev;
+  if (t_s < prev->release_end_s) {
+    const double u = (t_s - prev->offset_s) / (prev->release_end_s - prev->offset_s);
+    b.z_mm = (top - keys.dip_mm) + (keys.dip_mm + keys.hover_lift_mm) * min_jerk(u);
+  } else {
+    const double hover = top + keys.hover_lift_mm;
+    b.z_mm = neutral_z + (hover - neutral_z) * std::exp(-(t_s - prev->release_end_s) / tau);
+  }
+  return b;
+}
+
+// The cached shape when the bend is one of the planned values, else computed.
+ChainShape shape_for(const FingerMotionPlan& plan, std::size_t f, double bend_rad) {
+  if (bend_rad == plan.white_shape[f].bend_rad) return plan.white_shape[f];
+  if (bend_rad == plan.black_shape[f].bend_rad) return plan.black_shape[f];
+  if (bend_rad == plan.neutral_shape[f].bend_rad) return plan.neutral_shape[f];
+  return chain_shape(plan.geometry[f], bend_rad);
+}
+
+}  // namespace
+
+void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide side, int finger,
+                          double hand_x_mm, double t_s, FingerPose& out) noexcept {
+  const std::size_t f = static_cast<std::size_t>(std::clamp(finger, 1, 5) - 1);
+  const HandFingerPlan& hand = plan.hand(side);
+  const FingerGeometry& g = plan.geometry[f];
+  const KeyHeights& keys = plan.keys;
+  const std::span<const KeyContact> contacts(hand.fingers[f]);
+  const double rest_x = hand_x_mm + hand.rest_offset_mm[f];
+
+  // First contact with onset > t (NaN compares false: "before everything").
+  const auto next_it =
+      std::upper_bound(contacts.begin(), contacts.end(), t_s,
+                       [](double t, const KeyContact& c) { return !(c.onset_s <= t); });
+  const KeyContact* prev = next_it == contacts.begin() ? nullptr : &*(next_it - 1);
+  const KeyContact* next = next_it == contacts.end() ? nullptr : &*next_it;
+
+  Baseline b = baseline(plan, g, prev, rest_x, t_s);
+  double x = b.x_mm;
+  double bend = b.bend_rad;
+  double z = b.z_mm;
+  const KeyContact* touching = b.touching;
+  double depth = 0.0;
+  if (touching != nullptr) {
+    depth = std::clamp((key_top(keys, touching->black) - z) / keys.dip_mm, 0.0, 1.0);
+    if (t_s <= touching->offset_s) depth = 1.0;
+  }
+
+  if (next != nullptr) {
+    if (t_s >= next->move_start_s) {
+      // A textbook minimum-jerk move: from where the finger was when it left (at rest there
+      // relative to the move), so it starts and arrives with zero velocity.
+      x = blend(next->move_from_x_mm, next->x_mm,
+                min_jerk((t_s - next->move_start_s) / (next->onset_s - next->move_start_s)));
+    }
+    if (t_s >= next->shape_start_s) {
+      const double top = key_top(keys, next->black);
+      const double span = next->stroke_start_s - next->shape_start_s;
+      const double u = span > 0 ? min_jerk((t_s - next->shape_start_s) / span) : 1.0;
+      bend = blend(bend, bend_for(g, next->black), u);
+      z = blend(z, top + keys.hover_lift_mm, u);
+      if (t_s >= next->stroke_start_s) {
+        const double w = (t_s - next->stroke_start_s) / (next->onset_s - next->stroke_start_s);
+        z = blend(z, top - keys.dip_mm, w * w);
+        touching = next;
+        depth = std::clamp((top - z) / keys.dip_mm, 0.0, 1.0);
+      } else if (touching != nullptr) {
+        depth = std::clamp((key_top(keys, touching->black) - z) / keys.dip_mm, 0.0, 1.0);
+      }
+    }
+  }
+
+  const ChainShape shape = shape_for(plan, f, bend);
+  const StrokeSolution stroke = solve_stroke(shape, g.root_z_mm - z);
+  const double mirror = side == components::HandSide::left ? -1.0 : 1.0;
+  out.spread_rad = spread_angle_rad(x - rest_x, stroke.reach_y_mm, mirror);
+  if (f == 0) {  // thumb: strikes by abduction; the bend is its MCP and IP
+    out.abduction_rad = stroke.joint1_rad;
+    out.mcp_flexion_rad = shape.bend_rad;
+    out.pip_flexion_rad = shape.joint3_rad;
+    out.dip_flexion_rad = 0.0;
+  } else {
+    out.abduction_rad = 0.0;
+    out.mcp_flexion_rad = stroke.joint1_rad;
+    out.pip_flexion_rad = shape.bend_rad;
+    out.dip_flexion_rad = shape.joint3_rad;
+  }
+  out.press_depth = depth;
+  out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
+  out.tip_x_mm = x;
+  out.tip_y_mm = g.root_y_mm + stroke.reach_y_mm;
+  out.tip_z_mm = z;
+}
+
+void evaluate_hand_pose(const FingerMotionPlan& plan, const motion::HandPath& path,
+                        components::HandSide side, double t_s, HandPose& out) noexcept {
+  const motion::HandState state = motion::evaluate(path, t_s);
+  out.x_mm = state.x_mm;
+  out.v_x_mm_per_s = state.v_mm_per_s;
+  out.y_mm = plan.geometry[2].root_y_mm;
+  out.z_mm = plan.geometry[2].root_z_mm;
+  for (int finger = 1; finger <= 5; ++finger) {
+    evaluate_finger_pose(plan, side, finger, state.x_mm, t_s,
+                         out.fingers[static_cast<std::size_t>(finger - 1)]);
+  }
+}
+
+}  // namespace tutti::finger_motion

@@ -1,0 +1,164 @@
+#include "finger_motion/finger_motion_params.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "piano_model/json_document.hpp"
+
+namespace tutti::finger_motion {
+namespace {
+
+using piano::JsonReader;
+
+// Reads `key` into `out`, requiring out > 0 (or >= 0 when `allow_zero`).
+Status read_positive(const JsonReader& reader, const nlohmann::json& object,
+                     const std::string& path, const char* key, double& out,
+                     bool allow_zero = false) {
+  auto value = reader.number(object, path, key);
+  if (!value) return value.error();
+  if (allow_zero ? *value < 0 : *value <= 0) {
+    return reader.error(path + "/" + key, allow_zero ? "must not be negative" : "must be positive");
+  }
+  out = *value;
+  return Status::success();
+}
+
+Status read_keys(const JsonReader& reader, const nlohmann::json& document, KeyHeights& keys) {
+  const std::string path = "/keys";
+  if (!document.contains("keys")) return reader.error(path, "missing");
+  const nlohmann::json& object = document.at("keys");
+  if (auto ok = reader.check_keys(object, path,
+                                  {"white_top_z_mm", "black_top_z_mm", "dip_mm", "hover_lift_mm"});
+      !ok) {
+    return ok;
+  }
+  auto white = reader.number(object, path, "white_top_z_mm");
+  if (!white) return white.error();
+  auto black = reader.number(object, path, "black_top_z_mm");
+  if (!black) return black.error();
+  if (!(*black > *white))
+    return reader.error(path + "/black_top_z_mm", "must exceed white_top_z_mm");
+  keys.white_top_z_mm = *white;
+  keys.black_top_z_mm = *black;
+  if (auto ok = read_positive(reader, object, path, "dip_mm", keys.dip_mm); !ok) return ok;
+  return read_positive(reader, object, path, "hover_lift_mm", keys.hover_lift_mm, true);
+}
+
+Status read_timing(const JsonReader& reader, const nlohmann::json& document, StrokeTiming& t) {
+  const std::string path = "/timing";
+  if (!document.contains("timing")) return reader.error(path, "missing");
+  const nlohmann::json& object = document.at("timing");
+  if (auto ok = reader.check_keys(object, path,
+                                  {"press_lead_s", "move_min_s", "move_max_s", "move_s_per_mm",
+                                   "shape_s", "release_s", "relax_time_constant_s"});
+      !ok) {
+    return ok;
+  }
+  const struct {
+    const char* key;
+    double* out;
+    bool allow_zero;
+  } fields[] = {{"press_lead_s", &t.press_lead_s, false},
+                {"move_min_s", &t.move_min_s, false},
+                {"move_max_s", &t.move_max_s, false},
+                {"move_s_per_mm", &t.move_s_per_mm, true},
+                {"shape_s", &t.shape_s, false},
+                {"release_s", &t.release_s, false},
+                {"relax_time_constant_s", &t.relax_time_constant_s, false}};
+  for (const auto& field : fields) {
+    if (auto ok = read_positive(reader, object, path, field.key, *field.out, field.allow_zero);
+        !ok) {
+      return ok;
+    }
+  }
+  if (t.move_max_s < t.move_min_s) return reader.error(path + "/move_max_s", "below move_min_s");
+  return Status::success();
+}
+
+Status read_finger(const JsonReader& reader, const nlohmann::json& fingers, int finger,
+                   FingerGeometry& out) {
+  const std::string name = std::to_string(finger);
+  const std::string path = "/fingers/" + name;
+  if (!fingers.contains(name)) return reader.error(path, "missing");
+  const nlohmann::json& object = fingers.at(name);
+  if (auto ok = reader.check_keys(object, path,
+                                  {"phalanges_mm", "root_y_mm", "root_z_mm", "neutral_bend_rad",
+                                   "white_bend_rad", "black_bend_rad", "coupling"});
+      !ok) {
+    return ok;
+  }
+  if (!object.contains("phalanges_mm")) return reader.error(path + "/phalanges_mm", "missing");
+  const nlohmann::json& lengths = object.at("phalanges_mm");
+  if (!lengths.is_array() || lengths.size() != 3) {
+    return reader.error(path + "/phalanges_mm", "expected 3 lengths in mm");
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!lengths[i].is_number() || !(lengths[i].get<double>() > 0)) {
+      return reader.error(path + "/phalanges_mm/" + std::to_string(i),
+                          "expected a positive number");
+    }
+    out.phalanges_mm[i] = lengths[i].get<double>();
+  }
+  auto root_y = reader.number(object, path, "root_y_mm");
+  if (!root_y) return root_y.error();
+  out.root_y_mm = *root_y;
+  if (auto ok = read_positive(reader, object, path, "root_z_mm", out.root_z_mm); !ok) return ok;
+  const struct {
+    const char* key;
+    double* out;
+  } bends[] = {{"neutral_bend_rad", &out.neutral_bend_rad},
+               {"white_bend_rad", &out.white_bend_rad},
+               {"black_bend_rad", &out.black_bend_rad}};
+  for (const auto& bend : bends) {
+    auto value = reader.number(object, path, bend.key);
+    if (!value) return value.error();
+    if (*value < 0 || *value > 1.6) {
+      return reader.error(path + "/" + bend.key, "expected 0..1.6 rad");
+    }
+    *bend.out = *value;
+  }
+  auto coupling = reader.number(object, path, "coupling");
+  if (!coupling) return coupling.error();
+  if (*coupling < 0 || *coupling > 1.5) return reader.error(path + "/coupling", "expected 0..1.5");
+  out.coupling = *coupling;
+  return Status::success();
+}
+
+}  // namespace
+
+Result<FingerMotionParams> finger_motion_params_from_json(const nlohmann::json& document,
+                                                          const std::string& file_name) {
+  const JsonReader reader(file_name);
+  if (auto ok =
+          reader.check_keys(document, "", {"description", "source", "keys", "timing", "fingers"});
+      !ok) {
+    return ok.error();
+  }
+  FingerMotionParams params;
+  if (auto ok = read_keys(reader, document, params.keys); !ok) return ok.error();
+  if (auto ok = read_timing(reader, document, params.timing); !ok) return ok.error();
+  if (!document.contains("fingers")) return reader.error("/fingers", "missing");
+  const nlohmann::json& fingers = document.at("fingers");
+  if (auto ok = reader.check_keys(fingers, "/fingers", {"1", "2", "3", "4", "5"}); !ok) {
+    return ok.error();
+  }
+  for (int finger = 1; finger <= 5; ++finger) {
+    if (auto ok = read_finger(reader, fingers, finger,
+                              params.fingers[static_cast<std::size_t>(finger - 1)]);
+        !ok) {
+      return ok.error();
+    }
+  }
+  return params;
+}
+
+Result<FingerMotionParams> load_finger_motion_params(const std::filesystem::path& path) {
+  auto document = piano::read_json_file(path);
+  if (!document) return document.error();
+  return finger_motion_params_from_json(*document, path.filename().string());
+}
+
+std::filesystem::path finger_motion_params_path(const std::filesystem::path& content_dir) {
+  return content_dir / "piano" / "finger_motion.json";
+}
+
+}  // namespace tutti::finger_motion

@@ -1,0 +1,64 @@
+#pragma once
+// The planned finger motion of one pianist: per hand, per finger, the sorted key contacts with
+// every timing decision already made (when the finger leaves for the key, reshapes, strikes,
+// releases). Immutable once built by plan_finger_motion; evaluate_hand_pose reads it.
+//
+// Ownership: a value (vectors inside); share it between entities through a shared_ptr to const.
+// Times are seconds from the start of the piece, positions millimetres in the keyboard frame.
+
+#include <array>
+#include <vector>
+
+#include "components/hand_side.hpp"
+#include "finger_motion/finger_chain.hpp"
+#include "finger_motion/finger_motion_params.hpp"
+
+namespace tutti::finger_motion {
+
+// One key played by one finger. Invariants (plan_finger_motion guarantees them, per finger):
+// contacts sorted by strictly increasing onset_s; for each contact
+// move_start_s <= onset_s, shape_start_s <= stroke_start_s < onset_s <= offset_s <
+// release_end_s, and the previous contact's offset_s <= this contact's shape_start_s,
+// move_start_s and stroke_start_s.
+struct KeyContact {
+  int key = 60;               // MIDI key (clamped onto the keyboard)
+  double x_mm = 0.0;          // key centre along the keyboard
+  bool black = false;         // black key: higher top, flatter bend
+  double onset_s = 0.0;       // key bottom reached (press depth 1)
+  double offset_s = 0.0;      // key starts to rise (trimmed so the next stroke of this finger fits)
+  double move_start_s = 0.0;  // lateral minimum-jerk move toward x_mm starts (ends at onset_s)
+  double move_from_x_mm = 0.0;  // where the tip was at move_start_s (the move's start point)
+  double shape_start_s = 0.0;   // bend (joints 2-3) and hover height start to adapt (end: stroke)
+  double stroke_start_s = 0.0;  // the tip starts down from hover height
+  double release_end_s = 0.0;   // the tip is back at hover height above the key
+  // Tip's lateral offset from its rest line at offset_s (keyboard x, not mirrored); decays with
+  // the relax time constant after the release.
+  double release_offset_mm = 0.0;
+  int note = -1;  // Score::notes index
+};
+
+struct HandFingerPlan {
+  components::HandSide side = components::HandSide::right;
+  std::array<std::vector<KeyContact>, 5> fingers;  // [0] = thumb
+  // Rest line of each finger relative to the hand reference point (keyboard x): the middle of
+  // its reach range in the hand model (already mirrored for the left hand).
+  std::array<double, 5> rest_offset_mm{};
+};
+
+struct FingerMotionPlan {
+  HandFingerPlan right{components::HandSide::right, {}, {}};
+  HandFingerPlan left{components::HandSide::left, {}, {}};
+  std::array<FingerGeometry, 5> geometry{};  // scaled to the hand preset
+  // Chain shapes for the three bends a held or resting finger has, so evaluate rarely needs trig.
+  std::array<ChainShape, 5> neutral_shape{};
+  std::array<ChainShape, 5> white_shape{};
+  std::array<ChainShape, 5> black_shape{};
+  KeyHeights keys;
+  StrokeTiming timing;
+
+  const HandFingerPlan& hand(components::HandSide side) const {
+    return side == components::HandSide::left ? left : right;
+  }
+};
+
+}  // namespace tutti::finger_motion

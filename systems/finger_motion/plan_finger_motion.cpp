@@ -1,0 +1,139 @@
+#include "finger_motion/plan_finger_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace tutti::finger_motion {
+namespace {
+
+using components::HandSide;
+
+Error note_error(const music::Score& score, std::size_t index, const std::string& reason) {
+  const std::string file = score.source.empty() ? std::string("score") : score.source;
+  return Error{file + ": note " + std::to_string(index) + ": " + reason};
+}
+
+// Sorts, merges same-onset contacts, trims offsets and fills the timing fields.
+void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
+                       const motion::HandPath& path, const StrokeTiming& timing) {
+  std::sort(contacts.begin(), contacts.end(), [](const KeyContact& a, const KeyContact& b) {
+    return a.onset_s != b.onset_s ? a.onset_s < b.onset_s : a.key < b.key;
+  });
+  std::vector<KeyContact> merged;
+  merged.reserve(contacts.size());
+  for (const KeyContact& c : contacts) {
+    if (!merged.empty() && merged.back().onset_s == c.onset_s) {
+      merged.back().offset_s = std::max(merged.back().offset_s, c.offset_s);
+      continue;
+    }
+    merged.push_back(c);
+  }
+  // Pass 1: stroke starts, and offsets trimmed to the next stroke of the same finger.
+  for (std::size_t j = 0; j < merged.size(); ++j) {
+    KeyContact& c = merged[j];
+    c.stroke_start_s = c.onset_s - timing.press_lead_s;
+    if (j > 0) {
+      KeyContact& prev = merged[j - 1];
+      c.stroke_start_s = std::max(c.stroke_start_s, prev.onset_s);
+      prev.offset_s = std::min(prev.offset_s, c.stroke_start_s);
+    }
+  }
+  // Pass 2: moves, shaping, releases.
+  for (std::size_t j = 0; j < merged.size(); ++j) {
+    KeyContact& c = merged[j];
+    const KeyContact* prev = j > 0 ? &merged[j - 1] : nullptr;
+    const double from_x =
+        prev != nullptr ? prev->x_mm : motion::evaluate(path, c.onset_s).x_mm + rest_offset_mm;
+    const double duration =
+        std::clamp(timing.move_min_s + timing.move_s_per_mm * std::abs(c.x_mm - from_x),
+                   timing.move_min_s, timing.move_max_s);
+    c.move_start_s = c.onset_s - duration;
+    c.shape_start_s = c.stroke_start_s - timing.shape_s;
+    if (prev != nullptr) {
+      c.move_start_s = std::max(c.move_start_s, prev->offset_s);
+      c.shape_start_s = std::max(c.shape_start_s, prev->offset_s);
+    }
+    // Where the tip is when it leaves: on the previous key, relaxing from it, or at rest.
+    const double rest_at_move = motion::evaluate(path, c.move_start_s).x_mm + rest_offset_mm;
+    if (prev == nullptr) {
+      c.move_from_x_mm = rest_at_move;
+    } else if (c.move_start_s <= prev->offset_s) {
+      c.move_from_x_mm = prev->x_mm;
+    } else {
+      c.move_from_x_mm =
+          rest_at_move + prev->release_offset_mm * std::exp(-(c.move_start_s - prev->offset_s) /
+                                                            timing.relax_time_constant_s);
+    }
+    c.release_end_s = c.offset_s + timing.release_s;
+    c.release_offset_mm = c.x_mm - (motion::evaluate(path, c.offset_s).x_mm + rest_offset_mm);
+  }
+  contacts = std::move(merged);
+}
+
+}  // namespace
+
+Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
+                                            const piano::ScorePlan& score_plan,
+                                            const motion::HandPath& right_path,
+                                            const motion::HandPath& left_path,
+                                            const piano::Keyboard& keyboard,
+                                            const piano::HandModel& hand_model,
+                                            const FingerMotionParams& params) {
+  const std::size_t count = score.notes.size();
+  if (score_plan.fingers.size() != count || score_plan.hands.size() != count) {
+    return Error{(score.source.empty() ? std::string("score") : score.source) +
+                 ": fingering plan has " + std::to_string(score_plan.fingers.size()) +
+                 " fingers and " + std::to_string(score_plan.hands.size()) + " hands for " +
+                 std::to_string(count) + " notes"};
+  }
+  FingerMotionPlan plan;
+  plan.keys = params.keys;
+  plan.timing = params.timing;
+  const double scale = hand_model.scale();
+  for (std::size_t f = 0; f < 5; ++f) {
+    FingerGeometry g = params.fingers[f];
+    for (double& length : g.phalanges_mm) length *= scale;
+    g.root_y_mm *= scale;
+    g.root_z_mm *= scale;
+    plan.geometry[f] = g;
+    plan.neutral_shape[f] = chain_shape(g, g.neutral_bend_rad);
+    plan.white_shape[f] = chain_shape(g, g.white_bend_rad);
+    plan.black_shape[f] = chain_shape(g, g.black_bend_rad);
+    const int finger = static_cast<int>(f) + 1;
+    const piano::FingerRange right = hand_model.range(music::Hand::right, finger);
+    const piano::FingerRange left = hand_model.range(music::Hand::left, finger);
+    plan.right.rest_offset_mm[f] = 0.5 * (right.lo_mm + right.hi_mm);
+    plan.left.rest_offset_mm[f] = 0.5 * (left.lo_mm + left.hi_mm);
+  }
+
+  for (std::size_t i = 0; i < count; ++i) {
+    const music::Note& note = score.notes[i];
+    const int finger = score_plan.fingers[i];
+    if (finger < 0 || finger > 5) return note_error(score, i, "finger outside 0..5");
+    const music::Hand hand = score_plan.hands[i];
+    if (finger == 0 || hand == music::Hand::unknown) continue;  // not played (percussion)
+    if (!std::isfinite(note.onset_s) || !std::isfinite(note.offset_s)) {
+      return note_error(score, i, "non-finite time");
+    }
+    if (note.offset_s < note.onset_s) return note_error(score, i, "offset before onset");
+    KeyContact c;
+    c.key = std::clamp(note.pitch, keyboard.lowest_key(), keyboard.highest_key());
+    c.x_mm = keyboard.x_mm(c.key);
+    c.black = keyboard.is_black(c.key);
+    c.onset_s = note.onset_s;
+    c.offset_s = note.offset_s;
+    c.note = static_cast<int>(i);
+    HandFingerPlan& side = hand == music::Hand::left ? plan.left : plan.right;
+    side.fingers[static_cast<std::size_t>(finger - 1)].push_back(c);
+  }
+  for (HandFingerPlan* side : {&plan.right, &plan.left}) {
+    const motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
+    for (std::size_t f = 0; f < 5; ++f) {
+      schedule_contacts(side->fingers[f], side->rest_offset_mm[f], path, plan.timing);
+    }
+  }
+  return plan;
+}
+
+}  // namespace tutti::finger_motion

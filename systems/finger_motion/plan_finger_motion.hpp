@@ -1,0 +1,41 @@
+#pragma once
+// Planning (offline, allocates): Score + fingering + hand paths -> FingerMotionPlan.
+//
+// For each Score note with a planned hand and finger (ScorePlan::hands / ::fingers), one key
+// contact on that hand's finger. Per finger, contacts are sorted by onset; two at the same onset
+// (the fingering planner shares a finger when more than five keys sound) merge into the first,
+// keeping the later offset. Keys off the keyboard are clamped to its ends.
+//
+// Timing (StrokeTiming), for a contact after the same finger's previous one:
+//  - stroke: starts press_lead_s before the onset (not before the previous onset);
+//  - the previous offset is trimmed to the stroke start, so the key rises before it is struck
+//  again;
+//  - lateral move: minimum-jerk, duration clamp(move_min_s + move_s_per_mm x distance, min, max),
+//    ending at the onset and starting no earlier than the previous offset (late and quick);
+//  - bend and hover height adapt over shape_s before the stroke (not before the previous offset).
+//
+// Errors (one line, naming the note index): plan sizes that do not match the score, a finger
+// outside 0..5, a non-finite time, offset < onset.
+
+#include "core/result.hpp"
+#include "finger_motion/finger_motion_params.hpp"
+#include "finger_motion/finger_motion_plan.hpp"
+#include "fingering_planner/plan_score.hpp"
+#include "music/score.hpp"
+#include "piano_model/hand_model.hpp"
+#include "piano_model/keyboard.hpp"
+#include "spline_motion/hand_path.hpp"
+
+namespace tutti::finger_motion {
+
+// `right_path` / `left_path`: the hands' planned paths (used for each release's lateral offset).
+// Phalanx lengths and root heights are scaled by hand_model.scale().
+Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
+                                            const piano::ScorePlan& score_plan,
+                                            const motion::HandPath& right_path,
+                                            const motion::HandPath& left_path,
+                                            const piano::Keyboard& keyboard,
+                                            const piano::HandModel& hand_model,
+                                            const FingerMotionParams& params);
+
+}  // namespace tutti::finger_motion

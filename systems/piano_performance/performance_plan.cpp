@@ -1,0 +1,72 @@
+#include "piano_performance/performance_plan.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace tutti::performance {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// The originals minus those no check can mean anything for (non-finite or reversed: the repair
+// dropped or rewrote them, and says so).
+piano::HandCorridors well_formed(const piano::HandCorridors& corridors) {
+  piano::HandCorridors out;
+  out.reserve(corridors.size());
+  for (const piano::HandCorridor& c : corridors) {
+    if (std::isfinite(c.start_s) && std::isfinite(c.end_s) && std::isfinite(c.lo_mm) &&
+        std::isfinite(c.hi_mm) && c.start_s <= c.end_s && c.lo_mm <= c.hi_mm) {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
+                                  const PerformanceOptions& options, HandReport& report) {
+  const auto start = std::chrono::steady_clock::now();
+  report.events = corridors.size();
+  report.repair = repair_corridors(corridors, options.repair);
+  auto path = plan_hand_path(report.repair.corridors, options.path);
+  motion::HandPath result;
+  if (path) {
+    result = std::move(*path);
+    report.against_used = motion::corridor_violations(result, report.repair.corridors);
+    report.against_original = motion::corridor_violations(result, well_formed(corridors));
+  } else {
+    report.path_error = path.error().message;
+  }
+  report.path_ms = ms_since(start);
+  return result;
+}
+
+Result<PianoPerformancePlan> plan_performance(const music::Score& score,
+                                              const piano::FingeringModel& model,
+                                              const PerformanceOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto fingering = piano::plan_score(score, model, options.fingering);
+  if (!fingering) return fingering.error();
+  PianoPerformancePlan plan;
+  plan.fingering = std::move(*fingering);
+  plan.report.fingering_ms = ms_since(start);
+
+  HandReport& right = plan.report.right;
+  right.hand = music::Hand::right;
+  right.notes = plan.fingering.right_notes.size();
+  right.diagnostics = plan.fingering.right.diagnostics.size();
+  plan.right_path = plan_hand_motion(plan.fingering.right.corridors, options, right);
+
+  HandReport& left = plan.report.left;
+  left.hand = music::Hand::left;
+  left.notes = plan.fingering.left_notes.size();
+  left.diagnostics = plan.fingering.left.diagnostics.size();
+  plan.left_path = plan_hand_motion(plan.fingering.left.corridors, options, left);
+  return plan;
+}
+
+}  // namespace tutti::performance

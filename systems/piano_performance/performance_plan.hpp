@@ -1,0 +1,65 @@
+#pragma once
+// A whole piano performance, offline: the fingering planner's fingers and corridors for each
+// hand, then each hand's smooth path through its corridors (spline_motion), with a report of
+// how well the path honours them.
+//
+// The corridors are repaired first (corridor_repair.hpp: transition gaps at legato hand jumps,
+// contract fixes), so a run never fails because of one awkward moment; the report counts the
+// repairs. A path that still cannot be planned leaves that hand's path empty and its reason in
+// HandReport::path_error (the run itself succeeds). Only the fingering planner's errors (bad
+// input notes) fail plan_performance.
+
+#include <string>
+
+#include "core/result.hpp"
+#include "fingering_planner/plan_score.hpp"
+#include "music/score.hpp"
+#include "piano_performance/corridor_repair.hpp"
+#include "spline_motion/path_report.hpp"
+#include "spline_motion/smoothing.hpp"
+
+namespace tutti::performance {
+
+struct PerformanceOptions {
+  piano::PlanOptions fingering;
+  motion::PlanOptions path;
+  RepairOptions repair;
+};
+
+struct HandReport {
+  music::Hand hand = music::Hand::right;
+  std::size_t notes = 0;   // notes this hand plays
+  std::size_t events = 0;  // corridors from the fingering planner (notes starting together)
+  CorridorRepair repair;   // the corridors actually planned through + what was repaired
+  // The smoothed path checked against the corridors it was planned through (the repaired ones:
+  // zero violations by construction) and against the planner's original corridors (violations
+  // there are exactly the repaired jump moments, where the hand leaves early / arrives late).
+  motion::PathReport against_used;
+  motion::PathReport against_original;
+  std::size_t diagnostics = 0;  // fingering diagnostics of this hand
+  std::string path_error;       // non-empty = the path could not be planned (path left empty)
+  double path_ms = 0.0;         // wall time: repair + path + reports (not deterministic)
+};
+
+struct PerformanceReport {
+  HandReport right;
+  HandReport left;
+  double fingering_ms = 0.0;  // wall time of plan_score (not deterministic)
+};
+
+struct PianoPerformancePlan {
+  piano::ScorePlan fingering;
+  motion::HandPath right_path;
+  motion::HandPath left_path;
+  PerformanceReport report;
+};
+
+Result<PianoPerformancePlan> plan_performance(const music::Score& score,
+                                              const piano::FingeringModel& model,
+                                              const PerformanceOptions& options = {});
+
+// One hand's repair + path + reports, from its corridors (exposed for tests and tools).
+motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
+                                  const PerformanceOptions& options, HandReport& report);
+
+}  // namespace tutti::performance

@@ -1,0 +1,9 @@
+#include "components/performer.hpp"
+
+#include <gtest/gtest.h>
+
+TEST(PerformerComponent, DefaultsAreEmptyNameSeedZero) {
+  const tutti::components::Performer p;
+  EXPECT_TRUE(p.name.empty());
+  EXPECT_EQ(p.seed, 0U);
+}

@@ -1,0 +1,63 @@
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "finger_motion/finger_motion_params.hpp"
+#include "finger_motion_fixture.hpp"
+#include "piano_model/json_document.hpp"
+
+namespace tutti::finger_motion {
+namespace {
+
+nlohmann::json content_json() {
+  auto document = piano::read_json_file(finger_motion_params_path(test::content_dir()));
+  EXPECT_TRUE(document.ok());
+  return *document;
+}
+
+TEST(FingerMotionParams, ContentFileLoads) {
+  const FingerMotionParams& p = test::models().params;
+  EXPECT_GT(p.keys.black_top_z_mm, p.keys.white_top_z_mm);
+  EXPECT_NEAR(p.keys.dip_mm, 10.0, 2.0);
+  for (const FingerGeometry& g : p.fingers) {
+    EXPECT_GT(g.phalanges_mm[0], g.phalanges_mm[2]);
+    EXPECT_NE(g.white_bend_rad, g.black_bend_rad);
+  }
+}
+
+TEST(FingerMotionParams, UnknownKeyIsNamed) {
+  nlohmann::json doc = content_json();
+  doc["timing"]["press_led_s"] = 0.1;
+  auto p = finger_motion_params_from_json(doc, "finger_motion.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().message, "finger_motion.json: /timing/press_led_s: unknown key");
+}
+
+TEST(FingerMotionParams, BadValuesAreNamed) {
+  nlohmann::json doc = content_json();
+  doc["fingers"]["3"]["phalanges_mm"][1] = -2;
+  auto p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().message, "f.json: /fingers/3/phalanges_mm/1: expected a positive number");
+
+  doc = content_json();
+  doc["keys"].erase("dip_mm");
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().message, "f.json: /keys/dip_mm: missing");
+
+  doc = content_json();
+  doc["timing"]["move_max_s"] = 0.01;
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().message, "f.json: /timing/move_max_s: below move_min_s");
+}
+
+TEST(FingerMotionParams, MissingFileIsAnError) {
+  auto p = load_finger_motion_params("/nonexistent/finger_motion.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_NE(p.error().message.find("finger_motion.json"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tutti::finger_motion
