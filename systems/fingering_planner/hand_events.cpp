@@ -357,6 +357,17 @@ HandPlan finish_plan(const PreparedHand& hand, std::span<const int> chosen,
     const HandEvent& event = hand.events[e];
     const Candidate& cand = hand.candidates[static_cast<std::size_t>(chosen[e])];
     plan.corridors.push_back({event.onset_s, event.end_s, cand.shape.lo_mm, cand.shape.hi_mm});
+    // The transition cost priced a move between disjoint areas over the effective time dt_s
+    // (which may count an early release, release_fraction). The corridor must end when that
+    // move starts, or the hand path would be asked to jump in no time.
+    if (previous != nullptr && e > 0) {
+      const bool disjoint = std::min(previous->shape.hi_mm, cand.shape.hi_mm) <
+                            std::max(previous->shape.lo_mm, cand.shape.lo_mm);
+      HandCorridor& before = plan.corridors[e - 1];
+      if (disjoint && event.dt_s > 0) {
+        before.end_s = std::max(before.start_s, std::min(before.end_s, event.onset_s - event.dt_s));
+      }
+    }
     plan.total_cost += cand.strike;
     if (previous != nullptr) {
       const double t = transition_cost(previous->shape, cand.shape, event.dt_s, hand.side, model);

@@ -241,3 +241,28 @@ TEST(ScorePlan, PolonaisesAgreeWithTheEditorsMarks) {
 
 }  // namespace
 }  // namespace tutti::piano
+
+namespace tutti::piano {
+namespace {
+
+// A legato leap (C4 then C6, each held until the next): the hand areas cannot overlap, so the
+// planner prices the move over its effective time (with an early release) and the first
+// corridor must end when that move starts, never touching the next one.
+TEST(ScorePlan, CorridorsLeaveTheBudgetedTravelTimeBeforeALeap) {
+  const auto notes = test::melody({60, 84, 84}, 0.5);
+  auto plan = plan_hand_exact(notes, music::Hand::right, test::model("default"));
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
+  ASSERT_EQ(plan->corridors.size(), 3u);
+  const HandCorridor& first = plan->corridors[0];
+  const HandCorridor& second = plan->corridors[1];
+  ASSERT_LT(first.hi_mm, second.lo_mm);  // disjoint: the hand must travel
+  const double release_fraction = test::model("default").weights.release_fraction;
+  ASSERT_GT(release_fraction, 0.0);
+  EXPECT_NEAR(first.end_s, 0.5 - release_fraction * 0.5, 1e-12);
+  EXPECT_LT(first.end_s, second.start_s);
+  // Same key again: the areas overlap, so that corridor keeps its whole duration.
+  EXPECT_DOUBLE_EQ(second.end_s, 1.0);
+}
+
+}  // namespace
+}  // namespace tutti::piano
