@@ -7,6 +7,7 @@
 #include "app/fingering_output.hpp"
 #include "app/fingering_report.hpp"
 #include "app/piano_roll_plot.hpp"
+#include "app/weights_option.hpp"
 #include "core/file_io.hpp"
 #include "music/load_score.hpp"
 #include "music/musicxml/musicxml_fingering_writer.hpp"
@@ -47,19 +48,8 @@ Result<piano::PlannerMode> parse_mode(const std::string& mode) {
   return Error{"--mode: unknown mode '" + mode + "' (exact or lookahead)"};
 }
 
-// A preset name ("default", "paper") or a path to a weights file (has a '/' or ends in .json).
 Result<piano::FingeringModel> load_model(const FingeringOptions& o) {
-  const fs::path content = o.content_dir.empty() ? piano::default_content_dir() : o.content_dir;
-  const bool is_file =
-      o.weights.find('/') != std::string::npos || fs::path(o.weights).extension() == ".json";
-  auto model = piano::load_fingering_model(is_file ? "default" : o.weights, o.hand_size, content);
-  if (!model) return model.error();
-  if (is_file) {
-    auto weights = piano::load_cost_weights(o.weights);
-    if (!weights) return weights.error();
-    model->weights = std::move(*weights);
-  }
-  return model;
+  return load_model_with_weights(o.weights, o.hand_size, o.content_dir);
 }
 
 Status write_output(OutFormat format, const FingeringOptions& o, const music::Score& fingered,

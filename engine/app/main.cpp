@@ -6,6 +6,7 @@
 
 #include "app/exit_codes.hpp"
 #include "app/fingering_command.hpp"
+#include "app/fit_fingering_command.hpp"
 #include "app/info_command.hpp"
 
 int main(int argc, char** argv) {
@@ -40,6 +41,18 @@ int main(int argc, char** argv) {
   fingering_cmd->add_option("--plot", fingering.plot, "write a piano-roll PNG");
   fingering_cmd->add_option("--plot-seconds", fingering.plot_seconds, "plot window A:B seconds");
 
+  tutti::app::FitFingeringOptions fit;
+  CLI::App* fit_cmd = app.add_subcommand(
+      "fit-fingering",
+      "Fit the fingering cost weights to annotated pieces (PIG text or MusicXML with fingering "
+      "marks) and write them as JSON for `tutti fingering --weights`");
+  fit_cmd->add_option("FILES", fit.inputs, "annotated score files")->required();
+  fit_cmd->add_option("-o,--output", fit.output, "weights .json to write")->required();
+  fit_cmd->add_option("--start", fit.start,
+                      "preset (default, paper) or weights file to start from");
+  fit_cmd->add_option("--hand-size", fit.hand_size, "small, medium or large");
+  fit_cmd->add_option("--rounds", fit.rounds, "coordinate-descent rounds at most (1..100)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -51,5 +64,6 @@ int main(int argc, char** argv) {
 
   if (*info_cmd) return tutti::app::run_info(info, std::cout, std::cerr);
   if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
+  if (*fit_cmd) return tutti::app::run_fit_fingering(fit, std::cout, std::cerr);
   return tutti::app::kExitBadInput;
 }

@@ -1,0 +1,28 @@
+#pragma once
+// `tutti fit-fingering FILES... -o weights.json [--start PRESET_OR_FILE] [--hand-size NAME]
+//                      [--rounds N]`
+// Fits the fingering cost weights to annotated pieces (PIG text, MusicXML with fingering marks,
+// MIDI written by `tutti fingering`) by coordinate descent on the exact planner's agreement with
+// the marks, and writes them in the schema of content/piano/fingering/*.json, for
+// `tutti fingering --weights weights.json`.
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace tutti::app {
+
+struct FitFingeringOptions {
+  std::vector<std::filesystem::path> inputs;
+  std::filesystem::path output;
+  std::string start = "default";  // preset or weights file to start from
+  std::string hand_size{};
+  int rounds = 8;
+  std::filesystem::path content_dir{};  // empty = piano::default_content_dir()
+};
+
+// Prints the match rate before/after and the time taken; one "error: ..." line on failure.
+int run_fit_fingering(const FitFingeringOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace tutti::app
