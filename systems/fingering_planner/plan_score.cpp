@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "fingering_planner/exact_planner.hpp"
+#include "fingering_planner/local_replan.hpp"
 #include "fingering_planner/lookahead_planner.hpp"
 #include "music/pitch.hpp"
 
@@ -78,6 +79,67 @@ int bar_at_beats(const music::Score& score, double beats) {
   return bar + static_cast<int>(std::floor((beats - bar_start) / bar_length + 1e-9));
 }
 
+namespace {
+
+// One hand's planner input: the notes `indices` of the score (clamped to the keyboard, each
+// clamp reported in `clamped`), with their tonics and pins.
+std::vector<PlanNote> hand_input(const music::Score& score, const FingeringModel& model,
+                                 const PlanOptions& options, std::span<const int> indices,
+                                 std::span<const int> tonics, std::vector<Diagnostic>& clamped) {
+  std::vector<PlanNote> notes;
+  notes.reserve(indices.size());
+  for (int index : indices) {
+    const auto i = static_cast<std::size_t>(index);
+    const music::Note& n = score.notes[i];
+    PlanNote p;
+    p.key = std::clamp(n.pitch, model.keyboard.lowest_key(), model.keyboard.highest_key());
+    if (p.key != n.pitch) {
+      Diagnostic d;
+      d.kind = DiagnosticKind::unreachable_span;
+      d.time_s = n.onset_s;
+      d.bar = bar_at_beats(score, n.onset_beats);
+      d.notes = {index};
+      d.message = score.source + ": bar " + std::to_string(d.bar) + ": " +
+                  music::pitch_name(n.pitch) + " is off the keyboard; planned as " +
+                  music::pitch_name(p.key);
+      clamped.push_back(std::move(d));
+    }
+    p.onset_s = n.onset_s;
+    p.offset_s = std::max(n.offset_s, n.onset_s);
+    p.tonic = tonics[i];
+    p.pin = options.pins_from_marks && n.finger >= 1 && n.finger <= 5 ? n.finger : 0;
+    notes.push_back(p);
+  }
+  return notes;
+}
+
+// Hand-local note indices in `plan` become Score::notes indices, messages name file and bar.
+// Only the first `count` diagnostics are converted (the rest already are, from an earlier plan).
+void to_score_terms(const music::Score& score, music::Hand side, std::span<const int> indices,
+                    HandPlan& plan, std::size_t count) {
+  for (std::size_t k = 0; k < count; ++k) {
+    Diagnostic& d = plan.diagnostics[k];
+    for (int& note : d.notes) note = indices[static_cast<std::size_t>(note)];
+    if (!d.notes.empty()) {
+      d.bar =
+          bar_at_beats(score, score.notes[static_cast<std::size_t>(d.notes.front())].onset_beats);
+    }
+    d.message = score.source + ": bar " + std::to_string(d.bar) + " (" +
+                (side == music::Hand::right ? "right" : "left") + " hand) " + d.message;
+  }
+}
+
+void add_clamped(ScorePlan& out, std::vector<Diagnostic>& clamped) {
+  for (Diagnostic& d : clamped) {
+    HandPlan& target = out.hands[static_cast<std::size_t>(d.notes.front())] == music::Hand::left
+                           ? out.left
+                           : out.right;
+    target.diagnostics.push_back(std::move(d));
+  }
+}
+
+}  // namespace
+
 Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& model,
                              const PlanOptions& options) {
   ScorePlan out;
@@ -89,52 +151,75 @@ Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& mo
       options.tonic_from_key ? note_tonics(score) : std::vector<int>(score.notes.size(), -1);
   for (music::Hand side : {music::Hand::right, music::Hand::left}) {
     std::vector<int>& indices = side == music::Hand::right ? out.right_notes : out.left_notes;
-    std::vector<PlanNote> notes;
     for (std::size_t i = 0; i < score.notes.size(); ++i) {
-      if (assignment.hand[i] != side) continue;
-      const music::Note& n = score.notes[i];
-      PlanNote p;
-      p.key = std::clamp(n.pitch, model.keyboard.lowest_key(), model.keyboard.highest_key());
-      if (p.key != n.pitch) {
-        Diagnostic d;
-        d.kind = DiagnosticKind::unreachable_span;
-        d.time_s = n.onset_s;
-        d.bar = bar_at_beats(score, n.onset_beats);
-        d.notes = {static_cast<int>(i)};
-        d.message = score.source + ": bar " + std::to_string(d.bar) + ": " +
-                    music::pitch_name(n.pitch) + " is off the keyboard; planned as " +
-                    music::pitch_name(p.key);
-        clamped.push_back(std::move(d));
-      }
-      p.onset_s = n.onset_s;
-      p.offset_s = std::max(n.offset_s, n.onset_s);
-      p.tonic = tonics[i];
-      p.pin = options.pins_from_marks && n.finger >= 1 && n.finger <= 5 ? n.finger : 0;
-      notes.push_back(p);
-      indices.push_back(static_cast<int>(i));
+      if (assignment.hand[i] == side) indices.push_back(static_cast<int>(i));
     }
+    const std::vector<PlanNote> notes = hand_input(score, model, options, indices, tonics, clamped);
     auto plan = plan_hand(notes, side, model, options);
     if (!plan) return Error{score.source + ": " + plan.error().message};
     for (std::size_t k = 0; k < indices.size(); ++k) {
       out.fingers[static_cast<std::size_t>(indices[k])] = plan->fingers[k];
     }
-    for (Diagnostic& d : plan->diagnostics) {
-      for (int& note : d.notes) note = indices[static_cast<std::size_t>(note)];
-      if (!d.notes.empty()) {
-        d.bar =
-            bar_at_beats(score, score.notes[static_cast<std::size_t>(d.notes.front())].onset_beats);
-      }
-      d.message = score.source + ": bar " + std::to_string(d.bar) + " (" +
-                  (side == music::Hand::right ? "right" : "left") + " hand) " + d.message;
-    }
+    to_score_terms(score, side, indices, *plan, plan->diagnostics.size());
     (side == music::Hand::right ? out.right : out.left) = std::move(*plan);
   }
-  for (Diagnostic& d : clamped) {
-    HandPlan& target = out.hands[static_cast<std::size_t>(d.notes.front())] == music::Hand::left
-                           ? out.left
-                           : out.right;
-    target.diagnostics.push_back(std::move(d));
+  add_clamped(out, clamped);
+  return out;
+}
+
+Result<ScorePlan> replan_score_locally(const music::Score& score, const FingeringModel& model,
+                                       const PlanOptions& options, const ScorePlan& previous,
+                                       std::span<const int> edited, ScoreReplanSpan* span) {
+  if (previous.fingers.size() != score.notes.size() ||
+      previous.hands.size() != score.notes.size()) {
+    return Error{score.source + ": re-plan: the previous plan is for " +
+                 std::to_string(previous.fingers.size()) + " notes, the score has " +
+                 std::to_string(score.notes.size())};
   }
+  ScorePlan out = previous;
+  ScoreReplanSpan summary;
+  std::vector<Diagnostic> clamped;
+  const std::vector<int> tonics =
+      options.tonic_from_key ? note_tonics(score) : std::vector<int>(score.notes.size(), -1);
+  for (music::Hand side : {music::Hand::right, music::Hand::left}) {
+    const std::vector<int>& indices =
+        side == music::Hand::right ? previous.right_notes : previous.left_notes;
+    std::vector<int> local_edits;
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+      if (std::find(edited.begin(), edited.end(), indices[k]) != edited.end()) {
+        local_edits.push_back(static_cast<int>(k));
+      }
+    }
+    if (local_edits.empty()) continue;
+    const std::vector<PlanNote> notes = hand_input(score, model, options, indices, tonics, clamped);
+    HandPlan before = side == music::Hand::right ? previous.right : previous.left;
+    before.fingers.resize(indices.size());
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+      before.fingers[k] = previous.fingers[static_cast<std::size_t>(indices[k])];
+    }
+    // The previous plan's diagnostics are in score terms; the hand-level re-plan keeps the
+    // ones outside its window as they are.
+    auto replan = replan_hand_locally(notes, side, model, before, local_edits);
+    if (!replan) return Error{score.source + ": " + replan.error().message};
+    HandPlan& target = side == music::Hand::right ? out.right : out.left;
+    target = std::move(replan->plan);
+    to_score_terms(score, side, indices, target,
+                   target.diagnostics.size() - static_cast<std::size_t>(replan->kept_diagnostics));
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+      out.fingers[static_cast<std::size_t>(indices[k])] = target.fingers[k];
+    }
+    summary.changed_notes += replan->changed_notes;
+    summary.searched_events += replan->searched_last_event - replan->searched_first_event + 1;
+    summary.event_count += replan->event_count;
+    if (replan->changed_notes > 0) {
+      summary.first_changed_s = summary.changed_notes == replan->changed_notes
+                                    ? replan->first_changed_s
+                                    : std::min(summary.first_changed_s, replan->first_changed_s);
+      summary.last_changed_s = std::max(summary.last_changed_s, replan->last_changed_s);
+    }
+  }
+  add_clamped(out, clamped);  // only re-planned hands were read again
+  if (span != nullptr) *span = summary;
   return out;
 }
 

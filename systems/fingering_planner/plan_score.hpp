@@ -41,6 +41,22 @@ struct ScorePlan {
 Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& model,
                              const PlanOptions& options = {});
 
+// After the pins of the notes `edited` (Score::notes indices; e.g. a finger pinned in the
+// editor: Note::finger set, options.pins_from_marks) changed, re-plans only the affected span of
+// each hand (local_replan.hpp); every other note keeps the finger it has in `previous`, and the
+// hand assignment is kept. `score` is the one `previous` was planned from, apart from the pins.
+struct ScoreReplanSpan {
+  int changed_notes = 0;    // notes whose finger changed
+  int searched_events = 0;  // events searched again (both hands)
+  int event_count = 0;      // events of the hands that were re-planned
+  double first_changed_s = 0.0;
+  double last_changed_s = 0.0;
+};
+Result<ScorePlan> replan_score_locally(const music::Score& score, const FingeringModel& model,
+                                       const PlanOptions& options, const ScorePlan& previous,
+                                       std::span<const int> edited,
+                                       ScoreReplanSpan* span = nullptr);
+
 // Plans one hand with the chosen mode.
 Result<HandPlan> plan_hand(std::span<const PlanNote> notes, music::Hand side,
                            const FingeringModel& model, const PlanOptions& options = {});

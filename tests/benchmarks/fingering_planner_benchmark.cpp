@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "fingering_planner/exact_planner.hpp"
+#include "fingering_planner/local_replan.hpp"
 
 namespace {
 
@@ -71,5 +72,23 @@ void BM_ExactTwoHandChords(benchmark::State& state) {
                                                  benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ExactTwoHandChords)->Arg(50000)->Unit(benchmark::kMillisecond);
+
+// One finger pinned in the middle of a long melody (an editor click): the local re-plan.
+void BM_LocalReplanAfterPin(benchmark::State& state) {
+  auto notes = melody(static_cast<int>(state.range(0)), 67);
+  const auto plan = *plan_hand_exact(notes, tutti::music::Hand::right, model());
+  const int index = static_cast<int>(notes.size() / 2);
+  notes[static_cast<std::size_t>(index)].pin =
+      plan.fingers[static_cast<std::size_t>(index)] % 5 + 1;
+  const int edited[] = {index};
+  int searched = 0;
+  for (auto _ : state) {
+    auto replan = replan_hand_locally(notes, tutti::music::Hand::right, model(), plan, edited);
+    searched = replan->searched_last_event - replan->searched_first_event + 1;
+    benchmark::DoNotOptimize(replan);
+  }
+  state.counters["searched_events"] = searched;
+}
+BENCHMARK(BM_LocalReplanAfterPin)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
