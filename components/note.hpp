@@ -1,7 +1,7 @@
 #pragma once
 // A note of the piece as an entity: what sounds, when, who plays it with which finger, and whether
 // it sounds at the current frame. Timing fields are copied from the Score when the piece is
-// loaded; `sounding` is rewritten every frame.
+// loaded; `sounding` is rewritten every frame by systems/note_sounding (Phase::evaluate).
 
 #include <cstdint>
 

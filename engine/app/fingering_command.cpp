@@ -48,6 +48,12 @@ Result<piano::PlannerMode> parse_mode(const std::string& mode) {
   return Error{"--mode: unknown mode '" + mode + "' (exact or lookahead)"};
 }
 
+Result<motion::SmoothingMode> parse_smoothing(const std::string& name) {
+  if (const auto mode = motion::smoothing_mode_from_string(name)) return *mode;
+  return Error{"--smoothing: unknown smoothing '" + name +
+               "' (monotone_quintic, pchip, natural_spline or none)"};
+}
+
 Result<piano::FingeringModel> load_model(const FingeringOptions& o) {
   return load_model_with_weights(o.weights, o.hand_size, o.content_dir);
 }
@@ -102,6 +108,8 @@ int run_fingering(const FingeringOptions& o, std::ostream& out, std::ostream& er
   const auto mode = parse_mode(o.mode);
   if (!mode) return fail(mode.error());
   if (o.lookahead < 1) return fail(Error{"--lookahead: must be at least 1"});
+  const auto smoothing = parse_smoothing(o.smoothing);
+  if (!smoothing) return fail(smoothing.error());
   std::optional<PlotWindow> window;
   if (!o.plot_seconds.empty()) {
     auto parsed = parse_plot_window(o.plot_seconds);
@@ -141,6 +149,7 @@ int run_fingering(const FingeringOptions& o, std::ostream& out, std::ostream& er
   options.fingering.mode = *mode;
   options.fingering.lookahead = o.lookahead;
   options.fingering.pins_from_marks = o.keep_fingers;
+  options.path.smoothing = *smoothing;
   auto plan = performance::plan_performance(*score, *model, options);
   if (!plan) return fail(plan.error());
 

@@ -69,6 +69,7 @@ std::string fingering_json(const music::Score& fingered, const performance::Perf
   }
   nlohmann::ordered_json doc = {
       {"file", fingered.source},
+      {"smoothing", motion::to_string(r.smoothing)},
       {"notes", std::move(notes)},
       {"hands", {{"right", hand_json(r.right)}, {"left", hand_json(r.left)}}}};
   return doc.dump(2) + "\n";

@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
                             "cost weights: default, paper, or a .json file");
   fingering_cmd->add_flag("--keep-fingers", fingering.keep_fingers,
                           "keep the file's finger marks as pins (else they are ignored)");
+  fingering_cmd->add_option("--smoothing", fingering.smoothing,
+                            "hand-path smoothing: monotone_quintic (default), pchip, "
+                            "natural_spline or none");
   fingering_cmd->add_option("--plot", fingering.plot, "write a piano-roll PNG");
   fingering_cmd->add_option("--plot-seconds", fingering.plot_seconds, "plot window A:B seconds");
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <span>
 
 namespace tutti::finger_motion {
@@ -24,26 +25,28 @@ double bend_for(const FingerGeometry& g, bool black) {
   return black ? g.black_bend_rad : g.white_bend_rad;
 }
 
+// Where the finger is after `prev`'s key (none: at rest), before the next contact takes over.
+// One exponential at most: the relaxation decay since prev's offset; the hover height's decay
+// since the release end is that value times the precomputed release_decay_scale.
 Baseline baseline(const FingerMotionPlan& plan, const FingerGeometry& g, const KeyContact* prev,
                   double rest_x_mm, double t_s) {
   const KeyHeights& keys = plan.keys;
-  const double neutral_z = keys.white_top_z_mm + keys.hover_lift_mm;
+  const double neutral_z = plan.neutral_z_mm;
   if (prev == nullptr) return {rest_x_mm, g.neutral_bend_rad, neutral_z, nullptr};
   const double top = key_top(keys, prev->black);
   const double bend = bend_for(g, prev->black);
   if (t_s <= prev->offset_s) return {prev->x_mm, bend, top - keys.dip_mm, prev};
-  const double tau = plan.timing.relax_time_constant_s;
-  const double decay = std::exp(-(t_s - prev->offset_s) / tau);
+  const double decay = std::exp(-(t_s - prev->offset_s) * plan.relax_rate_per_s);
   Baseline b;
   b.x_mm = rest_x_mm + prev->release_offset_mm * decay;
   b.bend_rad = g.neutral_bend_rad + (bend - g.neutral_bend_rad) * decay;
   b.touching = prev;
   if (t_s < prev->release_end_s) {
-    const double u = (t_s - prev->offset_s) / (prev->release_end_s - prev->offset_s);
+    const double u = (t_s - prev->offset_s) * prev->inv_release_s;
     b.z_mm = (top - keys.dip_mm) + (keys.dip_mm + keys.hover_lift_mm) * min_jerk(u);
   } else {
     const double hover = top + keys.hover_lift_mm;
-    b.z_mm = neutral_z + (hover - neutral_z) * std::exp(-(t_s - prev->release_end_s) / tau);
+    b.z_mm = neutral_z + (hover - neutral_z) * (decay * prev->release_decay_scale);
   }
   return b;
 }
@@ -65,23 +68,32 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   const FingerGeometry& g = plan.geometry[f];
   const KeyHeights& keys = plan.keys;
   const std::span<const KeyContact> contacts(hand.fingers[f]);
+  const std::span<const double> onsets(hand.onsets_s[f]);
   const double rest_x = hand_x_mm + hand.rest_offset_mm[f];
 
-  // First contact with onset > t (NaN compares false: "before everything").
-  const auto next_it =
-      std::upper_bound(contacts.begin(), contacts.end(), t_s,
-                       [](double t, const KeyContact& c) { return !(c.onset_s <= t); });
-  const KeyContact* prev = next_it == contacts.begin() ? nullptr : &*(next_it - 1);
-  const KeyContact* next = next_it == contacts.end() ? nullptr : &*next_it;
+  // First contact with onset > t (NaN compares false: "before everything"), searched in the
+  // contiguous onsets.
+  const std::size_t next_index = static_cast<std::size_t>(
+      std::upper_bound(onsets.begin(), onsets.end(), t_s,
+                       [](double t, double onset) { return !(onset <= t); }) -
+      onsets.begin());
+  const KeyContact* prev = next_index == 0 ? nullptr : &contacts[next_index - 1];
+  const KeyContact* next = next_index == contacts.size() ? nullptr : &contacts[next_index];
 
-  Baseline b = baseline(plan, g, prev, rest_x, t_s);
+  // Once the next stroke has started (and the lateral move with it), the next contact decides
+  // everything: bend, hover height and x would be overwritten exactly (blend at u >= 1), so the
+  // previous key's relaxation is not evaluated at all.
+  const bool next_decides =
+      next != nullptr && t_s >= next->stroke_start_s && t_s >= next->move_start_s;
+  Baseline b;
+  if (!next_decides) b = baseline(plan, g, prev, rest_x, t_s);
   double x = b.x_mm;
   double bend = b.bend_rad;
   double z = b.z_mm;
   const KeyContact* touching = b.touching;
   double depth = 0.0;
   if (touching != nullptr) {
-    depth = std::clamp((key_top(keys, touching->black) - z) / keys.dip_mm, 0.0, 1.0);
+    depth = std::clamp((key_top(keys, touching->black) - z) * plan.inv_dip_per_mm, 0.0, 1.0);
     if (t_s <= touching->offset_s) depth = 1.0;
   }
 
@@ -90,21 +102,23 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
       // A textbook minimum-jerk move: from where the finger was when it left (at rest there
       // relative to the move), so it starts and arrives with zero velocity.
       x = blend(next->move_from_x_mm, next->x_mm,
-                min_jerk((t_s - next->move_start_s) / (next->onset_s - next->move_start_s)));
+                min_jerk((t_s - next->move_start_s) * next->inv_move_s));
     }
     if (t_s >= next->shape_start_s) {
       const double top = key_top(keys, next->black);
-      const double span = next->stroke_start_s - next->shape_start_s;
-      const double u = span > 0 ? min_jerk((t_s - next->shape_start_s) / span) : 1.0;
+      // At or after the stroke start the shaping is over: u = 1 exactly.
+      const double u = t_s < next->stroke_start_s
+                           ? min_jerk((t_s - next->shape_start_s) * next->inv_shape_s)
+                           : 1.0;
       bend = blend(bend, bend_for(g, next->black), u);
       z = blend(z, top + keys.hover_lift_mm, u);
       if (t_s >= next->stroke_start_s) {
-        const double w = (t_s - next->stroke_start_s) / (next->onset_s - next->stroke_start_s);
+        const double w = (t_s - next->stroke_start_s) * next->inv_stroke_s;
         z = blend(z, top - keys.dip_mm, w * w);
         touching = next;
-        depth = std::clamp((top - z) / keys.dip_mm, 0.0, 1.0);
+        depth = std::clamp((top - z) * plan.inv_dip_per_mm, 0.0, 1.0);
       } else if (touching != nullptr) {
-        depth = std::clamp((key_top(keys, touching->black) - z) / keys.dip_mm, 0.0, 1.0);
+        depth = std::clamp((key_top(keys, touching->black) - z) * plan.inv_dip_per_mm, 0.0, 1.0);
       }
     }
   }

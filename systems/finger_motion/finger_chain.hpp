@@ -6,8 +6,11 @@
 // the "bend" (PIP and DIP; thumb MCP and IP), joint 3 = coupling x joint 2. With the bend fixed,
 // the part of the chain past joint 1 is a rigid vector (a forward, b down) of length R at angle
 // alpha below the first segment, so the tip drop below the root is R sin(j1 + alpha): the stroke
-// angle for a wanted drop is asin(drop / R) - alpha and the horizontal reach is
-// sqrt(R^2 - drop^2). Millimetres and radians; flexion > 0 bends toward the palm.
+// angle for a wanted drop d is asin(d / R) - alpha and the horizontal reach is
+// y = sqrt(R^2 - d^2). solve_stroke evaluates that difference of angles as the angle of
+// (y a + d b, d a - y b), the cosine and sine of asin(d/R) - alpha times R^2: one atan of their
+// ratio (atan2 beyond +-90 degrees), so a shape needs only (a, b) and a call no hypot, asin or
+// second atan2. Millimetres and radians; flexion > 0 bends toward the palm.
 
 #include <algorithm>
 #include <cmath>
@@ -28,12 +31,14 @@ inline double blend(double a, double b, double u) noexcept {
   return u >= 1.0 ? b : a + (b - a) * u;
 }
 
-// The rigid part of a chain past joint 1 for a given bend (joint 2 angle).
+// The rigid part of a chain past joint 1 for a given bend (joint 2 angle): the root->tip vector
+// with joint 1 = 0, along the first segment (a) and perpendicular to it, toward the palm (b).
+// R = hypot(a, b) and alpha = atan2(b, a) in the terms above.
 struct ChainShape {
   double bend_rad = 0.0;    // joint 2
   double joint3_rad = 0.0;  // coupling x joint 2
-  double reach_mm = 0.0;    // R, root to tip with joint 1 = 0
-  double alpha_rad = 0.0;   // angle of the root->tip line below the first segment
+  double forward_mm = 0.0;  // a
+  double down_mm = 0.0;     // b
 };
 
 inline ChainShape chain_shape(const FingerGeometry& g, double bend_rad) noexcept {
@@ -42,7 +47,7 @@ inline ChainShape chain_shape(const FingerGeometry& g, double bend_rad) noexcept
                    g.phalanges_mm[2] * std::cos(bend_rad + j3);
   const double b =
       g.phalanges_mm[1] * std::sin(bend_rad) + g.phalanges_mm[2] * std::sin(bend_rad + j3);
-  return {bend_rad, j3, std::hypot(a, b), std::atan2(b, a)};
+  return {bend_rad, j3, a, b};
 }
 
 struct StrokeSolution {
@@ -51,10 +56,20 @@ struct StrokeSolution {
 };
 
 // Joint 1 so that the tip is `drop_mm` below the root; a drop beyond reach is clamped to +-R.
+// joint1 = asin(d / R) - alpha, in (-pi, pi] (a physical chain has |asin(d/R) - alpha| < pi).
 inline StrokeSolution solve_stroke(const ChainShape& shape, double drop_mm) noexcept {
-  const double r = shape.reach_mm;
-  const double d = std::clamp(drop_mm, -r, r);
-  return {std::asin(d / r) - shape.alpha_rad, std::sqrt(std::max(r * r - d * d, 0.0))};
+  const double a = shape.forward_mm;
+  const double b = shape.down_mm;
+  const double r2 = a * a + b * b;
+  if (drop_mm * drop_mm >= r2) {  // fully stretched up or down: y = 0, joint1 = +-pi/2 - alpha
+    const double d = std::copysign(std::sqrt(r2), drop_mm);
+    return {std::atan2(d * a, d * b), 0.0};
+  }
+  const double y = std::sqrt(r2 - drop_mm * drop_mm);
+  const double sine = drop_mm * a - y * b;    // sin(joint1) x R^2
+  const double cosine = y * a + drop_mm * b;  // cos(joint1) x R^2
+  // |joint1| < pi/2 (every stroke in practice): atan of the ratio, much cheaper than atan2.
+  return {cosine > 0.0 ? std::atan(sine / cosine) : std::atan2(sine, cosine), y};
 }
 
 // The spread angle: the direction of the horizontal root->tip line, atan(d / y), where d is the

@@ -35,6 +35,16 @@ struct KeyContact {
   // the relax time constant after the release.
   double release_offset_mm = 0.0;
   int note = -1;  // Score::notes index
+
+  // Precomputed by plan_finger_motion from the fields above, so evaluate multiplies instead of
+  // dividing and takes one exponential per finger (see README.md, "Precomputed at plan time").
+  double inv_move_s = 0.0;     // 1 / (onset_s - move_start_s)
+  double inv_shape_s = 0.0;    // 1 / (stroke_start_s - shape_start_s), 0 when that span is 0
+  double inv_stroke_s = 0.0;   // 1 / (onset_s - stroke_start_s)
+  double inv_release_s = 0.0;  // 1 / (release_end_s - offset_s)
+  // exp((release_end_s - offset_s) / relax_time_constant_s): turns the relaxation decay since
+  // the offset into the decay since the release end (the hover height's), without a second exp.
+  double release_decay_scale = 1.0;
 };
 
 struct HandFingerPlan {
@@ -43,11 +53,14 @@ struct HandFingerPlan {
   // Rest line of each finger relative to the hand reference point (keyboard x): the middle of
   // its reach range in the hand model (already mirrored for the left hand).
   std::array<double, 5> rest_offset_mm{};
+  // onsets_s[f][j] == fingers[f][j].onset_s: the contiguous copy evaluate binary-searches (8
+  // bytes per probe instead of a whole KeyContact; the onsets of a long piece stay in cache).
+  std::array<std::vector<double>, 5> onsets_s{};
 };
 
 struct FingerMotionPlan {
-  HandFingerPlan right{components::HandSide::right, {}, {}};
-  HandFingerPlan left{components::HandSide::left, {}, {}};
+  HandFingerPlan right{components::HandSide::right, {}, {}, {}};
+  HandFingerPlan left{components::HandSide::left, {}, {}, {}};
   std::array<FingerGeometry, 5> geometry{};  // scaled to the hand preset
   // Chain shapes for the three bends a held or resting finger has, so evaluate rarely needs trig.
   std::array<ChainShape, 5> neutral_shape{};
@@ -55,6 +68,10 @@ struct FingerMotionPlan {
   std::array<ChainShape, 5> black_shape{};
   KeyHeights keys;
   StrokeTiming timing;
+  // Derived from keys and timing by plan_finger_motion.
+  double relax_rate_per_s = 5.0;  // 1 / timing.relax_time_constant_s
+  double inv_dip_per_mm = 0.1;    // 1 / keys.dip_mm
+  double neutral_z_mm = 8.0;      // keys.white_top_z_mm + keys.hover_lift_mm: tip height at rest
 
   const HandFingerPlan& hand(components::HandSide side) const {
     return side == components::HandSide::left ? left : right;

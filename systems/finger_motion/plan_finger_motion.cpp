@@ -14,6 +14,19 @@ Error note_error(const music::Score& score, std::size_t index, const std::string
   return Error{file + ": note " + std::to_string(index) + ": " + reason};
 }
 
+// 1 / span, or 0 for a span that is not positive (only absurd times: the spans evaluate divides
+// by are positive by the KeyContact invariants).
+double reciprocal(double span) { return span > 0.0 ? 1.0 / span : 0.0; }
+
+// The values evaluate would otherwise recompute on every call (KeyContact's last fields).
+void precompute_for_evaluate(KeyContact& c, const StrokeTiming& timing) {
+  c.inv_move_s = reciprocal(c.onset_s - c.move_start_s);
+  c.inv_shape_s = reciprocal(c.stroke_start_s - c.shape_start_s);
+  c.inv_stroke_s = reciprocal(c.onset_s - c.stroke_start_s);
+  c.inv_release_s = reciprocal(c.release_end_s - c.offset_s);
+  c.release_decay_scale = std::exp((c.release_end_s - c.offset_s) / timing.relax_time_constant_s);
+}
+
 // Sorts, merges same-onset contacts, trims offsets and fills the timing fields.
 void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
                        const motion::HandPath& path, const StrokeTiming& timing) {
@@ -67,6 +80,7 @@ void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
     }
     c.release_end_s = c.offset_s + timing.release_s;
     c.release_offset_mm = c.x_mm - (motion::evaluate(path, c.offset_s).x_mm + rest_offset_mm);
+    precompute_for_evaluate(c, timing);
   }
   contacts = std::move(merged);
 }
@@ -90,6 +104,9 @@ Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
   FingerMotionPlan plan;
   plan.keys = params.keys;
   plan.timing = params.timing;
+  plan.relax_rate_per_s = 1.0 / params.timing.relax_time_constant_s;
+  plan.inv_dip_per_mm = 1.0 / params.keys.dip_mm;
+  plan.neutral_z_mm = params.keys.white_top_z_mm + params.keys.hover_lift_mm;
   const double scale = hand_model.scale();
   for (std::size_t f = 0; f < 5; ++f) {
     FingerGeometry g = params.fingers[f];
@@ -131,6 +148,8 @@ Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
     const motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
     for (std::size_t f = 0; f < 5; ++f) {
       schedule_contacts(side->fingers[f], side->rest_offset_mm[f], path, plan.timing);
+      side->onsets_s[f].reserve(side->fingers[f].size());
+      for (const KeyContact& c : side->fingers[f]) side->onsets_s[f].push_back(c.onset_s);
     }
   }
   return plan;

@@ -79,22 +79,39 @@ Result<CostWeights> cost_weights_from_json(const nlohmann::json& document,
   const nlohmann::json& area = section("hand_area");
   TUTTI_TRY(reader.check_keys(
       area, "/hand_area",
-      {"overlap", "gap_base", "gap_speed_per_white_key_per_s", "release_fraction"}));
+      {"overlap", "gap_base", "gap_speed_per_white_key_per_s", "release_fraction", "shift_time_s",
+       "shift_hold_fraction", "speed_limit_white_keys_per_s", "over_speed_per_white_key_per_s"}));
   SectionReader a(reader, area, "/hand_area");
   TUTTI_TRY(a.number("overlap", w.area_overlap));
   TUTTI_TRY(a.number("gap_base", w.gap_base));
   TUTTI_TRY(a.number("gap_speed_per_white_key_per_s", w.gap_speed));
   TUTTI_TRY(a.number("release_fraction", w.release_fraction));
+  TUTTI_TRY(a.number("shift_time_s", w.shift_time_s));
+  TUTTI_TRY(a.number("shift_hold_fraction", w.shift_hold_fraction));
+  TUTTI_TRY(a.number("speed_limit_white_keys_per_s", w.speed_limit, /*allow_inf=*/true));
+  TUTTI_TRY(a.number("over_speed_per_white_key_per_s", w.over_speed));
   if (w.release_fraction < 0 || w.release_fraction > 1) {
     return reader.error("/hand_area/release_fraction", "must be within 0..1");
   }
+  if (w.shift_time_s < 0) return reader.error("/hand_area/shift_time_s", "must be >= 0");
+  if (w.shift_hold_fraction < 0 || w.shift_hold_fraction > 1) {
+    return reader.error("/hand_area/shift_hold_fraction", "must be within 0..1");
+  }
+  if (!(w.speed_limit > 0)) {
+    return reader.error("/hand_area/speed_limit_white_keys_per_s", "must be positive");
+  }
+  if (w.over_speed < 0) {
+    return reader.error("/hand_area/over_speed_per_white_key_per_s", "must be >= 0");
+  }
 
   const nlohmann::json& fingers = section("fingers");
-  TUTTI_TRY(reader.check_keys(fingers, "/fingers", {"use", "black_key", "thumb_on_tonic"}));
+  TUTTI_TRY(reader.check_keys(fingers, "/fingers",
+                              {"use", "black_key", "thumb_on_tonic", "thumb_on_fourth"}));
   SectionReader f(reader, fingers, "/fingers");
   TUTTI_TRY(f.five("use", w.finger_use));
   TUTTI_TRY(f.five("black_key", w.black_key));
   TUTTI_TRY(f.number("thumb_on_tonic", w.thumb_on_tonic));
+  TUTTI_TRY(f.number("thumb_on_fourth", w.thumb_on_fourth));
 
   const nlohmann::json& same = section("same_finger");
   TUTTI_TRY(reader.check_keys(

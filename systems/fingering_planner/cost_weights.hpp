@@ -1,7 +1,8 @@
 #pragma once
 // The weights of the fingering cost, loaded from content/piano/fingering/<preset>.json.
 // "paper" reproduces Sekiguchi & Eiho (1999) exactly; "default" adds natural spacing, crossing
-// rules, per-finger preferences and repeated-key rules. Every key is documented in
+// rules, per-finger preferences, repeated-key rules, scale anchors for the thumb and physical
+// limits on hand shifts (their time and a speed limit). Every key is documented in
 // content/piano/README.md. Distances in white-key widths (δ), times in seconds.
 //
 // Absent keys keep the paper's value (the struct defaults below); an unknown key is an error
@@ -24,9 +25,18 @@ struct CostWeights {
 
   // --- hand area (the paper) ---
   double area_overlap = 1.0;      // weight of 1 - Δd / max(d_i, d_i+1) when the areas overlap
-  double gap_base = 1.0;          // cost of a non-overlapping move (>= 1 in the paper)
+  double gap_base = 1.0;          // cost of a non-overlapping move (>= 1; used: >= area_overlap)
   double gap_speed = 0.05;        // + per white key per second of hand travel speed
   double release_fraction = 0.0;  // Δt used >= this × inter-onset interval (0 = paper)
+  // Time a shift may take (effective_dt): Δt >= min(shift_time_s, (1 - shift_hold_fraction) ×
+  // inter-onset interval), i.e. before a shift the previous keys are let go up to shift_time_s
+  // early but held for at least shift_hold_fraction of their interval (0 = paper: no such term).
+  double shift_time_s = 0.0;
+  double shift_hold_fraction = 0.0;
+  // Hand speed limit of a shift (gap / Δt, white keys per second; infinite = paper): beyond it
+  // the gap cost rises by over_speed per white key per second of excess.
+  double speed_limit = std::numeric_limits<double>::infinity();
+  double over_speed = 0.0;
 
   // --- fingers (the paper: thumb +0.1 per use, thumb on a black key +1.5) ---
   std::array<double, 5> finger_use{0.1, 0.0, 0.0, 0.0, 0.0};
@@ -35,6 +45,11 @@ struct CostWeights {
   // anchor scale fingerings on the tonic (thumb on C and G in C major, left hand). The tonic
   // comes from PlanNote::tonic (plan_score: key signature, else the key the notes fit best).
   double thumb_on_tonic = 0.0;
+  // Per thumb strike on the white key a perfect fourth from the tonic towards the little finger
+  // (above it for the right hand, below it for the left; 0 in the paper): the thumb's second
+  // anchor in a scale, so the octave divides into 3 + 4 fingers from the tonic (RH C major thumb
+  // on C and F, LH on C and G).
+  double thumb_on_fourth = 0.0;
 
   // --- same finger on consecutive events ---
   double same_finger_other_key = kInfiniteCost;  // "inf" in the paper

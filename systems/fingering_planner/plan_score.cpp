@@ -7,6 +7,7 @@
 #include "fingering_planner/exact_planner.hpp"
 #include "fingering_planner/local_replan.hpp"
 #include "fingering_planner/lookahead_planner.hpp"
+#include "music/meter.hpp"
 #include "music/pitch.hpp"
 
 namespace tutti::piano {
@@ -60,25 +61,6 @@ std::vector<int> note_tonics(const music::Score& score) {
   return out;
 }
 
-int bar_at_beats(const music::Score& score, double beats) {
-  double bar_start = 0.0;
-  int bar = 1;
-  double bar_length = 4.0;
-  for (const music::TimeSignature& ts : score.time_signatures) {
-    const double at = score.tempo_map.beats_at(static_cast<double>(ts.tick));
-    if (at > beats) break;
-    const double bars = std::floor((at - bar_start) / bar_length + 1e-9);
-    bar += static_cast<int>(bars);
-    bar_start += bars * bar_length;
-    if (at > bar_start + 1e-9) {  // a change mid-bar starts a new bar
-      ++bar;
-      bar_start = at;
-    }
-    bar_length = ts.denominator > 0 ? 4.0 * ts.numerator / ts.denominator : 4.0;
-  }
-  return bar + static_cast<int>(std::floor((beats - bar_start) / bar_length + 1e-9));
-}
-
 namespace {
 
 // One hand's planner input: the notes `indices` of the score (clamped to the keyboard, each
@@ -97,7 +79,7 @@ std::vector<PlanNote> hand_input(const music::Score& score, const FingeringModel
       Diagnostic d;
       d.kind = DiagnosticKind::unreachable_span;
       d.time_s = n.onset_s;
-      d.bar = bar_at_beats(score, n.onset_beats);
+      d.bar = music::bar_at_beats(score, n.onset_beats);
       d.notes = {index};
       d.message = score.source + ": bar " + std::to_string(d.bar) + ": " +
                   music::pitch_name(n.pitch) + " is off the keyboard; planned as " +
@@ -121,8 +103,8 @@ void to_score_terms(const music::Score& score, music::Hand side, std::span<const
     Diagnostic& d = plan.diagnostics[k];
     for (int& note : d.notes) note = indices[static_cast<std::size_t>(note)];
     if (!d.notes.empty()) {
-      d.bar =
-          bar_at_beats(score, score.notes[static_cast<std::size_t>(d.notes.front())].onset_beats);
+      d.bar = music::bar_at_beats(
+          score, score.notes[static_cast<std::size_t>(d.notes.front())].onset_beats);
     }
     d.message = score.source + ": bar " + std::to_string(d.bar) + " (" +
                 (side == music::Hand::right ? "right" : "left") + " hand) " + d.message;

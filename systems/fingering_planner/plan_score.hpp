@@ -66,7 +66,4 @@ Result<HandPlan> plan_hand(std::span<const PlanNote> notes, music::Hand side,
 // notes (duration-weighted; ties: major first, then the tonic of the lowest first note).
 std::vector<int> note_tonics(const music::Score& score);
 
-// 1-based bar containing `beats` (quarter notes from the start), from the time signatures.
-int bar_at_beats(const music::Score& score, double beats);
-
 }  // namespace tutti::piano

@@ -35,7 +35,25 @@ double pair_cost(int f0, int key0, int f1, int key1, double u, const CostWeights
 }  // namespace
 
 double effective_dt(double release_to_attack_s, double inter_onset_s, const CostWeights& weights) {
-  return std::max({release_to_attack_s, weights.release_fraction * inter_onset_s, 0.0});
+  const double shift =
+      std::min(weights.shift_time_s, (1.0 - weights.shift_hold_fraction) * inter_onset_s);
+  return std::max({release_to_attack_s, weights.release_fraction * inter_onset_s, shift, 0.0});
+}
+
+std::optional<music::Hand> hand_of(const EventFingering& event, const FingeringModel& model) {
+  if ((event.down & 1u) == 0 || event.lo_mm > event.hi_mm) return std::nullopt;
+  // The area lies within the thumb's area of its own hand; the two hands' thumb areas are
+  // mirror images around the thumb's key, so the part outside the other hand's area decides.
+  // (x_mm is stored as float: compare within 0.01 mm.)
+  constexpr double kTolerance_mm = 0.01;
+  const double x = event.x_mm[0];
+  auto fits = [&](music::Hand side) {
+    const FingerRange& r = model.hand.range(side, 1);
+    return event.lo_mm >= x - r.hi_mm - kTolerance_mm && event.hi_mm <= x - r.lo_mm + kTolerance_mm;
+  };
+  const bool right = fits(music::Hand::right);
+  if (right == fits(music::Hand::left)) return std::nullopt;
+  return right ? music::Hand::right : music::Hand::left;
 }
 
 EventFingering make_event_fingering(std::span<const FingeredKey> keys, music::Hand side,
@@ -69,11 +87,22 @@ double strike_cost(const EventFingering& event, const FingeringModel& model) {
   return cost;
 }
 
-double strike_cost(const EventFingering& event, const FingeringModel& model, int tonic) {
+double strike_cost(const EventFingering& event, const FingeringModel& model, int tonic,
+                   std::optional<music::Hand> side) {
   double cost = strike_cost(event, model);
-  if (tonic >= 0 && (event.struck & 1u) != 0 && event.key[0] >= 0 && event.key[0] % 12 == tonic &&
-      !music::is_black_key(event.key[0])) {
-    cost += model.weights.thumb_on_tonic;
+  if (tonic < 0 || (event.struck & 1u) == 0 || event.key[0] < 0 ||
+      music::is_black_key(event.key[0])) {
+    return cost;
+  }
+  const CostWeights& w = model.weights;
+  const int pitch_class = event.key[0] % 12;
+  if (pitch_class == tonic) return cost + w.thumb_on_tonic;
+  if (w.thumb_on_fourth != 0.0) {
+    if (!side) side = hand_of(event, model);
+    // A perfect fourth (5 semitones) towards the little finger: up for the right hand.
+    if (side && pitch_class == (tonic + (*side == music::Hand::left ? 7 : 5)) % 12) {
+      cost += w.thumb_on_fourth;
+    }
   }
   return cost;
 }
@@ -88,7 +117,9 @@ double area_transition_cost(double lo_a, double hi_a, double lo_b, double hi_b, 
   }
   if (dt_s <= 0) return kInfiniteCost;
   const double speed = (-overlap / model.keyboard.white_key_width_mm()) / dt_s;
-  return w.gap_base + w.gap_speed * speed;
+  // Never cheaper than the worst overlap (areas that only touch): moving apart must not pay less.
+  const double cost = std::max(w.gap_base, w.area_overlap) + w.gap_speed * speed;
+  return speed > w.speed_limit ? cost + w.over_speed * (speed - w.speed_limit) : cost;
 }
 
 double transition_cost(const EventFingering& a, const EventFingering& b, double dt_s,

@@ -39,12 +39,22 @@ EventFingering make_event_fingering(std::span<const FingeredKey> keys, music::Ha
 
 // Per-strike cost: finger use and black-key terms of the struck fingers.
 double strike_cost(const EventFingering& event, const FingeringModel& model);
-// The same plus fingers.thumb_on_tonic when the thumb strikes the tonic (pitch class `tonic`,
-// -1 = unknown: no term).
-double strike_cost(const EventFingering& event, const FingeringModel& model, int tonic);
+// The same plus, when the thumb strikes a white key (pitch class `tonic` of the key, -1 =
+// unknown: no term), fingers.thumb_on_tonic on the tonic and fingers.thumb_on_fourth on the
+// fourth from the tonic towards the little finger (a perfect fourth above it for the right hand,
+// below it for the left). `side` = the hand; nullopt = read it from the event (hand_of).
+double strike_cost(const EventFingering& event, const FingeringModel& model, int tonic,
+                   std::optional<music::Hand> side = std::nullopt);
 
-// Area term alone: 1 - Δd/max(d) when the areas overlap by Δd >= 0; otherwise
-// gap_base + gap_speed × (gap in white keys) / dt, infinite when dt <= 0.
+// The hand an event's fingering belongs to, when its area tells: the area lies inside the
+// thumb's area of its own hand, and the two hands' thumb areas are mirror images around the
+// thumb's key. nullopt when the thumb is not down, the area is empty, or it fits both hands.
+std::optional<music::Hand> hand_of(const EventFingering& event, const FingeringModel& model);
+
+// Area term alone: area_overlap × (1 - Δd/max(d)) when the areas overlap by Δd >= 0; otherwise
+// max(gap_base, area_overlap) + gap_speed × s, with s = (gap in white keys) / dt the hand's mean
+// speed, plus over_speed × (s - speed_limit) above the speed limit; infinite when dt <= 0. (A gap
+// never costs less than the worst overlap; in the paper both are 1.)
 double area_transition_cost(double lo_a, double hi_a, double lo_b, double hi_b, double dt_s,
                             const FingeringModel& model);
 
@@ -56,7 +66,9 @@ double area_transition_cost(double lo_a, double hi_a, double lo_b, double hi_b, 
 double transition_cost(const EventFingering& a, const EventFingering& b, double dt_s,
                        music::Hand side, const FingeringModel& model);
 
-// Δt the cost model uses: max(release_to_attack_s, release_fraction × inter_onset_s), >= 0.
+// Δt the cost model uses (and the time the hand path gets for a shift between disjoint areas):
+// max(release_to_attack_s, release_fraction × inter_onset_s,
+//     min(shift_time_s, (1 - shift_hold_fraction) × inter_onset_s)), >= 0.
 double effective_dt(double release_to_attack_s, double inter_onset_s, const CostWeights& weights);
 
 }  // namespace tutti::piano

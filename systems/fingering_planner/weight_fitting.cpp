@@ -14,7 +14,8 @@ struct Tunable {
 };
 
 // Every finite weight that shapes the choice of fingers (not the event grouping, the
-// unreachable/impossible penalties, or the natural spacing unit).
+// unreachable/impossible penalties, the natural spacing unit, or the physical limits of a shift:
+// its time and the hand speed limit, which come from measurements, not from marks).
 const std::vector<Tunable>& tunables() {
   static const std::vector<Tunable> list = [] {
     std::vector<Tunable> t;
@@ -34,6 +35,7 @@ const std::vector<Tunable>& tunables() {
           [i](CostWeights& w) -> double& { return w.black_key[i]; });
     }
     add("fingers/thumb_on_tonic", [](CostWeights& w) -> double& { return w.thumb_on_tonic; });
+    add("fingers/thumb_on_fourth", [](CostWeights& w) -> double& { return w.thumb_on_fourth; });
     add("same_finger/other_key", [](CostWeights& w) -> double& { return w.same_finger_other_key; });
     add("same_finger/speed_per_white_key_per_s",
         [](CostWeights& w) -> double& { return w.same_finger_speed; });
@@ -206,10 +208,15 @@ nlohmann::json cost_weights_to_json(const CostWeights& w, const std::string& des
   doc["hand_area"] = {{"overlap", w.area_overlap},
                       {"gap_base", w.gap_base},
                       {"gap_speed_per_white_key_per_s", w.gap_speed},
-                      {"release_fraction", w.release_fraction}};
+                      {"release_fraction", w.release_fraction},
+                      {"shift_time_s", w.shift_time_s},
+                      {"shift_hold_fraction", w.shift_hold_fraction},
+                      {"speed_limit_white_keys_per_s", number_json(w.speed_limit)},
+                      {"over_speed_per_white_key_per_s", w.over_speed}};
   doc["fingers"] = {{"use", five_json(w.finger_use)},
                     {"black_key", five_json(w.black_key)},
-                    {"thumb_on_tonic", w.thumb_on_tonic}};
+                    {"thumb_on_tonic", w.thumb_on_tonic},
+                    {"thumb_on_fourth", w.thumb_on_fourth}};
   doc["same_finger"] = {{"other_key", number_json(w.same_finger_other_key)},
                         {"speed_per_white_key_per_s", w.same_finger_speed},
                         {"same_key", w.same_finger_same_key},

@@ -1,11 +1,8 @@
 #pragma once
-// Where the data files (content/piano/...) are: the environment variable TUTTI_CONTENT_DIR when
-// set and non-empty, else the source tree's content/ folder baked in at build time.
+// default_content_dir moved to engine/content; the piano code keeps using it under its own name.
 
-#include <filesystem>
+#include "content/content_dir.hpp"
 
 namespace tutti::piano {
-
-std::filesystem::path default_content_dir();
-
+using content::default_content_dir;
 }  // namespace tutti::piano

@@ -54,6 +54,7 @@ Result<PianoPerformancePlan> plan_performance(const music::Score& score,
   PianoPerformancePlan plan;
   plan.fingering = std::move(*fingering);
   plan.report.fingering_ms = ms_since(start);
+  plan.report.smoothing = options.path.smoothing;
 
   HandReport& right = plan.report.right;
   right.hand = music::Hand::right;

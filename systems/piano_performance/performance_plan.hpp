@@ -42,6 +42,7 @@ struct HandReport {
 };
 
 struct PerformanceReport {
+  motion::SmoothingMode smoothing = motion::SmoothingMode::monotone_quintic;  // both hands' paths
   HandReport right;
   HandReport left;
   double fingering_ms = 0.0;  // wall time of plan_score (not deterministic)

@@ -19,6 +19,14 @@ const char* to_string(SmoothingMode mode) {
   return "?";
 }
 
+std::optional<SmoothingMode> smoothing_mode_from_string(std::string_view name) noexcept {
+  for (const SmoothingMode mode : {SmoothingMode::monotone_quintic, SmoothingMode::pchip,
+                                   SmoothingMode::natural_spline, SmoothingMode::none}) {
+    if (name == to_string(mode)) return mode;
+  }
+  return std::nullopt;
+}
+
 HandPath::HandPath(SmoothingMode mode, std::vector<double> knot_times, std::vector<Poly5> pieces,
                    double end_x_mm, bool monotone)
     : mode_(mode),

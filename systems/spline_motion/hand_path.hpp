@@ -6,7 +6,9 @@
 // immutable once built by plan_hand_path (smoothing.hpp). Thread-safe for concurrent evaluate().
 
 #include <cstddef>
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "spline_motion/polynomial.hpp"
@@ -26,7 +28,10 @@ enum class SmoothingMode {
   none,
 };
 
+// "monotone_quintic", "pchip", "natural_spline", "none"; "?" for a value outside the enum.
 const char* to_string(SmoothingMode mode);
+// The inverse of to_string (exact names only); nullopt for anything else.
+std::optional<SmoothingMode> smoothing_mode_from_string(std::string_view name) noexcept;
 
 struct HandState {
   double x_mm = 0.0;

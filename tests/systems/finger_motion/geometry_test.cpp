@@ -1,6 +1,7 @@
 // Spread angle: theta = atan(d / y), 0 above the rest line, mirrored for the left hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "finger_motion/evaluate_hand_pose.hpp"
@@ -79,6 +80,29 @@ TEST(FingerGeometry, StrokeSolutionReachesTheWantedDrop) {
                      g.phalanges_mm[2] * std::sin(p3);
     EXPECT_NEAR(z, drop, 1e-9);
     EXPECT_NEAR(y, s.reach_y_mm, 1e-9);
+  }
+}
+
+TEST(FingerGeometry, StrokeAngleIsAsinOfTheDropMinusTheChainAngle) {
+  // solve_stroke's single atan2 against the textbook form, for every finger over the bends a
+  // finger takes and drops from above the root to beyond reach (clamped to +-R).
+  for (const FingerGeometry& g : test::models().params.fingers) {
+    for (double bend = -0.2; bend <= 1.6; bend += 0.05) {
+      const ChainShape shape = chain_shape(g, bend);
+      const double reach = std::hypot(shape.forward_mm, shape.down_mm);
+      const double alpha = std::atan2(shape.down_mm, shape.forward_mm);
+      // Not within 0.1 % of +-R: there d(joint1)/d(drop) = 1 / sqrt(R^2 - drop^2) is unbounded
+      // and any two forms differ by their rounding amplified.
+      for (double fraction : {-1.5, -1.0001, -0.999, -0.9, -0.6, -0.3, -0.1, 0.0, 0.2, 0.5, 0.8,
+                              0.95, 0.999, 1.0001, 2.0}) {
+        const double drop = fraction * reach;
+        const double d = std::clamp(drop, -reach, reach);
+        const StrokeSolution s = solve_stroke(shape, drop);
+        EXPECT_NEAR(s.joint1_rad, std::asin(d / reach) - alpha, 1e-9) << bend << " " << drop;
+        EXPECT_NEAR(s.reach_y_mm, std::sqrt(std::max(reach * reach - d * d, 0.0)), 1e-9)
+            << bend << " " << drop;
+      }
+    }
   }
 }
 

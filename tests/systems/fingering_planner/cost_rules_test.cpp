@@ -74,5 +74,54 @@ TEST(PaperRules, LeftHandIsTheMirrorImage) {
       1 - 1 / 5.5, 1e-12);
 }
 
+// The default preset's scale anchors: the thumb on the tonic, and on the fourth from the tonic
+// towards the little finger (F for the right hand in C major, G for the left).
+TEST(DefaultRules, ThumbOnTheTonicAndOnTheFourthTowardsTheLittleFinger) {
+  const auto& m = test::model("default");
+  const CostWeights& w = m.weights;
+  ASSERT_LT(w.thumb_on_fourth, 0.0);
+  auto thumb = [&](int key, Hand side, int tonic) {
+    const EventFingering e = make_event_fingering(std::vector<FingeredKey>{{key, 1}}, side, m);
+    return strike_cost(e, m, tonic) - strike_cost(e, m);
+  };
+  EXPECT_DOUBLE_EQ(thumb(60, Hand::right, 0), w.thumb_on_tonic);
+  EXPECT_DOUBLE_EQ(thumb(60, Hand::left, 0), w.thumb_on_tonic);
+  EXPECT_DOUBLE_EQ(thumb(65, Hand::right, 0), w.thumb_on_fourth);  // F above C
+  EXPECT_DOUBLE_EQ(thumb(55, Hand::left, 0), w.thumb_on_fourth);   // G below C
+  EXPECT_DOUBLE_EQ(thumb(67, Hand::right, 0), 0.0);
+  EXPECT_DOUBLE_EQ(thumb(53, Hand::left, 0), 0.0);
+  EXPECT_DOUBLE_EQ(thumb(62, Hand::right, 9), w.thumb_on_fourth);  // A minor: D
+  EXPECT_DOUBLE_EQ(thumb(64, Hand::left, 9), w.thumb_on_fourth);   // and E below
+  EXPECT_DOUBLE_EQ(thumb(66, Hand::right, 1), 0.0);                // F# is black: no anchor there
+  EXPECT_DOUBLE_EQ(thumb(65, Hand::right, -1), 0.0);               // tonic unknown
+  // The hand given explicitly wins over what the area says.
+  const EventFingering right_f =
+      make_event_fingering(std::vector<FingeredKey>{{65, 1}}, Hand::right, m);
+  EXPECT_DOUBLE_EQ(strike_cost(right_f, m, 0, Hand::left) - strike_cost(right_f, m), 0.0);
+  // The paper has neither term.
+  const auto& paper = test::model("paper");
+  const EventFingering e =
+      make_event_fingering(std::vector<FingeredKey>{{65, 1}}, Hand::right, paper);
+  EXPECT_DOUBLE_EQ(strike_cost(e, paper, 0), strike_cost(e, paper));
+}
+
+TEST(DefaultRules, TheHandOfAnEventFollowsFromItsArea) {
+  const auto& m = test::model("default");
+  for (const Hand side : {Hand::right, Hand::left}) {
+    for (int key = 50; key < 75; ++key) {
+      const EventFingering thumb =
+          make_event_fingering(std::vector<FingeredKey>{{key, 1}}, side, m);
+      EXPECT_EQ(hand_of(thumb, m), side) << key;
+    }
+    // A chord with the thumb: C-E-G with 1-3-5 (right) or 5-3-1 (left).
+    const bool right = side == Hand::right;
+    const EventFingering chord = make_event_fingering(
+        std::vector<FingeredKey>{{60, right ? 1 : 5}, {64, 3}, {67, right ? 5 : 1}}, side, m);
+    EXPECT_EQ(hand_of(chord, m), side);
+  }
+  // No thumb: nothing to tell.
+  EXPECT_FALSE(hand_of(make_event_fingering(std::vector<FingeredKey>{{60, 3}}, Hand::right, m), m));
+}
+
 }  // namespace
 }  // namespace tutti::piano

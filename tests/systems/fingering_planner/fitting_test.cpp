@@ -112,23 +112,28 @@ TEST(WeightFitting, MatchRateCountsPerHand) {
   const MatchStats s = match_rate(scores[0], *plan);
   EXPECT_EQ(s.right_marked, 29);
   EXPECT_EQ(s.left_marked, 29);
-  EXPECT_EQ(s.right_matched, 29);  // C major, both hands: the standard fingering
-  // Left hand: ascending standard; descending, 4-1 may come before 3-1 at the same cost.
-  EXPECT_GE(s.left_matched, 25);
+  // C major, both hands, up and down: the standard fingering (the left hand descending needs
+  // fingers.thumb_on_fourth: 3-1 before 4-1 costs the same in every other term).
+  EXPECT_EQ(s.right_matched, 29);
+  EXPECT_EQ(s.left_matched, 29);
   EXPECT_NEAR(s.rate(), double(s.matched()) / 58, 1e-12);
   EXPECT_DOUBLE_EQ(s.right_rate(), 1.0);
 }
 
-TEST(WeightFitting, CMajorLeftHandAscendingIsStandard) {
+TEST(WeightFitting, CMajorLeftHandUpAndDownIsTheCorpusFingering) {
   auto scores = corpus("train", "scale_major_C.");
   ASSERT_EQ(scores.size(), 1u);
   music::Score unmarked = scores[0];
   for (music::Note& n : unmarked.notes) n.finger = 0;
   auto plan = plan_score(unmarked, test::model("default"));
   ASSERT_TRUE(plan.ok());
-  std::string left;
-  for (int i : plan->left_notes) left += std::to_string(plan->fingers[std::size_t(i)]);
+  std::string left, marks;
+  for (int i : plan->left_notes) {
+    left += std::to_string(plan->fingers[std::size_t(i)]);
+    marks += std::to_string(scores[0].notes[std::size_t(i)].finger);
+  }
   std::printf("[ fitting ] C major LH up and down: %s\n", left.c_str());
+  EXPECT_EQ(left, marks);
   EXPECT_EQ(left.substr(0, 15), "543213214321321");
   EXPECT_EQ(note_tonics(unmarked).front(), 0);  // no key signature: C major inferred
 }
@@ -198,11 +203,12 @@ TEST(FittingFigures, PresetsOnCorpusAndMarks) {
   print("held-out", "paper", paper_held);
   print("train", "default", default_train);
   print("held-out", "default", default_held);
-  // Measured: paper 427/1162, 494/924; default 1071/1162, 786/924.
+  // Measured: paper 427/1162, 494/924; default 1101/1162, 813/924 (left hand 403/475).
   EXPECT_GE(paper_train.rate(), 0.36);
   EXPECT_GE(paper_held.rate(), 0.53);
-  EXPECT_GE(default_train.rate(), 0.92);
-  EXPECT_GE(default_held.rate(), 0.85);
+  EXPECT_GE(default_train.rate(), 0.94);
+  EXPECT_GE(default_held.rate(), 0.87);
+  EXPECT_GE(default_held.left_rate(), 0.84);
   if (std::filesystem::is_directory(tutti::test::testdata_dir())) {
     const auto scales = third_party(kScaleMarks);
     const auto polonaises = third_party(kPolonaises);
@@ -213,8 +219,10 @@ TEST(FittingFigures, PresetsOnCorpusAndMarks) {
   }
 }
 
-// The full fit on the train part (all weights, from default), evaluated on every set; also the
-// fitting time for ~10k notes (the train part repeated). Slow under sanitizers: run manually.
+// The full fit on the train part (all weights, from default), evaluated on every set: default.json
+// is its fixed point (it was made by the same fit from the hand-set start described in
+// content/piano/README.md). Also the fitting time for ~10k notes (the train part repeated). Slow
+// under sanitizers: run manually.
 TEST(FittingFigures, DISABLED_FullFitFromDefault) {
   const auto train = corpus("train");
   const auto heldout = corpus("heldout");
@@ -229,6 +237,7 @@ TEST(FittingFigures, DISABLED_FullFitFromDefault) {
       "[ figures ] full fit: %d notes, %.1f%% -> %.1f%%, %d rounds, %d evaluations, %.2f s\n",
       notes, 100 * fit->match_before, 100 * fit->match_after, fit->iterations, fit->evaluations,
       seconds);
+  EXPECT_EQ(fit->match_after, fit->match_before) << "default.json is not the fit's fixed point";
   FingeringModel fitted = test::model("default");
   fitted.weights = fit->weights;
   fitted.weights.name = "fitted";

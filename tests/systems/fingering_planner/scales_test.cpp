@@ -96,6 +96,39 @@ TEST(Scales, CMajorLeftHandWithTheTonicKnownIsStandard) {
   EXPECT_EQ(paper->fingers, paper_plain->fingers);
 }
 
+// C major in the left hand with the tonic known (plan_score always gives it): the standard
+// fingering, C4 down to C3 1 2 3 1 2 3 4 5 and up 5 4 3 2 1 3 2 1, strictly cheapest (not a tie
+// broken by candidate order). Over two octaves the groups 1 2 3 | 1 2 3 4 and 1 2 3 4 | 1 2 3 cost
+// the same in every geometric term and both put the thumb on a C; fingers.thumb_on_fourth (the
+// thumb on G, the fourth below the tonic) decides for the standard order.
+TEST(Scales, CMajorLeftHandOneOctaveDownAndUpIsStandard) {
+  const std::vector<int> down = {60, 59, 57, 55, 53, 52, 50, 48};
+  std::vector<int> up(down.rbegin(), down.rend());
+  for (const auto& [keys, standard] :
+       {std::pair{down, std::string("12312345")}, std::pair{up, std::string("54321321")}}) {
+    auto notes = test::melody(keys);
+    for (PlanNote& n : notes) n.tonic = 0;
+    auto plan = plan_hand_exact(notes, Hand::left, test::model("default"));
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
+    EXPECT_EQ(test::fingers_text(plan->fingers), standard);
+    // Not a tie broken by candidate order: the standard fingering is strictly cheapest.
+    const std::string other = keys == down ? "12341234" : "54321432";
+    const double margin = cost_of(notes, other, Hand::left, "default") -
+                          cost_of(notes, standard, Hand::left, "default");
+    std::printf("[ scales  ] C major LH %s: %s, %s costs %.3f more\n", keys == down ? "down" : "up",
+                test::fingers_text(plan->fingers).c_str(), other.c_str(), margin);
+    EXPECT_GT(margin, 0.05);
+  }
+  // Both octaves, down from C5.
+  std::vector<int> two_down(kCMajorTwoOctaves.rbegin(), kCMajorTwoOctaves.rend());
+  auto notes = test::melody(transposed(two_down, -12));
+  for (PlanNote& n : notes) n.tonic = 0;
+  auto plan = plan_hand_exact(notes, Hand::left, test::model("default"));
+  ASSERT_TRUE(plan.ok());
+  EXPECT_EQ(test::fingers_text(plan->fingers), "123123412312345");
+  EXPECT_GT(cost_of(notes, "123412312312345", Hand::left, "default"), plan->total_cost + 0.05);
+}
+
 TEST(Scales, CorridorsAreTheChosenFingersIntersection) {
   const auto& m = test::model("default");
   const auto notes = test::melody(kCMajorTwoOctaves);

@@ -8,6 +8,7 @@
 
 #include "fingering_planner/exact_planner.hpp"
 #include "fingering_planner/plan_score.hpp"
+#include "fingering_planner/transition_cost.hpp"
 #include "music/load_score.hpp"
 #include "music/pitch.hpp"
 #include "planner_test_util.hpp"
@@ -246,19 +247,21 @@ namespace tutti::piano {
 namespace {
 
 // A legato leap (C4 then C6, each held until the next): the hand areas cannot overlap, so the
-// planner prices the move over its effective time (with an early release) and the first
-// corridor must end when that move starts, never touching the next one.
+// planner prices the move over its effective time (the shift time: the first key let go early)
+// and the first corridor must end when that move starts, never touching the next one.
 TEST(ScorePlan, CorridorsLeaveTheBudgetedTravelTimeBeforeALeap) {
   const auto notes = test::melody({60, 84, 84}, 0.5);
+  const CostWeights& w = test::model("default").weights;
   auto plan = plan_hand_exact(notes, music::Hand::right, test::model("default"));
   ASSERT_TRUE(plan.ok()) << plan.error().message;
   ASSERT_EQ(plan->corridors.size(), 3u);
   const HandCorridor& first = plan->corridors[0];
   const HandCorridor& second = plan->corridors[1];
   ASSERT_LT(first.hi_mm, second.lo_mm);  // disjoint: the hand must travel
-  const double release_fraction = test::model("default").weights.release_fraction;
-  ASSERT_GT(release_fraction, 0.0);
-  EXPECT_NEAR(first.end_s, 0.5 - release_fraction * 0.5, 1e-12);
+  const double dt = effective_dt(0.0, 0.5, w);
+  ASSERT_GT(w.shift_time_s, w.release_fraction * 0.5);  // the shift time decides here
+  EXPECT_DOUBLE_EQ(dt, std::min(w.shift_time_s, (1 - w.shift_hold_fraction) * 0.5));
+  EXPECT_NEAR(first.end_s, 0.5 - dt, 1e-12);
   EXPECT_LT(first.end_s, second.start_s);
   // Same key again: the areas overlap, so that corridor keeps its whole duration.
   EXPECT_DOUBLE_EQ(second.end_s, 1.0);

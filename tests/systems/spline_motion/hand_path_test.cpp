@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 
 #include "corridor_cases.hpp"
 #include "spline_motion/smoothing.hpp"
@@ -149,6 +150,19 @@ TEST(HandPath, ModesAgreeOnKnotsOfTheString) {
     EXPECT_EQ(path.mode(), mode);
     EXPECT_NEAR(evaluate(path, 1.0).x_mm, 10.0, 1e-9) << to_string(mode);
     EXPECT_NEAR(evaluate(path, 2.0).x_mm, 50.0, 1e-9) << to_string(mode);
+  }
+}
+
+TEST(HandPath, SmoothingModeNamesRoundTrip) {
+  for (const SmoothingMode mode : {SmoothingMode::monotone_quintic, SmoothingMode::pchip,
+                                   SmoothingMode::natural_spline, SmoothingMode::none}) {
+    const auto parsed = smoothing_mode_from_string(to_string(mode));
+    ASSERT_TRUE(parsed.has_value()) << to_string(mode);
+    EXPECT_EQ(*parsed, mode);
+  }
+  EXPECT_EQ(std::string(to_string(SmoothingMode::natural_spline)), "natural_spline");
+  for (const char* bad : {"", "?", "natural", "Pchip", "monotone_quintic ", "default"}) {
+    EXPECT_FALSE(smoothing_mode_from_string(bad).has_value()) << bad;
   }
 }
 

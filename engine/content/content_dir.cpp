@@ -1,8 +1,8 @@
-#include "piano_model/content_dir.hpp"
+#include "content/content_dir.hpp"
 
 #include <cstdlib>
 
-namespace tutti::piano {
+namespace tutti::content {
 
 std::filesystem::path default_content_dir() {
   if (const char* env = std::getenv("TUTTI_CONTENT_DIR"); env != nullptr && *env != '\0') {
@@ -11,4 +11,4 @@ std::filesystem::path default_content_dir() {
   return TUTTI_CONTENT_DIR;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::content

@@ -1,11 +1,11 @@
-#include "piano_model/json_document.hpp"
+#include "content/json_reader.hpp"
 
 #include <cmath>
 #include <limits>
 
 #include "core/file_io.hpp"
 
-namespace tutti::piano {
+namespace tutti::content {
 
 Result<nlohmann::json> read_json_file(const std::filesystem::path& path) {
   auto bytes = read_file_bytes(path);
@@ -57,4 +57,4 @@ Result<double> JsonReader::number_or_inf(const nlohmann::json& object, std::stri
   return number(object, path, key);
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::content
