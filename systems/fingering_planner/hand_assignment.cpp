@@ -87,7 +87,10 @@ HandAssignment assign_hands(const music::Score& score, const FingeringModel& mod
   HandAssignment out;
   out.hand.assign(score.notes.size(), music::Hand::unknown);
   out.source.assign(score.notes.size(), HandSource::none);
-  std::vector<std::vector<int>> automatic(score.parts.size());
+  // Parts without hands of their own (voices of a fugue on separate tracks, a one-staff piano
+  // part) are split together: one pianist plays them all, so each hand's span must hold across
+  // parts.
+  std::vector<int> automatic;
   for (std::size_t i = 0; i < score.notes.size(); ++i) {
     const music::Note& note = score.notes[i];
     if (note.part < 0 || static_cast<std::size_t>(note.part) >= score.parts.size()) continue;
@@ -103,12 +106,10 @@ HandAssignment assign_hands(const music::Score& score, const FingeringModel& mod
       out.hand[i] = note.staff == 1 ? music::Hand::right : music::Hand::left;
       out.source[i] = HandSource::staff;
     } else {
-      automatic[static_cast<std::size_t>(note.part)].push_back(static_cast<int>(i));
+      automatic.push_back(static_cast<int>(i));
     }
   }
-  for (auto& indices : automatic) {
-    if (!indices.empty()) split_automatically(score, std::move(indices), model, out);
-  }
+  if (!automatic.empty()) split_automatically(score, std::move(automatic), model, out);
   return out;
 }
 

@@ -3,11 +3,12 @@
 //  1. Note::hand when the file states it (PIG channel 0 = right, 1 = left);
 //  2. a part named for a hand ("right"/"left", "R.H."/"L.H.", case-insensitive);
 //  3. a part with 2+ staves: staff 1 = right hand, staff 2 and below = left hand;
-//  4. otherwise an automatic split, event by event (notes starting together): the keys are cut
-//     at one point (low part left, high part right, so hands never cross within an event),
-//     choosing the cut that keeps each hand's span reachable and at most 5 keys, keeps each hand
-//     near where it was (a far jump counts as an octave), the right hand from middle C up and the
-//     left hand below it.
+//  4. otherwise an automatic split of all remaining notes together (every part without hands of
+//     its own, e.g. fugue voices on separate tracks), event by event (notes starting together): the
+//     keys are cut at one point (low part left, high part right, so hands never cross within an
+//     event), choosing the cut that keeps each hand's span reachable and at most 5 keys, keeps each
+//     hand near where it was (a far jump counts as an octave), the right hand from middle C up and
+//     the left hand below it.
 // Percussion parts get Hand::unknown (not planned).
 
 #include <vector>

@@ -190,6 +190,31 @@ TEST(ScorePlan, AutomaticSplitKeepsAMelodyInOneHandAndSplitsWideChords) {
   }
 }
 
+// Bach's C major fugue (BWV 846) comes as four voice tracks with no hands: they are split
+// together, so neither hand is given a span it cannot reach (split per track, the right hand got
+// voices 1 and 2 and tenths like C4-E5).
+TEST(ScorePlan, VoicesOnSeparateTracksAreSplitTogether) {
+  TUTTI_REQUIRE_TESTDATA();
+  const music::Score score = load("midi/tonejs/bach_846.mid");
+  const HandAssignment a = assign_hands(score, test::model("default"));
+  int fugue_right = 0;
+  int fugue_left = 0;
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    if (score.parts[std::size_t(score.notes[i].part)].name.rfind("Fuga", 0) != 0) continue;
+    EXPECT_EQ(a.source[i], HandSource::automatic);
+    (a.hand[i] == Hand::right ? fugue_right : fugue_left) += 1;
+  }
+  EXPECT_GT(fugue_right, 100);
+  EXPECT_GT(fugue_left, 100);
+  auto plan = plan_score(score, test::model("default"));
+  ASSERT_TRUE(plan.ok());
+  for (const HandPlan* hand : {&plan->right, &plan->left}) {
+    for (const Diagnostic& d : hand->diagnostics) {
+      EXPECT_NE(d.kind, DiagnosticKind::unreachable_span) << d.message;
+    }
+  }
+}
+
 // Editors' fingering in Clara Schumann's polonaises: how often the planner agrees.
 struct Agreement {
   int marked = 0;
