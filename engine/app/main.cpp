@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "app/brass_command.hpp"
 #include "app/exit_codes.hpp"
 #include "app/fingering_command.hpp"
 #include "app/fit_fingering_command.hpp"
@@ -56,6 +57,18 @@ int main(int argc, char** argv) {
   fit_cmd->add_option("--hand-size", fit.hand_size, "small, medium or large");
   fit_cmd->add_option("--rounds", fit.rounds, "coordinate-descent rounds at most (1..100)");
 
+  tutti::app::BrassOptions brass;
+  CLI::App* brass_cmd = app.add_subcommand(
+      "brass",
+      "How every brass player of a score plays: valves or slide position per note (alternates "
+      "marked), mouth tension, breaths, notes out of range");
+  brass_cmd->add_option("FILE", brass.file, "score file")->required();
+  brass_cmd->add_option("--part", brass.part, "part name (or part of it) or 1-based index");
+  brass_cmd->add_option("--voice", brass.voice, "1-based player within the part (default: all)");
+  brass_cmd->add_option("--instrument", brass.instrument,
+                        "instrument id from content/instruments (default: detected)");
+  brass_cmd->add_flag("--json", brass.json, "print JSON instead of text");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -68,5 +81,6 @@ int main(int argc, char** argv) {
   if (*info_cmd) return tutti::app::run_info(info, std::cout, std::cerr);
   if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
   if (*fit_cmd) return tutti::app::run_fit_fingering(fit, std::cout, std::cerr);
+  if (*brass_cmd) return tutti::app::run_brass(brass, std::cout, std::cerr);
   return tutti::app::kExitBadInput;
 }

@@ -1,6 +1,7 @@
 #include "content/json_reader.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "core/file_io.hpp"
@@ -55,6 +56,34 @@ Result<double> JsonReader::number_or_inf(const nlohmann::json& object, std::stri
     return error(std::string(path) + "/" + key, "expected a number or \"inf\"");
   }
   return number(object, path, key);
+}
+
+Status JsonReader::read_number_fields(const nlohmann::json& object, std::string_view path,
+                                      std::span<const NumberField> fields, bool required) const {
+  if (!object.is_object()) return error(path, "expected an object");
+  for (const auto& item : object.items()) {
+    bool known = item.key() == "description";
+    for (const NumberField& f : fields) known = known || item.key() == f.key;
+    if (!known) return error(std::string(path) + "/" + item.key(), "unknown key");
+  }
+  if (object.contains("description") && !object.at("description").is_string()) {
+    return error(std::string(path) + "/description", "expected a string");
+  }
+  auto text = [](double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", value);
+    return std::string(buffer);
+  };
+  for (const NumberField& f : fields) {
+    auto value = required ? number(object, path, f.key) : number_or(object, path, f.key, *f.value);
+    if (!value) return value.error();
+    if (*value < f.lo || *value > f.hi) {
+      return error(std::string(path) + "/" + f.key,
+                   "must be in [" + text(f.lo) + ", " + text(f.hi) + "]");
+    }
+    *f.value = *value;
+  }
+  return {};
 }
 
 }  // namespace tutti::content

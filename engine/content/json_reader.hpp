@@ -1,11 +1,12 @@
 #pragma once
-// Small helpers for reading the data files under content/ (JSON) into values with one-line errors that
-// name the file and the JSON path ("hands.json: /presets/small/scale: expected a number").
+// Small helpers for reading the data files under content/ (JSON) into values with one-line errors
+// that name the file and the JSON path ("hands.json: /presets/small/scale: expected a number").
 // Every object is checked for unknown keys, so a typo is an error instead of a silent default.
 
 #include <filesystem>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -17,6 +18,15 @@ namespace tutti::content {
 Result<nlohmann::json> read_json_file(const std::filesystem::path& path);
 
 // Reports problems relative to one file; `path` is a JSON pointer such as "/weights/thumb".
+// One number of a flat parameter object: read into *value (kept when absent and not required),
+// which must lie in [lo, hi].
+struct NumberField {
+  const char* key;
+  double* value;
+  double lo;
+  double hi;
+};
+
 class JsonReader {
  public:
   explicit JsonReader(std::string file_name) : file_(std::move(file_name)) {}
@@ -34,6 +44,11 @@ class JsonReader {
   // A finite number or the string "inf" (+infinity), required.
   Result<double> number_or_inf(const nlohmann::json& object, std::string_view path,
                                const char* key) const;
+
+  // A flat object of numbers (plus an optional "description" string): every key must be one of
+  // `fields`; each field is read and range-checked. `required`: every field must be present.
+  Status read_number_fields(const nlohmann::json& object, std::string_view path,
+                            std::span<const NumberField> fields, bool required) const;
 
   const std::string& file() const { return file_; }
 

@@ -1,0 +1,154 @@
+// detect_instrument: which known instrument a score part is written for, from its name (words
+// in several languages, plurals) and else its General MIDI program.
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "brass_model/instrument.hpp"
+
+namespace tutti::brass {
+namespace {
+
+using Words = std::vector<std::string>;
+
+// Lower-case words of a part name: runs of letters (bytes >= 0x80 count as letters, so "hörner"
+// and "b♭" stay whole); digits, spaces and punctuation separate.
+Words words_of(std::string_view text) {
+  Words words;
+  std::string word;
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if ((c >= 'a' && c <= 'z') || c >= 0x80) {
+      word += ch;
+    } else if (c >= 'A' && c <= 'Z') {
+      word += static_cast<char>(c - 'A' + 'a');
+    } else if (!word.empty()) {
+      words.push_back(std::move(word));
+      word.clear();
+    }
+  }
+  if (!word.empty()) words.push_back(std::move(word));
+  return words;
+}
+
+// Whether `phrase` ("trumpet", "english horn") occurs as consecutive words; its last word also
+// matches with an English plural ending ("horns", "trumpets").
+bool contains(const Words& words, const Words& phrase) {
+  if (phrase.empty() || phrase.size() > words.size()) return false;
+  for (std::size_t start = 0; start + phrase.size() <= words.size(); ++start) {
+    bool match = true;
+    for (std::size_t k = 0; k < phrase.size() && match; ++k) {
+      const std::string& w = words[start + k];
+      const std::string& p = phrase[k];
+      match = w == p || (k + 1 == phrase.size() && (w == p + "s" || w == p + "es"));
+    }
+    if (match) return true;
+  }
+  return false;
+}
+
+// Words of the longest phrase of `phrases` found in `words`; 0 = none.
+std::size_t longest_match(const Words& words, const std::vector<std::string>& phrases) {
+  std::size_t best = 0;
+  for (const std::string& phrase : phrases) {
+    const Words split = words_of(phrase);
+    if (contains(words, split)) best = std::max(best, split.size());
+  }
+  return best;
+}
+
+// The key a name states ("in Bb", "in B flat", "in Es", "en Ut", "in Sib"), as a pitch class.
+// German usage for a bare "B" (= B♭; "H" = B), since no modern brass instrument is in B natural.
+std::optional<int> stated_key(const Words& words) {
+  struct Name {
+    std::string_view word;
+    int pitch_class;
+  };
+  static constexpr Name kKeys[] = {
+      {"c", 0},   {"d", 2},   {"e", 4},   {"f", 5},    {"g", 7},    {"a", 9},   {"b", 10},
+      {"h", 11},  {"bb", 10}, {"b♭", 10}, {"eb", 3},   {"e♭", 3},   {"ab", 8},  {"a♭", 8},
+      {"db", 1},  {"d♭", 1},  {"gb", 6},  {"g♭", 6},   {"es", 3},   {"as", 8},  {"des", 1},
+      {"ges", 6}, {"do", 0},  {"ut", 0},  {"re", 2},   {"ré", 2},   {"mi", 4},  {"fa", 5},
+      {"sol", 7}, {"la", 9},  {"si", 11}, {"sib", 10}, {"si♭", 10}, {"mib", 3}, {"mi♭", 3},
+      {"lab", 8}, {"la♭", 8},
+  };
+  for (std::size_t i = 0; i + 1 < words.size(); ++i) {
+    if (words[i] != "in" && words[i] != "en") continue;
+    for (const Name& key : kKeys) {
+      if (words[i + 1] != key.word) continue;
+      int pc = key.pitch_class;
+      if (i + 2 < words.size()) {
+        const std::string& next = words[i + 2];
+        if (next == "flat" || next == "bémol" || next == "bemol" || next == "bemolle") pc -= 1;
+        if (next == "sharp" || next == "dièse" || next == "diesis") pc += 1;
+      }
+      return (pc + 12) % 12;
+    }
+  }
+  return std::nullopt;
+}
+
+int pitch_class(int semitones) { return ((semitones % 12) + 12) % 12; }
+
+// Among instruments that fit equally well: a stated transposition, then a key in the name,
+// then a transposition of 0 matching an untransposed part, then the first.
+const Instrument* pick(const std::vector<const Instrument*>& fits, const music::Part& part,
+                       const Words& words) {
+  if (fits.empty()) return nullptr;
+  auto first = [&](auto&& pred) -> const Instrument* {
+    const auto it = std::find_if(fits.begin(), fits.end(), pred);
+    return it == fits.end() ? nullptr : *it;
+  };
+  if (part.transpose_semitones != 0) {
+    if (const Instrument* i = first([&](const Instrument* c) {
+          return c->transposition_semitones == part.transpose_semitones;
+        })) {
+      return i;
+    }
+  }
+  if (const std::optional<int> key = stated_key(words)) {
+    if (const Instrument* i = first(
+            [&](const Instrument* c) { return pitch_class(c->transposition_semitones) == *key; })) {
+      return i;
+    }
+  }
+  if (const Instrument* i = first([&](const Instrument* c) {
+        return c->transposition_semitones == part.transpose_semitones;
+      })) {
+    return i;
+  }
+  return fits.front();
+}
+
+bool brass_program(int program) { return program >= 56 && program <= 63; }
+
+}  // namespace
+
+const Instrument* detect_instrument(const music::Part& part, std::span<const Instrument> known) {
+  if (part.percussion) return nullptr;
+  const Words words = words_of(part.name);
+  std::vector<const Instrument*> by_name;
+  std::vector<const Instrument*> by_program;
+  std::size_t best = 0;
+  for (const Instrument& instrument : known) {
+    if (longest_match(words, instrument.not_names) > 0) continue;
+    std::size_t score = longest_match(words, instrument.names);
+    if (brass_program(part.program)) {
+      score = std::max(score, longest_match(words, instrument.ambiguous_names));
+    }
+    if (score > best) {
+      best = score;
+      by_name.clear();
+    }
+    if (score > 0 && score == best) by_name.push_back(&instrument);
+    if (std::find(instrument.gm_programs.begin(), instrument.gm_programs.end(), part.program) !=
+        instrument.gm_programs.end()) {
+      by_program.push_back(&instrument);
+    }
+  }
+  return pick(by_name.empty() ? by_program : by_name, part, words);
+}
+
+}  // namespace tutti::brass

@@ -1,0 +1,31 @@
+#include "brass_motion/plan_brass_player.hpp"
+
+#include <algorithm>
+
+#include "brass_motion/plan_brass_motion.hpp"
+
+namespace tutti::brass {
+
+BrassLine as_played(const BrassLine& line, const BreathPlan& breaths) {
+  BrassLine played = line;
+  for (const ShortenedNote& s : breaths.shortened) {
+    if (s.note < 0 || static_cast<std::size_t>(s.note) >= played.notes.size()) continue;
+    LineNote& note = played.notes[static_cast<std::size_t>(s.note)];
+    if (s.offset_s < note.offset_s) {
+      note.offset_s = std::max(s.offset_s, note.onset_s);
+      note.offset_beats = std::max(s.offset_beats, note.onset_beats);
+    }
+  }
+  return played;
+}
+
+BrassPlayerMotion plan_brass_player(const BrassLine& line, const music::Score& score,
+                                    const BrassMotionParams& motion, const BreathParams& breath,
+                                    const ChangeWindow& window) {
+  BrassPlayerMotion out;
+  out.breaths = plan_breaths(line, score, breath);
+  out.motion = plan_brass_motion(as_played(line, out.breaths), motion, window);
+  return out;
+}
+
+}  // namespace tutti::brass
