@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -211,6 +213,55 @@ TEST(BrassPlanner, BadWeightsFileIsAOneLineError) {
   EXPECT_EQ(loaded.error().message.find('\n'), std::string::npos);
   std::filesystem::remove(path);
   EXPECT_FALSE(load_planner_weights(path.string()).ok());
+}
+
+}  // namespace
+}  // namespace tutti::brass
+
+namespace tutti::brass {
+namespace {
+
+// Horii's claim made true: a new instrument is only a new data file. An E♭ soprano cornet
+// (sounds a minor third above written, three valves) added to a copy of content/ is found by
+// name, transposes by its own data and gets the same valve logic.
+TEST(BrassPlanner, ANewInstrumentNeedsOnlyADataFile) {
+  namespace fs = std::filesystem;
+  const fs::path folder = tutti::test::unique_temp_path("content");
+  fs::create_directories(folder);
+  fs::copy(TUTTI_CONTENT_DIR, folder, fs::copy_options::recursive);
+  auto trumpet = nlohmann::json::parse(std::ifstream(folder / "instruments" / "trumpet_bb.json"));
+  trumpet["id"] = "cornet_eb";
+  trumpet["display_name"] = "E♭ soprano cornet";
+  trumpet["names"] = {"cornet", "kornett", "cornetto"};
+  trumpet["gm_programs"] = nlohmann::json::array();
+  trumpet["transposition_semitones"] = 3;
+  trumpet["range"] = {{"lowest", "F#3"}, {"highest", "D6"}};
+  std::ofstream(folder / "instruments" / "cornet_eb.json") << trumpet.dump(2);
+  ::setenv("TUTTI_CONTENT_DIR", folder.c_str(), 1);
+  auto known = load_all_instruments();
+  auto weights = load_planner_weights();
+  ::unsetenv("TUTTI_CONTENT_DIR");
+  ASSERT_TRUE(known.ok()) << known.error().message;
+  ASSERT_TRUE(weights.ok());
+  music::Part part;
+  part.name = "Soprano Cornet in Eb";
+  const Instrument* cornet = detect_instrument(part, *known);
+  ASSERT_NE(cornet, nullptr);
+  EXPECT_EQ(cornet->id, "cornet_eb");
+  // Concert G4 is written E4 on an E♭ instrument: valves 1-2, as on any three-valve horn.
+  BrassLine line;
+  line.instrument = cornet;
+  LineNote n;
+  n.onset_s = 0.0;
+  n.offset_s = 1.0;
+  n.sounding = 67;
+  n.written = cornet->written(67);
+  line.notes.push_back(n);
+  const BrassPlanSummary summary = plan_line(line, *weights);
+  EXPECT_EQ(summary.unplayable, 0);
+  EXPECT_EQ(line.notes[0].written, 64);
+  EXPECT_EQ(fingering_name(*cornet, cornet->chart[std::size_t(line.notes[0].fingering)]), "1-2");
+  fs::remove_all(folder);
 }
 
 }  // namespace
