@@ -1,0 +1,52 @@
+#include "generator/generate.hpp"
+
+#include <sstream>
+#include <system_error>
+
+#include "core/file_io.hpp"
+#include "generator/piano_asset.hpp"
+#include "generator/props.hpp"
+#include "piano_model/keyboard.hpp"
+
+namespace tutti::content_generator {
+
+Result<std::string> to_glb(const tinygltf::Model& model) {
+  std::ostringstream out;
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, out, false, true) || !out) {
+    return Error{"cannot serialise glTF model"};
+  }
+  return out.str();
+}
+
+Status write_glb(const tinygltf::Model& model, const std::filesystem::path& path) {
+  auto bytes = to_glb(model);
+  if (!bytes.ok()) return Error{path.string() + ": " + bytes.error().message};
+  return write_file_atomically(path, *bytes);
+}
+
+std::vector<std::string> asset_file_names() {
+  return {"piano.glb", "music_stand.glb", "chair.glb"};
+}
+
+Status generate_assets(const std::filesystem::path& content_dir,
+                       const std::filesystem::path& out_dir) {
+  auto keyboard = piano::Keyboard::load(content_dir / "piano" / "keyboard.json");
+  if (!keyboard.ok()) return keyboard.error();
+  auto dimensions = AssetDimensions::load(content_dir / "generator" / "dimensions.json");
+  if (!dimensions.ok()) return dimensions.error();
+  std::error_code error;
+  std::filesystem::create_directories(out_dir, error);
+  if (error) return Error{out_dir.string() + ": cannot create folder (" + error.message() + ")"};
+
+  const tinygltf::Model models[] = {build_piano(*keyboard, dimensions->piano),
+                                    build_music_stand(dimensions->music_stand),
+                                    build_chair(dimensions->chair)};
+  const std::vector<std::string> names = asset_file_names();
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (Status status = write_glb(models[i], out_dir / names[i]); !status.ok()) return status;
+  }
+  return Status::success();
+}
+
+}  // namespace tutti::content_generator

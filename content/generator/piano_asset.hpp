@@ -1,0 +1,23 @@
+#pragma once
+// piano.glb: an upright piano whose 88 keys are separate nodes, built from the keyboard geometry
+// in content/piano/keyboard.json (tutti::piano::Keyboard). See README.md for the node names and
+// axes.
+//
+// Frames. The keyboard frame (tutti's piano code) has x along the keys (mm, 0 at the left edge
+// of the lowest key), y into the keys (away from the player), z up. glTF has +Y up and metres,
+// so a keyboard point (x, y, z) mm is the glTF point (x, z, -y) / 1000 in the `keyboard` node.
+// The player sits at +Z looking toward -Z.
+
+#include <tiny_gltf.h>
+
+#include "generator/dimensions.hpp"
+#include "piano_model/keyboard.hpp"
+
+namespace tutti::content_generator {
+
+// The model (nodes `piano` > `keyboard` > `key_21`..`key_108`, `piano` > `case`).
+tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims = {});
+// Key and case sizes come from `dims` (content/generator/dimensions.json); the key x positions
+// and the white-key pitch from `keyboard`.
+
+}  // namespace tutti::content_generator
