@@ -46,7 +46,11 @@ void add_box(MeshData& mesh, Vec3 min, Vec3 max) {
 }
 
 void add_cylinder(MeshData& mesh, Vec3 base, float radius, float height, int segments) {
-  const auto [cx, cy, cz] = base;
+  // Plain copies, not structured bindings: lambdas may not capture those before C++20's fix
+  // (clang 14).
+  const float cx = base[0];
+  const float cy = base[1];
+  const float cz = base[2];
   const float top = cy + height;
   auto point = [&](int i, float y) {
     const double angle = 2.0 * std::numbers::pi * i / segments;
