@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "app/bitmap_font.hpp"
+#include "image/png.hpp"
 
 namespace tutti::app {
 namespace {
@@ -220,6 +221,12 @@ PlotImage plot_piano_roll(const music::Score& fingered,
   canvas.fill(0, 0, kPlotMargin - 1, height - 1, kWhite);
   canvas.fill(width - kPlotMargin, 0, width - 1, height - 1, kWhite);
   return canvas.take();
+}
+
+Status write_png(const std::filesystem::path& path, const PlotImage& image) {
+  if (image.width <= 0 || image.height <= 0) return Error{path.string() + ": nothing to plot"};
+  return image::write_png(path, image.rgb, static_cast<std::uint32_t>(image.width),
+                          static_cast<std::uint32_t>(image.height), 3);
 }
 
 }  // namespace tutti::app

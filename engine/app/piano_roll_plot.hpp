@@ -43,8 +43,7 @@ PlotImage plot_piano_roll(const music::Score& fingered,
                           const performance::PianoPerformancePlan& plan,
                           const piano::Keyboard& keyboard, std::optional<PlotWindow> window);
 
-// PNG bytes (stb_image_write; deterministic) and the atomic file write.
-std::vector<std::uint8_t> encode_png(const PlotImage& image);
+// The plot as a PNG file (image/png.hpp: deterministic, written atomically).
 Status write_png(const std::filesystem::path& path, const PlotImage& image);
 
 }  // namespace tutti::app

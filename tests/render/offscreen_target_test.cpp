@@ -10,8 +10,8 @@
 #include <iterator>
 #include <vector>
 
+#include "image/png.hpp"
 #include "render/color_mesh_pipeline.hpp"
-#include "render/png_writer.hpp"
 #include "render_test_support.hpp"
 #include "testdata.hpp"
 
@@ -115,7 +115,7 @@ TEST_F(OffscreenTargetTest, RendersTriangleOverClearColour) {
   EXPECT_TRUE(pixel_near(rgba, kWidth, std::uint32_t(top.x), std::uint32_t(top.y) - 4, clear));
 
   const std::filesystem::path temp = tutti::test::unique_temp_path("triangle.png");
-  Status written = write_png(temp, rgba, kWidth, kHeight);
+  Status written = image::write_png(temp, rgba, kWidth, kHeight);
   ASSERT_TRUE(written) << written.error().message;
   std::ifstream in(temp, std::ios::binary);
   const std::vector<std::uint8_t> png((std::istreambuf_iterator<char>(in)),
@@ -127,8 +127,8 @@ TEST_F(OffscreenTargetTest, RendersTriangleOverClearColour) {
   // Kept for people (and CI artifacts): build/<dir>/tests/render/artifacts/.
   std::filesystem::create_directories(TUTTI_RENDER_ARTIFACT_DIR);
   Status artifact =
-      write_png(std::filesystem::path(TUTTI_RENDER_ARTIFACT_DIR) / "triangle_320x240.png", rgba,
-                kWidth, kHeight);
+      image::write_png(std::filesystem::path(TUTTI_RENDER_ARTIFACT_DIR) / "triangle_320x240.png",
+                       rgba, kWidth, kHeight);
   EXPECT_TRUE(artifact) << artifact.error().message;
 }
 

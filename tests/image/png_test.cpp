@@ -1,4 +1,4 @@
-#include "render/png_writer.hpp"
+#include "image/png.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 std::vector<std::uint8_t> decode_png_for_test(const std::vector<std::uint8_t>& png, int& width,
                                               int& height);
 
-namespace tutti::render {
+namespace tutti::image {
 namespace {
 
-TEST(PngWriterTest, RoundTripsRgbaRowsTopFirst) {
+TEST(PngTest, RoundTripsRgbaRowsTopFirst) {
   // 3x2, every byte distinct, alpha included.
   std::vector<std::uint8_t> rgba(3 * 2 * 4);
   for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>(i * 10 + 1);
@@ -33,15 +33,15 @@ TEST(PngWriterTest, RoundTripsRgbaRowsTopFirst) {
   EXPECT_EQ(encode_png(rgba, 3, 2), png) << "encoding is deterministic";
 }
 
-TEST(PngWriterTest, RejectsMismatchedSizes) {
+TEST(PngTest, RejectsMismatchedSizes) {
   const std::vector<std::uint8_t> rgba(10);
   const Status status = write_png(tutti::test::unique_temp_path("bad.png"), rgba, 3, 2);
   ASSERT_FALSE(status);
-  EXPECT_NE(status.error().message.find("cannot encode a 3x2 image from 10 bytes"),
+  EXPECT_NE(status.error().message.find("cannot encode a 3x2x4 image from 10 bytes"),
             std::string::npos)
       << status.error().message;
   EXPECT_TRUE(encode_png(rgba, 0, 0).empty());
 }
 
 }  // namespace
-}  // namespace tutti::render
+}  // namespace tutti::image

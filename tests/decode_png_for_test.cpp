@@ -1,4 +1,5 @@
-// stb_image's implementation for the PNG round-trip test (third-party code, warnings off).
+// stb_image's implementation for the PNG round-trip tests (third-party code, warnings off; link
+// this file into a test program that needs decode_png_for_test).
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_PNG
