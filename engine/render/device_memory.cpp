@@ -1,10 +1,28 @@
 #include "render/device_memory.hpp"
 
 #include <string>
+#include <utility>
 
 #include "render/vk_result.hpp"
 
 namespace tutti::render {
+namespace {
+
+Result<DeviceHandle<VkDeviceMemory>> allocate_memory(VkDevice device,
+                                                     const VkMemoryRequirements& requirements,
+                                                     std::uint32_t type) {
+  VkMemoryAllocateInfo allocate =
+      vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+  allocate.allocationSize = requirements.size;
+  allocate.memoryTypeIndex = type;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  if (VkResult r = vkAllocateMemory(device, &allocate, nullptr, &memory); r != VK_SUCCESS) {
+    return vk_error("vkAllocateMemory", r);
+  }
+  return DeviceHandle<VkDeviceMemory>(device, memory, vkFreeMemory);
+}
+
+}  // namespace
 
 Result<std::uint32_t> find_memory_type(VkPhysicalDevice physical_device, std::uint32_t type_bits,
                                        VkMemoryPropertyFlags required,
@@ -46,15 +64,10 @@ Result<DeviceBuffer> create_host_buffer(VkPhysicalDevice physical_device, VkDevi
   out.coherent =
       (properties.memoryTypes[*type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
 
-  VkMemoryAllocateInfo allocate =
-      vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
-  allocate.allocationSize = requirements.size;
-  allocate.memoryTypeIndex = *type;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  if (VkResult r = vkAllocateMemory(device, &allocate, nullptr, &memory); r != VK_SUCCESS) {
-    return vk_error("vkAllocateMemory", r);
-  }
-  out.memory = DeviceHandle<VkDeviceMemory>(device, memory, vkFreeMemory);
+  Result<DeviceHandle<VkDeviceMemory>> allocated = allocate_memory(device, requirements, *type);
+  if (!allocated) return allocated.error();
+  out.memory = std::move(*allocated);
+  VkDeviceMemory memory = out.memory.get();
   if (VkResult r = vkBindBufferMemory(device, buffer, memory, 0); r != VK_SUCCESS) {
     return vk_error("vkBindBufferMemory", r);
   }
@@ -93,15 +106,10 @@ Result<DeviceImage> create_image(VkPhysicalDevice physical_device, VkDevice devi
   Result<std::uint32_t> type = find_memory_type(physical_device, requirements.memoryTypeBits,
                                                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   if (!type) return type.error();
-  VkMemoryAllocateInfo allocate =
-      vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
-  allocate.allocationSize = requirements.size;
-  allocate.memoryTypeIndex = *type;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  if (VkResult r = vkAllocateMemory(device, &allocate, nullptr, &memory); r != VK_SUCCESS) {
-    return vk_error("vkAllocateMemory", r);
-  }
-  out.memory = DeviceHandle<VkDeviceMemory>(device, memory, vkFreeMemory);
+  Result<DeviceHandle<VkDeviceMemory>> allocated = allocate_memory(device, requirements, *type);
+  if (!allocated) return allocated.error();
+  out.memory = std::move(*allocated);
+  VkDeviceMemory memory = out.memory.get();
   if (VkResult r = vkBindImageMemory(device, image, memory, 0); r != VK_SUCCESS) {
     return vk_error("vkBindImageMemory", r);
   }
