@@ -26,6 +26,7 @@ struct Finger {
   double dip_flexion_rad = 0.0;  // last joint, coupled to PIP (~2/3 of it); thumb: 0
 
   double press_depth = 0.0;  // how far the finger holds its key down: 0 = up .. 1 = key bottom
+  int key = -1;              // MIDI key the finger is pressing (press_depth > 0), else -1
 
   // Fingertip in the keyboard frame (see transform.hpp), millimetres.
   double tip_x_mm = 0.0;

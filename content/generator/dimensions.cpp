@@ -32,7 +32,9 @@ Result<AssetDimensions> AssetDimensions::load(const std::filesystem::path& path)
 Result<AssetDimensions> AssetDimensions::from_json(const nlohmann::json& document,
                                                    const std::string& file_name) {
   const content::JsonReader reader(file_name);
-  if (auto ok = reader.check_keys(document, "", {"description", "piano", "music_stand", "chair"});
+  if (auto ok = reader.check_keys(document, "",
+                                  {"description", "piano", "music_stand", "chair", "stage",
+                                   "trumpet", "trombone", "performer"});
       !ok) {
     return ok.error();
   }
@@ -79,7 +81,71 @@ Result<AssetDimensions> AssetDimensions::from_json(const nlohmann::json& documen
   };
   if (auto ok = read_section(reader, document, "chair", chair); !ok) return ok.error();
 
+  StageDimensions& g = d.stage;
+  const std::array stage{
+      NumberField{"width_mm", &g.width_mm, 1000.0, 50000.0},
+      NumberField{"depth_mm", &g.depth_mm, 1000.0, 50000.0},
+      NumberField{"platform_height_mm", &g.platform_height_mm, kMinSize, kMaxSize},
+      NumberField{"plank_width_mm", &g.plank_width_mm, 20.0, 1000.0},
+      NumberField{"plank_gap_mm", &g.plank_gap_mm, 0.0, 20.0},
+      NumberField{"edge_height_mm", &g.edge_height_mm, 0.0, 200.0},
+      NumberField{"edge_width_mm", &g.edge_width_mm, kMinSize, 500.0},
+  };
+  if (auto ok = read_section(reader, document, "stage", stage); !ok) return ok.error();
+  TrumpetDimensions& t = d.trumpet;
+  const std::array trumpet{
+      NumberField{"overall_length_mm", &t.overall_length_mm, 380.0, 700.0},
+      NumberField{"bell_diameter_mm", &t.bell_diameter_mm, 80.0, 200.0},
+      NumberField{"bore_mm", &t.bore_mm, 8.0, 16.0},
+      NumberField{"mouthpiece_length_mm", &t.mouthpiece_length_mm, 50.0, 120.0},
+      NumberField{"mouthpiece_rim_diameter_mm", &t.mouthpiece_rim_diameter_mm, 15.0, 40.0},
+      NumberField{"valve_casing_diameter_mm", &t.valve_casing_diameter_mm, 15.0, 30.0},
+      NumberField{"valve_pitch_mm", &t.valve_pitch_mm, 15.0, 40.0},
+      NumberField{"button_diameter_mm", &t.button_diameter_mm, 8.0, 25.0},
+      NumberField{"piston_travel_mm", &t.piston_travel_mm, 5.0, 30.0},
+  };
+  if (auto ok = read_section(reader, document, "trumpet", trumpet); !ok) return ok.error();
+  TromboneDimensions& b = d.trombone;
+  const std::array trombone{
+      NumberField{"bell_diameter_mm", &b.bell_diameter_mm, 150.0, 300.0},
+      NumberField{"bore_mm", &b.bore_mm, 10.0, 16.0},
+      NumberField{"mouthpiece_length_mm", &b.mouthpiece_length_mm, 60.0, 130.0},
+      NumberField{"mouthpiece_rim_diameter_mm", &b.mouthpiece_rim_diameter_mm, 25.0, 50.0},
+      NumberField{"inner_slide_length_mm", &b.inner_slide_length_mm, 400.0, 1000.0},
+      NumberField{"slide_spacing_mm", &b.slide_spacing_mm, 60.0, 150.0},
+      NumberField{"bell_forward_mm", &b.bell_forward_mm, 400.0, 900.0},
+      NumberField{"bell_offset_mm", &b.bell_offset_mm, 80.0, 250.0},
+      NumberField{"tuning_bow_back_mm", &b.tuning_bow_back_mm, 100.0, 400.0},
+  };
+  if (auto ok = read_section(reader, document, "trombone", trombone); !ok) return ok.error();
+
+  PerformerDimensions& r = d.performer;
+  const std::array performer{
+      NumberField{"ankle_height_mm", &r.ankle_height_mm, 40.0, 150.0},
+      NumberField{"shin_length_mm", &r.shin_length_mm, 300.0, 550.0},
+      NumberField{"thigh_length_mm", &r.thigh_length_mm, 300.0, 550.0},
+      NumberField{"hip_width_mm", &r.hip_width_mm, 120.0, 260.0},
+      NumberField{"spine_length_mm", &r.spine_length_mm, 60.0, 200.0},
+      NumberField{"chest_length_mm", &r.chest_length_mm, 80.0, 250.0},
+      NumberField{"neck_base_mm", &r.neck_base_mm, 150.0, 320.0},
+      NumberField{"neck_length_mm", &r.neck_length_mm, 50.0, 150.0},
+      NumberField{"head_height_mm", &r.head_height_mm, 190.0, 270.0},
+      NumberField{"shoulder_width_mm", &r.shoulder_width_mm, 280.0, 480.0},
+      NumberField{"upper_arm_length_mm", &r.upper_arm_length_mm, 220.0, 380.0},
+      NumberField{"forearm_length_mm", &r.forearm_length_mm, 200.0, 330.0},
+      NumberField{"arm_spread_deg", &r.arm_spread_deg, 0.0, 45.0},
+      NumberField{"foot_length_mm", &r.foot_length_mm, 200.0, 320.0},
+  };
+  if (auto ok = read_section(reader, document, "performer", performer); !ok) return ok.error();
+
   // Relations the shapes rely on.
+  if (t.valve_pitch_mm < t.valve_casing_diameter_mm) {
+    return reader.error("/trumpet/valve_pitch_mm", "must be at least valve_casing_diameter_mm");
+  }
+  if (b.bell_diameter_mm / 2 > b.bell_offset_mm) {
+    return reader.error("/trombone/bell_offset_mm",
+                        "must be at least the bell's radius (the bell would cut the slide)");
+  }
   if (c.seat_thickness_mm >= c.seat_top_mm) {
     return reader.error("/chair/seat_thickness_mm", "must be less than seat_top_mm");
   }

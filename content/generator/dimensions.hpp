@@ -50,10 +50,70 @@ struct ChairDimensions {
   double backrest_thickness_mm = 25.0;
 };
 
+struct StageDimensions {
+  double width_mm = 12000.0;          // along X
+  double depth_mm = 8000.0;           // along Z
+  double platform_height_mm = 400.0;  // the skirt below the floor's top (y = 0)
+  double plank_width_mm = 150.0;
+  double plank_gap_mm = 2.0;
+  double edge_height_mm = 15.0;  // the nosing strip around the edge, above the floor
+  double edge_width_mm = 60.0;
+};
+
+// B-flat trumpet (brass_assets.hpp). Lengths from the mouthpiece rim forward (toward -Z).
+struct TrumpetDimensions {
+  double overall_length_mm = 480.0;  // mouthpiece rim to bell rim
+  double bell_diameter_mm = 123.0;
+  double bore_mm = 11.66;
+  double mouthpiece_length_mm = 88.0;
+  double mouthpiece_rim_diameter_mm = 26.0;
+  double valve_casing_diameter_mm = 22.0;
+  double valve_pitch_mm = 25.0;  // centre to centre, along the instrument
+  double button_diameter_mm = 16.0;
+  double piston_travel_mm = 18.0;  // button top at rest to fully down
+};
+
+// Tenor trombone (brass_assets.hpp). The slide's maximum extension is not here: it is the 7th
+// position from content/instruments/trombone_tenor.json.
+struct TromboneDimensions {
+  double bell_diameter_mm = 216.0;
+  double bore_mm = 13.9;
+  double mouthpiece_length_mm = 90.0;
+  double mouthpiece_rim_diameter_mm = 38.0;
+  double inner_slide_length_mm = 700.0;  // the fixed inner tubes, receiver to their ends
+  double slide_spacing_mm = 95.0;        // centre to centre of the two slide tubes
+  double bell_forward_mm = 650.0;        // bell rim ahead of the mouthpiece rim
+  double bell_offset_mm = 125.0;         // bell axis to the player's left of the slide
+  double tuning_bow_back_mm = 230.0;     // tuning-slide bow behind the mouthpiece rim
+};
+
+// The performer rig (performer_asset.hpp): an adult of about 1.75 m standing in the A-pose. Bone
+// lengths are joint to joint; the head's joint is at chin height, the crown head_height_mm above.
+struct PerformerDimensions {
+  double ankle_height_mm = 80.0;       // ankle joint (foot bone) above the floor
+  double shin_length_mm = 420.0;       // knee to ankle
+  double thigh_length_mm = 430.0;      // hip joint to knee
+  double hip_width_mm = 180.0;         // between the hip joints
+  double spine_length_mm = 110.0;      // hips to spine (lumbar)
+  double chest_length_mm = 150.0;      // spine to chest
+  double neck_base_mm = 230.0;         // chest to the neck's base
+  double neck_length_mm = 95.0;        // neck base to the head joint (chin height)
+  double head_height_mm = 230.0;       // chin to crown
+  double shoulder_width_mm = 360.0;    // between the shoulder joints (upper arm origins)
+  double upper_arm_length_mm = 300.0;  // shoulder to elbow
+  double forearm_length_mm = 255.0;    // elbow to wrist
+  double arm_spread_deg = 12.0;        // the A-pose: the arms' angle out from vertical
+  double foot_length_mm = 260.0;       // heel to toe (the shoe)
+};
+
 struct AssetDimensions {
   PianoDimensions piano;
   MusicStandDimensions music_stand;
   ChairDimensions chair;
+  StageDimensions stage;
+  TrumpetDimensions trumpet;
+  TromboneDimensions trombone;
+  PerformerDimensions performer;
 
   static Result<AssetDimensions> load(const std::filesystem::path& path);
   static Result<AssetDimensions> from_json(const nlohmann::json& document,

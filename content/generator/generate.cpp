@@ -3,9 +3,14 @@
 #include <sstream>
 #include <system_error>
 
+#include "brass_model/instrument.hpp"
 #include "core/file_io.hpp"
+#include "generator/brass_assets.hpp"
+#include "generator/hand_asset.hpp"
+#include "generator/performer_asset.hpp"
 #include "generator/piano_asset.hpp"
 #include "generator/props.hpp"
+#include "generator/stage_asset.hpp"
 #include "piano_model/keyboard.hpp"
 
 namespace tutti::content_generator {
@@ -26,7 +31,8 @@ Status write_glb(const tinygltf::Model& model, const std::filesystem::path& path
 }
 
 std::vector<std::string> asset_file_names() {
-  return {"piano.glb", "music_stand.glb", "chair.glb"};
+  return {"piano.glb",    "music_stand.glb", "chair.glb",     "stage.glb",    "trumpet.glb",
+          "trombone.glb", "hand_right.glb",  "hand_left.glb", "performer.glb"};
 }
 
 Status generate_assets(const std::filesystem::path& content_dir,
@@ -35,13 +41,33 @@ Status generate_assets(const std::filesystem::path& content_dir,
   if (!keyboard.ok()) return keyboard.error();
   auto dimensions = AssetDimensions::load(content_dir / "generator" / "dimensions.json");
   if (!dimensions.ok()) return dimensions.error();
+  auto trombone = brass::load_instrument(content_dir / "instruments" / "trombone_tenor.json");
+  if (!trombone.ok()) return trombone.error();
+  if (trombone->slide_length_mm <= 0.0 ||
+      trombone->slide_length_mm + 30.0 > dimensions->trombone.inner_slide_length_mm) {
+    return Error{
+        "dimensions.json: /trombone/inner_slide_length_mm: must exceed the slide's "
+        "7th position in trombone_tenor.json (" +
+        std::to_string(trombone->slide_length_mm) + " mm) by at least 30 mm"};
+  }
+  auto right_hand = load_hand_rig(content_dir, components::HandSide::right);
+  if (!right_hand.ok()) return right_hand.error();
+  auto left_hand = load_hand_rig(content_dir, components::HandSide::left);
+  if (!left_hand.ok()) return left_hand.error();
   std::error_code error;
   std::filesystem::create_directories(out_dir, error);
   if (error) return Error{out_dir.string() + ": cannot create folder (" + error.message() + ")"};
 
-  const tinygltf::Model models[] = {build_piano(*keyboard, dimensions->piano),
-                                    build_music_stand(dimensions->music_stand),
-                                    build_chair(dimensions->chair)};
+  const tinygltf::Model models[] = {
+      build_piano(*keyboard, dimensions->piano),
+      build_music_stand(dimensions->music_stand),
+      build_chair(dimensions->chair),
+      build_stage(dimensions->stage),
+      build_trumpet(dimensions->trumpet),
+      build_trombone(trombone->slide_length_mm, dimensions->trombone),
+      build_hand(*right_hand),
+      build_hand(*left_hand),
+      build_performer(dimensions->performer, *right_hand, *left_hand)};
   const std::vector<std::string> names = asset_file_names();
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (Status status = write_glb(models[i], out_dir / names[i]); !status.ok()) return status;

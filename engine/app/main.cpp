@@ -9,6 +9,7 @@
 #include "app/fingering_command.hpp"
 #include "app/fit_fingering_command.hpp"
 #include "app/info_command.hpp"
+#include "app/render_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tutti: music to animated performances"};
@@ -69,6 +70,27 @@ int main(int argc, char** argv) {
                         "instrument id from content/instruments (default: detected)");
   brass_cmd->add_flag("--json", brass.json, "print JSON instead of text");
 
+  tutti::app::RenderOptions render;
+  CLI::App* render_cmd = app.add_subcommand(
+      "render",
+      "Render a scene (content/scenes/*.json) offline on the Vulkan device: H.264 .mp4, a folder "
+      "of PNG frames, or one .png with --still");
+  render_cmd->add_option("SCENE", render.scene, "scene file")->required();
+  render_cmd->add_option("-o,--output", render.output, "OUT.mp4, OUT.png (--still) or FOLDER/")
+      ->required();
+  render_cmd->add_option("--size", render.size, "WxH (default: the scene's)");
+  render_cmd->add_option("--fps", render.fps, "frames per second (default: the scene's)");
+  render_cmd->add_option("--msaa", render.msaa, "samples per pixel: 1, 2, 4 or 8");
+  render_cmd->add_option("--frames", render.frames, "A:B, frames A (inclusive) to B (exclusive)");
+  render_cmd->add_option("--seconds", render.seconds, "A:B, the frames whose times are in [A, B)");
+  render_cmd->add_option("--still", render.still, "one frame at this time (seconds) to a .png");
+  render_cmd->add_option("--device", render.device, "Vulkan device: index or part of its name");
+  render_cmd->add_option("--assets", render.assets, "folder of the generated .glb assets");
+  render_cmd->add_flag("--validate", render.validate,
+                       "run with the Vulkan validation layer; any message is an error");
+  bool no_progress = false;
+  render_cmd->add_flag("--no-progress", no_progress, "no progress output");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -82,5 +104,9 @@ int main(int argc, char** argv) {
   if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
   if (*fit_cmd) return tutti::app::run_fit_fingering(fit, std::cout, std::cerr);
   if (*brass_cmd) return tutti::app::run_brass(brass, std::cout, std::cerr);
+  if (*render_cmd) {
+    render.progress = !no_progress;
+    return tutti::app::run_render(render, std::cout, std::cerr);
+  }
   return tutti::app::kExitBadInput;
 }

@@ -4,26 +4,11 @@
 #include <cstring>
 #include <string>
 
+#include "render/pipeline_builder.hpp"
 #include "render/shaders.hpp"
 #include "render/vk_result.hpp"
 
 namespace tutti::render {
-namespace {
-
-Result<DeviceHandle<VkShaderModule>> create_shader(VkDevice device,
-                                                   std::span<const std::uint32_t> spirv) {
-  VkShaderModuleCreateInfo info =
-      vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-  info.codeSize = spirv.size_bytes();
-  info.pCode = spirv.data();
-  VkShaderModule module = VK_NULL_HANDLE;
-  if (VkResult r = vkCreateShaderModule(device, &info, nullptr, &module); r != VK_SUCCESS) {
-    return vk_error("vkCreateShaderModule", r);
-  }
-  return DeviceHandle<VkShaderModule>(device, module, vkDestroyShaderModule);
-}
-
-}  // namespace
 
 Result<ColorMesh> ColorMesh::create(VulkanContext& context, std::span<const ColorVertex> vertices) {
   if (vertices.empty() || vertices.size() % 3 != 0) {
@@ -50,9 +35,9 @@ Result<ColorMesh> ColorMesh::create(VulkanContext& context, std::span<const Colo
   return mesh;
 }
 
-Result<std::unique_ptr<ColorMeshPipeline>> ColorMeshPipeline::create(VulkanContext& context,
-                                                                     VkFormat color_format,
-                                                                     VkFormat depth_format) {
+Result<std::unique_ptr<ColorMeshPipeline>> ColorMeshPipeline::create(
+    VulkanContext& context, VkFormat color_format, VkFormat depth_format,
+    VkSampleCountFlagBits samples) {
   const VkDevice device = context.device();
   std::unique_ptr<ColorMeshPipeline> pipeline(new ColorMeshPipeline());
 
@@ -68,105 +53,22 @@ Result<std::unique_ptr<ColorMeshPipeline>> ColorMeshPipeline::create(VulkanConte
   }
   pipeline->layout_ = DeviceHandle<VkPipelineLayout>(device, layout, vkDestroyPipelineLayout);
 
-  Result<DeviceHandle<VkShaderModule>> vert = create_shader(device, shaders::color_mesh_vert());
-  if (!vert) return vert.error();
-  Result<DeviceHandle<VkShaderModule>> frag = create_shader(device, shaders::color_mesh_frag());
-  if (!frag) return frag.error();
-  VkPipelineShaderStageCreateInfo stages[2] = {
-      vk_struct<VkPipelineShaderStageCreateInfo>(
-          VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO),
-      vk_struct<VkPipelineShaderStageCreateInfo>(
-          VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO)};
-  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vert->get();
-  stages[0].pName = "main";
-  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = frag->get();
-  stages[1].pName = "main";
-
-  const VkVertexInputBindingDescription binding{0, sizeof(ColorVertex),
-                                                VK_VERTEX_INPUT_RATE_VERTEX};
-  const VkVertexInputAttributeDescription attributes[2] = {
+  PipelineDescription description;
+  description.vertex_spirv = shaders::color_mesh_vert();
+  description.fragment_spirv = shaders::color_mesh_frag();
+  description.bindings = {{0, sizeof(ColorVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  description.attributes = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT,
        static_cast<std::uint32_t>(offsetof(ColorVertex, position))},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<std::uint32_t>(offsetof(ColorVertex, color))},
   };
-  VkPipelineVertexInputStateCreateInfo vertex_input =
-      vk_struct<VkPipelineVertexInputStateCreateInfo>(
-          VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-  vertex_input.vertexBindingDescriptionCount = 1;
-  vertex_input.pVertexBindingDescriptions = &binding;
-  vertex_input.vertexAttributeDescriptionCount = 2;
-  vertex_input.pVertexAttributeDescriptions = attributes;
-
-  VkPipelineInputAssemblyStateCreateInfo assembly =
-      vk_struct<VkPipelineInputAssemblyStateCreateInfo>(
-          VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-
-  VkPipelineViewportStateCreateInfo viewport = vk_struct<VkPipelineViewportStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
-
-  VkPipelineRasterizationStateCreateInfo raster = vk_struct<VkPipelineRasterizationStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = VK_CULL_MODE_NONE;
-  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  raster.lineWidth = 1.0f;
-
-  VkPipelineMultisampleStateCreateInfo multisample =
-      vk_struct<VkPipelineMultisampleStateCreateInfo>(
-          VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-
-  VkPipelineDepthStencilStateCreateInfo depth = vk_struct<VkPipelineDepthStencilStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
-
-  VkPipelineColorBlendAttachmentState blend_attachment{};
-  blend_attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blend = vk_struct<VkPipelineColorBlendStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-  blend.attachmentCount = 1;
-  blend.pAttachments = &blend_attachment;
-
-  const VkDynamicState dynamic_states[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamic = vk_struct<VkPipelineDynamicStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-  dynamic.dynamicStateCount = 2;
-  dynamic.pDynamicStates = dynamic_states;
-
-  VkPipelineRenderingCreateInfo rendering =
-      vk_struct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-  rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &color_format;
-  rendering.depthAttachmentFormat = depth_format;
-
-  VkGraphicsPipelineCreateInfo info =
-      vk_struct<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
-  info.pNext = &rendering;
-  info.stageCount = 2;
-  info.pStages = stages;
-  info.pVertexInputState = &vertex_input;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.pDynamicState = &dynamic;
-  info.layout = layout;
-  VkPipeline handle = VK_NULL_HANDLE;
-  if (VkResult r = vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &handle);
-      r != VK_SUCCESS) {
-    return vk_error("vkCreateGraphicsPipelines", r);
-  }
-  pipeline->pipeline_ = DeviceHandle<VkPipeline>(device, handle, vkDestroyPipeline);
+  description.color_format = color_format;
+  description.depth_format = depth_format;
+  description.samples = samples;
+  description.layout = layout;
+  Result<DeviceHandle<VkPipeline>> made = create_graphics_pipeline(device, description);
+  if (!made) return made.error();
+  pipeline->pipeline_ = std::move(*made);
   return pipeline;
 }
 

@@ -40,9 +40,10 @@ class ColorMesh {
 
 class ColorMeshPipeline {
  public:
-  static Result<std::unique_ptr<ColorMeshPipeline>> create(VulkanContext& context,
-                                                           VkFormat color_format,
-                                                           VkFormat depth_format);
+  // `samples` must match the attachments' sample count (FrameTarget::samples()).
+  static Result<std::unique_ptr<ColorMeshPipeline>> create(
+      VulkanContext& context, VkFormat color_format, VkFormat depth_format,
+      VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
   ColorMeshPipeline(const ColorMeshPipeline&) = delete;
   ColorMeshPipeline& operator=(const ColorMeshPipeline&) = delete;
 

@@ -39,8 +39,10 @@ Result<std::uint32_t> find_memory_type(VkPhysicalDevice physical_device, std::ui
                " for type bits " + std::to_string(type_bits)};
 }
 
-Result<DeviceBuffer> create_host_buffer(VkPhysicalDevice physical_device, VkDevice device,
-                                        VkDeviceSize size_bytes, VkBufferUsageFlags usage) {
+Result<DeviceBuffer> create_buffer(VkPhysicalDevice physical_device, VkDevice device,
+                                   VkDeviceSize size_bytes, VkBufferUsageFlags usage,
+                                   VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred,
+                                   bool map) {
   DeviceBuffer out;
   out.size_bytes = size_bytes;
   VkBufferCreateInfo info = vk_struct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
@@ -56,8 +58,7 @@ Result<DeviceBuffer> create_host_buffer(VkPhysicalDevice physical_device, VkDevi
   VkMemoryRequirements requirements;
   vkGetBufferMemoryRequirements(device, buffer, &requirements);
   Result<std::uint32_t> type =
-      find_memory_type(physical_device, requirements.memoryTypeBits,
-                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
+      find_memory_type(physical_device, requirements.memoryTypeBits, required, preferred);
   if (!type) return type.error();
   VkPhysicalDeviceMemoryProperties properties;
   vkGetPhysicalDeviceMemoryProperties(physical_device, &properties);
@@ -72,15 +73,25 @@ Result<DeviceBuffer> create_host_buffer(VkPhysicalDevice physical_device, VkDevi
     return vk_error("vkBindBufferMemory", r);
   }
   // Unmapped implicitly by vkFreeMemory.
-  if (VkResult r = vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &out.mapped); r != VK_SUCCESS) {
-    return vk_error("vkMapMemory", r);
+  if (map) {
+    if (VkResult r = vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &out.mapped);
+        r != VK_SUCCESS) {
+      return vk_error("vkMapMemory", r);
+    }
   }
   return out;
 }
 
+Result<DeviceBuffer> create_host_buffer(VkPhysicalDevice physical_device, VkDevice device,
+                                        VkDeviceSize size_bytes, VkBufferUsageFlags usage) {
+  return create_buffer(physical_device, device, size_bytes, usage,
+                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, VK_MEMORY_PROPERTY_HOST_CACHED_BIT,
+                       true);
+}
+
 Result<DeviceImage> create_image(VkPhysicalDevice physical_device, VkDevice device, VkFormat format,
                                  VkExtent2D extent, VkImageUsageFlags usage,
-                                 VkImageAspectFlags aspect) {
+                                 VkImageAspectFlags aspect, VkSampleCountFlagBits samples) {
   DeviceImage out;
   out.format = format;
   out.extent = extent;
@@ -90,7 +101,7 @@ Result<DeviceImage> create_image(VkPhysicalDevice physical_device, VkDevice devi
   info.extent = {extent.width, extent.height, 1};
   info.mipLevels = 1;
   info.arrayLayers = 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.samples = samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
@@ -103,8 +114,11 @@ Result<DeviceImage> create_image(VkPhysicalDevice physical_device, VkDevice devi
 
   VkMemoryRequirements requirements;
   vkGetImageMemoryRequirements(device, image, &requirements);
+  const VkMemoryPropertyFlags lazily = (usage & VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT) != 0
+                                           ? VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT
+                                           : 0;
   Result<std::uint32_t> type = find_memory_type(physical_device, requirements.memoryTypeBits,
-                                                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+                                                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, lazily);
   if (!type) return type.error();
   Result<DeviceHandle<VkDeviceMemory>> allocated = allocate_memory(device, requirements, *type);
   if (!allocated) return allocated.error();
@@ -126,6 +140,17 @@ Result<DeviceImage> create_image(VkPhysicalDevice physical_device, VkDevice devi
   }
   out.view = DeviceHandle<VkImageView>(device, view, vkDestroyImageView);
   return out;
+}
+
+VkFormat choose_depth_format(VkPhysicalDevice physical_device) {
+  for (VkFormat format : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM}) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(physical_device, format, &properties);
+    if (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) {
+      return format;
+    }
+  }
+  return VK_FORMAT_D16_UNORM;
 }
 
 Status invalidate_for_host_read(VkDevice device, const DeviceBuffer& buffer) {

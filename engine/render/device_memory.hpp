@@ -79,14 +79,28 @@ Result<std::uint32_t> find_memory_type(VkPhysicalDevice physical_device, std::ui
                                        VkMemoryPropertyFlags required,
                                        VkMemoryPropertyFlags preferred = 0);
 
+// A buffer with dedicated memory of a type that has `required` (and `preferred` when one
+// exists); `map` keeps it mapped for its lifetime (host-visible memory only).
+Result<DeviceBuffer> create_buffer(VkPhysicalDevice physical_device, VkDevice device,
+                                   VkDeviceSize size_bytes, VkBufferUsageFlags usage,
+                                   VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred,
+                                   bool map);
+
 // A host-visible buffer (host-cached preferred: the CPU reads it back), persistently mapped.
 Result<DeviceBuffer> create_host_buffer(VkPhysicalDevice physical_device, VkDevice device,
                                         VkDeviceSize size_bytes, VkBufferUsageFlags usage);
 
 // A device-local, optimal-tiling 2D image with one mip level and one layer, plus its view.
+// `samples` > 1 makes a multisampled attachment (MSAA); lazily allocated memory is used when the
+// usage is TRANSIENT_ATTACHMENT and the device offers it.
 Result<DeviceImage> create_image(VkPhysicalDevice physical_device, VkDevice device, VkFormat format,
                                  VkExtent2D extent, VkImageUsageFlags usage,
-                                 VkImageAspectFlags aspect);
+                                 VkImageAspectFlags aspect,
+                                 VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
+
+// The depth attachment format: D32_SFLOAT when the device supports it, else D16_UNORM (which
+// every device must).
+VkFormat choose_depth_format(VkPhysicalDevice physical_device);
 
 // Makes the device's writes to `buffer` visible to the host (no-op for coherent memory).
 Status invalidate_for_host_read(VkDevice device, const DeviceBuffer& buffer);

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <string>
 
+#include "render/image_barrier.hpp"
 #include "render/vk_result.hpp"
 
 namespace tutti::render {
@@ -11,48 +12,32 @@ namespace {
 // Readback rows start on this boundary; a typical optimal copy pitch on GPUs.
 constexpr std::uint32_t kRowAlignmentBytes = 256;
 
-VkFormat choose_depth_format(VkPhysicalDevice physical_device) {
-  // D16_UNORM is mandatory for depth attachments; prefer the precise float format.
-  for (VkFormat format : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM}) {
-    VkFormatProperties properties;
-    vkGetPhysicalDeviceFormatProperties(physical_device, format, &properties);
-    if (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) {
-      return format;
-    }
-  }
-  return VK_FORMAT_D16_UNORM;
-}
-
-VkImageMemoryBarrier2 image_barrier(VkImage image, VkImageAspectFlags aspect,
-                                    VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
-                                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access,
-                                    VkImageLayout old_layout, VkImageLayout new_layout) {
-  VkImageMemoryBarrier2 barrier =
-      vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
-  barrier.srcStageMask = src_stage;
-  barrier.srcAccessMask = src_access;
-  barrier.dstStageMask = dst_stage;
-  barrier.dstAccessMask = dst_access;
-  barrier.oldLayout = old_layout;
-  barrier.newLayout = new_layout;
-  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image;
-  barrier.subresourceRange = {aspect, 0, 1, 0, 1};
-  return barrier;
-}
-
 }  // namespace
 
 Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(VulkanContext& context,
                                                                  std::uint32_t width,
                                                                  std::uint32_t height,
-                                                                 std::uint32_t ring_size) {
+                                                                 std::uint32_t ring_size,
+                                                                 VkSampleCountFlagBits samples) {
   if (width == 0 || height == 0 || ring_size == 0) {
     return Error{"offscreen target: size " + std::to_string(width) + "x" + std::to_string(height) +
                  " and ring size " + std::to_string(ring_size) + " must be at least 1"};
   }
+  if (samples != VK_SAMPLE_COUNT_1_BIT && samples != VK_SAMPLE_COUNT_2_BIT &&
+      samples != VK_SAMPLE_COUNT_4_BIT && samples != VK_SAMPLE_COUNT_8_BIT) {
+    return Error{"offscreen target: " + std::to_string(samples) +
+                 " samples per pixel: must be 1, 2, 4 or 8"};
+  }
+  VkPhysicalDeviceProperties properties;
+  vkGetPhysicalDeviceProperties(context.physical_device(), &properties);
+  const VkSampleCountFlags supported = properties.limits.framebufferColorSampleCounts &
+                                       properties.limits.framebufferDepthSampleCounts;
+  if ((supported & samples) == 0) {
+    return Error{"offscreen target: the device " + context.device_info().name + " cannot render " +
+                 std::to_string(samples) + " samples per pixel"};
+  }
   std::unique_ptr<OffscreenTarget> target(new OffscreenTarget(context));
+  target->samples_ = samples;
   target->extent_ = {width, height};
   target->depth_format_ = choose_depth_format(context.physical_device());
   const std::uint32_t tight_row = width * 4;
@@ -69,11 +54,20 @@ Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(VulkanContext& 
                      VK_IMAGE_ASPECT_COLOR_BIT);
     if (!color) return color.error();
     slot.color = std::move(*color);
-    Result<DeviceImage> depth =
-        create_image(physical, device, target->depth_format_, target->extent_,
-                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+    Result<DeviceImage> depth = create_image(
+        physical, device, target->depth_format_, target->extent_,
+        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+        VK_IMAGE_ASPECT_DEPTH_BIT, samples);
     if (!depth) return depth.error();
     slot.depth = std::move(*depth);
+    if (samples != VK_SAMPLE_COUNT_1_BIT) {
+      Result<DeviceImage> msaa = create_image(
+          physical, device, kColorFormat, target->extent_,
+          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+          VK_IMAGE_ASPECT_COLOR_BIT, samples);
+      if (!msaa) return msaa.error();
+      slot.msaa_color = std::move(*msaa);
+    }
     Result<DeviceBuffer> readback =
         create_host_buffer(physical, device, VkDeviceSize{target->row_pitch_bytes_} * height,
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -122,7 +116,7 @@ Status OffscreenTarget::wait(Slot& slot) {
   return vk_check("vkResetFences", vkResetFences(context_.device(), 1, &fence));
 }
 
-Result<RecordingFrame> OffscreenTarget::begin_frame(const ClearColor& clear) {
+Result<RecordingFrame> OffscreenTarget::begin_frame() {
   if (recording_ != nullptr) {
     return Error{"offscreen target: begin_frame while frame " +
                  std::to_string(recording_->frame_id) + " is still being recorded"};
@@ -140,35 +134,58 @@ Result<RecordingFrame> OffscreenTarget::begin_frame(const ClearColor& clear) {
   if (VkResult r = vkBeginCommandBuffer(slot.commands, &begin); r != VK_SUCCESS) {
     return vk_error("vkBeginCommandBuffer", r);
   }
+  slot.frame_id = next_id_++;
+  recording_ = &slot;
+  return RecordingFrame{slot.commands, slot.frame_id};
+}
+
+void OffscreenTarget::begin_main_pass(const ClearColor& clear) {
+  if (recording_ == nullptr || main_pass_open_) return;  // precondition broken: record nothing
+  Slot& slot = *recording_;
+  main_pass_open_ = true;
+  main_pass_recorded_ = true;
+  const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
 
   // The previous frame in this slot last read colour in a copy and wrote depth in the
-  // fragment tests; both images are cleared, so their contents need not survive.
-  const VkImageMemoryBarrier2 barriers[] = {
+  // fragment tests; every attachment is cleared, so their contents need not survive.
+  const VkImageMemoryBarrier2 to_color =
       image_barrier(slot.color.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                     VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL),
-      image_barrier(slot.depth.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,
-                    VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                        VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                    VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL),
-  };
-  VkDependencyInfo dependency = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dependency.imageMemoryBarrierCount = 2;
-  dependency.pImageMemoryBarriers = barriers;
-  vkCmdPipelineBarrier2(slot.commands, &dependency);
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  const VkImageMemoryBarrier2 to_depth = image_barrier(
+      slot.depth.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,
+      VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+          VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+  if (msaa) {
+    const VkImageMemoryBarrier2 to_msaa = image_barrier(
+        slot.msaa_color.image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+        VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    record_image_barriers(slot.commands, {to_color, to_depth, to_msaa});
+  } else {
+    record_image_barriers(slot.commands, {to_color, to_depth});
+  }
 
   VkRenderingAttachmentInfo color =
       vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  color.imageView = slot.color.view.get();
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   color.clearValue.color = {{clear.r, clear.g, clear.b, clear.a}};
+  if (msaa) {
+    color.imageView = slot.msaa_color.view.get();
+    color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+    color.resolveImageView = slot.color.view.get();
+    color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  } else {
+    color.imageView = slot.color.view.get();
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  }
   VkRenderingAttachmentInfo depth =
       vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   depth.imageView = slot.depth.view.get();
@@ -190,27 +207,35 @@ Result<RecordingFrame> OffscreenTarget::begin_frame(const ClearColor& clear) {
   const VkRect2D scissor{{0, 0}, extent_};
   vkCmdSetViewport(slot.commands, 0, 1, &viewport);
   vkCmdSetScissor(slot.commands, 0, 1, &scissor);
+}
 
-  slot.frame_id = next_id_++;
-  recording_ = &slot;
-  return RecordingFrame{slot.commands, slot.frame_id};
+void OffscreenTarget::end_main_pass() {
+  if (recording_ == nullptr || !main_pass_open_) return;
+  vkCmdEndRendering(recording_->commands);
+  main_pass_open_ = false;
+}
+
+Result<RecordingFrame> OffscreenTarget::begin_frame(const ClearColor& clear) {
+  Result<RecordingFrame> frame = begin_frame();
+  if (frame) begin_main_pass(clear);
+  return frame;
 }
 
 Result<std::uint64_t> OffscreenTarget::end_frame() {
   if (recording_ == nullptr) return Error{"offscreen target: end_frame without begin_frame"};
   Slot& slot = *recording_;
+  // A frame without a main pass still has defined pixels: the colour image is cleared to black.
+  if (!main_pass_recorded_) begin_main_pass(ClearColor{});
+  end_main_pass();
+  main_pass_recorded_ = false;
   recording_ = nullptr;
-  vkCmdEndRendering(slot.commands);
 
   const VkImageMemoryBarrier2 to_copy = image_barrier(
       slot.color.image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-  VkDependencyInfo before_copy = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  before_copy.imageMemoryBarrierCount = 1;
-  before_copy.pImageMemoryBarriers = &to_copy;
-  vkCmdPipelineBarrier2(slot.commands, &before_copy);
+  record_image_barriers(slot.commands, {to_copy});
 
   VkBufferImageCopy region{};
   region.bufferOffset = 0;

@@ -9,5 +9,8 @@ namespace tutti::render::shaders {
 
 std::span<const std::uint32_t> color_mesh_vert();
 std::span<const std::uint32_t> color_mesh_frag();
+std::span<const std::uint32_t> lit_vert();
+std::span<const std::uint32_t> lit_frag();
+std::span<const std::uint32_t> shadow_vert();
 
 }  // namespace tutti::render::shaders

@@ -51,18 +51,57 @@ bool layer_available(const char* name) {
   });
 }
 
-std::optional<std::uint32_t> graphics_family(VkPhysicalDevice device) {
+bool instance_extension_available(const std::string& name) {
+  std::uint32_t count = 0;
+  if (vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkExtensionProperties> extensions(count);
+  if (vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data()) != VK_SUCCESS) {
+    return false;
+  }
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const VkExtensionProperties& e) { return name == e.extensionName; });
+}
+
+bool device_extension_available(VkPhysicalDevice device, const char* name) {
+  std::uint32_t count = 0;
+  if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr) != VK_SUCCESS) {
+    return false;
+  }
+  std::vector<VkExtensionProperties> extensions(count);
+  if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data()) !=
+      VK_SUCCESS) {
+    return false;
+  }
+  return std::any_of(extensions.begin(), extensions.end(), [&](const VkExtensionProperties& e) {
+    return std::string(e.extensionName) == name;
+  });
+}
+
+// The first graphics queue family (that can present, when the options ask for presentation).
+std::optional<std::uint32_t> graphics_family(VkInstance instance, VkPhysicalDevice device,
+                                             const VulkanContextOptions& options) {
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
   for (std::uint32_t i = 0; i < count; ++i) {
-    if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) return i;
+    if (!(families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) continue;
+    if (options.can_present && !options.can_present(instance, device, i)) continue;
+    return i;
   }
   return std::nullopt;
 }
 
-VulkanDeviceInfo describe(VkPhysicalDevice device, std::uint32_t index) {
+// What a usable device needs, for error messages.
+std::string requirements_text(const VulkanContextOptions& options) {
+  std::string text = "Vulkan 1.3, a graphics queue";
+  if (options.can_present) text += " that can present";
+  text += options.swapchain ? ", dynamic rendering or VK_KHR_swapchain" : " or dynamic rendering";
+  return text;
+}
+
+VulkanDeviceInfo describe(VkInstance instance, VkPhysicalDevice device, std::uint32_t index,
+                          const VulkanContextOptions& options) {
   VkPhysicalDeviceProperties properties;
   vkGetPhysicalDeviceProperties(device, &properties);
   VulkanDeviceInfo info;
@@ -80,7 +119,9 @@ VulkanDeviceInfo describe(VkPhysicalDevice device, std::uint32_t index) {
     vkGetPhysicalDeviceFeatures2(device, &features);
     dynamic_rendering = features13.dynamicRendering && features13.synchronization2;
   }
-  info.usable = dynamic_rendering && graphics_family(device).has_value();
+  info.usable =
+      dynamic_rendering && graphics_family(instance, device, options).has_value() &&
+      (!options.swapchain || device_extension_available(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME));
   return info;
 }
 
@@ -118,19 +159,24 @@ std::string lower(std::string text) {
   return text;
 }
 
-std::string describe_all(const std::vector<VulkanDeviceInfo>& infos) {
+std::string describe_all(const std::vector<VulkanDeviceInfo>& infos,
+                         const VulkanContextOptions& options) {
+  std::string needs = " + dynamic rendering";
+  if (options.swapchain) needs += " + VK_KHR_swapchain";
+  if (options.can_present) needs += " + presentation";
   std::string out;
   for (const VulkanDeviceInfo& info : infos) {
     if (!out.empty()) out += "; ";
     out += std::to_string(info.index) + ": " + info.name + " (" + device_type_name(info.type) +
-           (info.usable ? "" : ", unusable: needs Vulkan 1.3 + dynamic rendering") + ")";
+           (info.usable ? "" : ", unusable: needs Vulkan 1.3" + needs) + ")";
   }
   return out;
 }
 
 // Index into `infos` of the device `selector` names (see the header for the rules).
 Result<std::size_t> select_device(const std::vector<VulkanDeviceInfo>& infos,
-                                  const std::string& selector) {
+                                  const VulkanContextOptions& options) {
+  const std::string& selector = options.device;
   if (infos.empty()) return Error{kNoDevice};
   const bool by_index =
       !selector.empty() && std::all_of(selector.begin(), selector.end(), [](char c) {
@@ -148,8 +194,8 @@ Result<std::size_t> select_device(const std::vector<VulkanDeviceInfo>& infos,
     if (!matches) continue;
     if (!info.usable) {
       if (!selector.empty()) {
-        return Error{"Vulkan device " + std::to_string(info.index) + " (" + info.name +
-                     ") lacks Vulkan 1.3, a graphics queue or dynamic rendering"};
+        return Error{"Vulkan device " + std::to_string(info.index) + " (" + info.name + ") lacks " +
+                     requirements_text(options)};
       }
       continue;
     }
@@ -158,10 +204,14 @@ Result<std::size_t> select_device(const std::vector<VulkanDeviceInfo>& infos,
   }
   if (best) return *best;
   if (selector.empty()) {
-    return Error{"no usable Vulkan device (need Vulkan 1.3 with dynamic rendering); found " +
-                 describe_all(infos)};
+    std::string needs = "Vulkan 1.3 with dynamic rendering";
+    if (options.swapchain) needs += ", VK_KHR_swapchain";
+    if (options.can_present) needs += ", a graphics queue that can present";
+    return Error{"no usable Vulkan device (need " + needs + "); found " +
+                 describe_all(infos, options)};
   }
-  return Error{"no Vulkan device matches \"" + selector + "\"; available: " + describe_all(infos)};
+  return Error{"no Vulkan device matches \"" + selector +
+               "\"; available: " + describe_all(infos, options)};
 }
 
 Result<VkInstance> create_instance(const VulkanContextOptions& options, ValidationLog* log) {
@@ -198,6 +248,16 @@ Result<VkInstance> create_instance(const VulkanContextOptions& options, Validati
       extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
       features.pNext = info.pNext;
       info.pNext = &features;
+    }
+  }
+  for (const std::string& name : options.instance_extensions) {
+    if (!instance_extension_available(name)) {
+      return Error{"the Vulkan instance extension " + name +
+                   " is not available (a window needs the loader's surface extensions)"};
+    }
+    if (std::none_of(extensions.begin(), extensions.end(),
+                     [&](const char* enabled) { return name == enabled; })) {
+      extensions.push_back(name.c_str());
     }
   }
   info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
@@ -252,7 +312,7 @@ Result<std::vector<VulkanDeviceInfo>> list_vulkan_devices() {
   std::vector<VulkanDeviceInfo> infos;
   if (devices) {
     for (std::size_t i = 0; i < devices->size(); ++i) {
-      infos.push_back(describe((*devices)[i], static_cast<std::uint32_t>(i)));
+      infos.push_back(describe(*instance, (*devices)[i], static_cast<std::uint32_t>(i), options));
     }
   }
   vkDestroyInstance(*instance, nullptr);
@@ -285,13 +345,15 @@ Result<std::unique_ptr<VulkanContext>> VulkanContext::create(const VulkanContext
   if (!devices) return devices.error();
   std::vector<VulkanDeviceInfo> infos;
   for (std::size_t i = 0; i < devices->size(); ++i) {
-    infos.push_back(describe((*devices)[i], static_cast<std::uint32_t>(i)));
+    infos.push_back(
+        describe(context->instance_, (*devices)[i], static_cast<std::uint32_t>(i), options));
   }
-  Result<std::size_t> chosen = select_device(infos, options.device);
+  Result<std::size_t> chosen = select_device(infos, options);
   if (!chosen) return chosen.error();
   context->physical_device_ = (*devices)[*chosen];
   context->device_info_ = infos[*chosen];
-  context->graphics_queue_family_ = *graphics_family(context->physical_device_);
+  context->graphics_queue_family_ =
+      *graphics_family(context->instance_, context->physical_device_, options);
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info =
@@ -311,6 +373,12 @@ Result<std::unique_ptr<VulkanContext>> VulkanContext::create(const VulkanContext
   device_info.pNext = &features;
   device_info.queueCreateInfoCount = 1;
   device_info.pQueueCreateInfos = &queue_info;
+  const char* const swapchain_extension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+  if (options.swapchain) {
+    device_info.enabledExtensionCount = 1;
+    device_info.ppEnabledExtensionNames = &swapchain_extension;
+  }
+  context->swapchain_ = options.swapchain;
   if (VkResult r =
           vkCreateDevice(context->physical_device_, &device_info, nullptr, &context->device_);
       r != VK_SUCCESS) {

@@ -15,6 +15,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -45,6 +46,16 @@ struct VulkanContextOptions {
   bool synchronization_validation = false;
   std::string device;  // "" (best), an index ("0") or a name substring ("llvmpipe")
   std::string application_name = "tutti";
+
+  // For presenting to a window (window.hpp's require_presentation() fills all three).
+  // Instance extensions to enable besides the debug ones, e.g. VK_KHR_surface and
+  // VK_KHR_xcb_surface (glfwGetRequiredInstanceExtensions); an error naming them if missing.
+  std::vector<std::string> instance_extensions;
+  // Enable VK_KHR_swapchain; devices without it are not usable.
+  bool swapchain = false;
+  // When set, the graphics queue family must also be able to present: only families for which
+  // this returns true are considered, and devices without one are not usable.
+  std::function<bool(VkInstance, VkPhysicalDevice, std::uint32_t queue_family)> can_present;
 };
 
 // One enumerated physical device, as list_vulkan_devices() reports it.
@@ -53,7 +64,8 @@ struct VulkanDeviceInfo {
   std::string name;
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
   std::uint32_t api_version = 0;
-  bool usable = false;  // Vulkan >= 1.3, graphics queue, dynamic rendering
+  bool usable = false;  // Vulkan >= 1.3, graphics queue, dynamic rendering (+ what the
+                        // options ask for: swap chain, presentation)
 };
 
 // Human name of a device type: "discrete", "integrated", "virtual", "cpu", "other".
@@ -76,6 +88,8 @@ class VulkanContext {
   VkCommandPool command_pool() const { return command_pool_; }
   const VulkanDeviceInfo& device_info() const { return device_info_; }
   bool validation_enabled() const { return validation_; }
+  // Whether VK_KHR_swapchain is enabled (VulkanContextOptions::swapchain).
+  bool swapchain_enabled() const { return swapchain_; }
   // Empty log when validation is off.
   std::shared_ptr<const ValidationLog> validation_log() const { return log_; }
 
@@ -93,6 +107,7 @@ class VulkanContext {
   VkCommandPool command_pool_ = VK_NULL_HANDLE;
   VulkanDeviceInfo device_info_;
   bool validation_ = false;
+  bool swapchain_ = false;
   std::shared_ptr<ValidationLog> log_ = std::make_shared<ValidationLog>();
 };
 

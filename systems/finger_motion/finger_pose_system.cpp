@@ -39,6 +39,7 @@ void finger_pose_system(ecs::World& world, const ecs::FrameTime& frame) {
     finger.pip_flexion_rad = pose.pip_flexion_rad;
     finger.dip_flexion_rad = pose.dip_flexion_rad;
     finger.press_depth = pose.press_depth;
+    finger.key = pose.key;
     finger.tip_x_mm = pose.tip_x_mm;
     finger.tip_y_mm = pose.tip_y_mm;
     finger.tip_z_mm = pose.tip_z_mm;

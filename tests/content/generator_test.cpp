@@ -138,13 +138,19 @@ TEST(ContentGenerator, MissingOrBrokenKeyboardIsAOneLineErrorAndExitCode2) {
   std::filesystem::remove_all(dir);
 }
 
-// A content folder with the shipped keyboard.json and a dimensions.json of our own.
+// A content folder with the shipped data and a dimensions.json of our own.
 std::filesystem::path content_with_dimensions(const std::filesystem::path& dir,
                                               const std::string& dimensions_json) {
-  std::filesystem::create_directories(dir / "piano");
+  // The other inputs (piano/, instruments/, generator/hand_rig.json) as shipped.
   std::filesystem::create_directories(dir / "generator");
-  std::filesystem::copy_file(content_dir() / "piano" / "keyboard.json",
-                             dir / "piano" / "keyboard.json",
+  std::filesystem::copy(
+      content_dir() / "piano", dir / "piano",
+      std::filesystem::copy_options::recursive | std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy(
+      content_dir() / "instruments", dir / "instruments",
+      std::filesystem::copy_options::recursive | std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(content_dir() / "generator" / "hand_rig.json",
+                             dir / "generator" / "hand_rig.json",
                              std::filesystem::copy_options::overwrite_existing);
   EXPECT_TRUE(write_file_atomically(dir / "generator" / "dimensions.json", dimensions_json).ok());
   return dir;
@@ -210,12 +216,15 @@ TEST(ContentGenerator, BadDimensionsAreOneLineErrorsWithTheJsonPath) {
   missing.erase("music_stand");
   nlohmann::json inverted = *document;
   inverted["chair"]["backrest_top_mm"] = 600.0;
+  nlohmann::json performer = *document;
+  performer["performer"]["upper_arm_length_mm"] = 5000.0;
   const Case cases[] = {
       {"negative", negative.dump(), "dimensions.json: /chair/seat_top_mm"},
       {"unknown", unknown.dump(), "dimensions.json: /piano"},
       {"missing", missing.dump(), "dimensions.json: /music_stand: missing"},
       {"inverted", inverted.dump(), "dimensions.json: /chair/backrest_bottom_mm"},
       {"not_json", "{\"piano\": ", "dimensions.json"},
+      {"performer", performer.dump(), "dimensions.json: /performer/upper_arm_length_mm"},
   };
   for (const Case& c : cases) {
     const auto content = content_with_dimensions(dir / c.name, c.json);
@@ -227,6 +236,7 @@ TEST(ContentGenerator, BadDimensionsAreOneLineErrorsWithTheJsonPath) {
     ASSERT_FALSE(run.stderr_text.empty()) << c.name;
     EXPECT_EQ(run.stderr_text.find('\n'), run.stderr_text.size() - 1) << run.stderr_text;
     EXPECT_FALSE(std::filesystem::exists(dir / "out" / "piano.glb")) << c.name;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out" / "performer.glb")) << c.name;
   }
   std::filesystem::remove_all(dir);
 }

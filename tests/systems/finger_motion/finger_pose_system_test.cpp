@@ -57,7 +57,9 @@ TEST(FingerPoseSystem, WritesHandAndFingersFromThePianistsPlan) {
   const auto& little = world.get<components::Finger>(fingers[4]);
   EXPECT_EQ(little.press_depth, 1.0);
   EXPECT_EQ(little.tip_x_mm, m.keyboard.x_mm(64));
+  EXPECT_EQ(little.key, 64);  // which key to press down on the piano model
   EXPECT_EQ(world.get<components::Finger>(fingers[1]).press_depth, 0.0);
+  EXPECT_EQ(world.get<components::Finger>(fingers[1]).key, -1);
   EXPECT_EQ(world.get<components::Finger>(orphan).press_depth, 0.25);
 
   // The same as evaluating the plan directly.
@@ -69,6 +71,7 @@ TEST(FingerPoseSystem, WritesHandAndFingersFromThePianistsPlan) {
   // Later frame: released.
   schedule.run(world, {3.0, 1.0 / 60});
   EXPECT_EQ(world.get<components::Finger>(fingers[2]).press_depth, 0.0);
+  EXPECT_EQ(world.get<components::Finger>(fingers[2]).key, -1);
 }
 
 }  // namespace

@@ -1,0 +1,249 @@
+#include "app/render_command.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <vector>
+
+#include "app/exit_codes.hpp"
+#include "app/frame_range.hpp"
+#include "app/video_pipe.hpp"
+#include "image/png.hpp"
+#include "render/model_renderer.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/vulkan_context.hpp"
+#include "scene/load_scene.hpp"
+#include "stage/stage.hpp"
+
+namespace tutti::app {
+namespace {
+
+enum class OutputKind { video, png, folder };
+
+Result<OutputKind> output_kind(const RenderOptions& o) {
+  const std::string ext = o.output.extension().string();
+  if (!o.still.empty()) {
+    if (ext != ".png") return Error{o.output.string() + ": --still writes a .png file"};
+    return OutputKind::png;
+  }
+  if (ext == ".mp4") return OutputKind::video;
+  if (ext.empty() || o.output.string().back() == '/') return OutputKind::folder;
+  return Error{o.output.string() +
+               ": the output must be .mp4, a folder for PNG frames, or .png "
+               "with --still"};
+}
+
+Status parse_size(const std::string& text, int& width, int& height) {
+  int w = 0;
+  int h = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 16 || h < 16 || w > 7680 ||
+      h > 4320 || w % 2 != 0 || h % 2 != 0) {
+    return Error{"--size \"" + text + "\": expected WxH, even, from 16x16 to 7680x4320"};
+  }
+  width = w;
+  height = h;
+  return Status::success();
+}
+
+VkSampleCountFlagBits to_samples(int msaa) {
+  switch (msaa) {
+    case 2:
+      return VK_SAMPLE_COUNT_2_BIT;
+    case 4:
+      return VK_SAMPLE_COUNT_4_BIT;
+    case 8:
+      return VK_SAMPLE_COUNT_8_BIT;
+    default:
+      return VK_SAMPLE_COUNT_1_BIT;
+  }
+}
+
+// "[=====>     ] 120/900 frames  34.2 fps  ETA 0:23" on a terminal (redrawn in place), else a
+// plain line every 10 %.
+class Progress {
+ public:
+  Progress(std::ostream& err, std::int64_t total, bool enabled)
+      : err_(err),
+        total_(total),
+        enabled_(enabled),
+        terminal_(isatty(STDERR_FILENO) != 0),
+        start_(std::chrono::steady_clock::now()) {}
+
+  void frame_done(std::int64_t done) {
+    if (!enabled_) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double fps = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
+    const double eta = fps > 0 ? static_cast<double>(total_ - done) / fps : 0.0;
+    char line[160];
+    if (terminal_) {
+      const int width = 30;
+      const int filled = static_cast<int>(width * done / std::max<std::int64_t>(total_, 1));
+      std::string bar(static_cast<std::size_t>(filled), '=');
+      if (filled < width) bar += '>';
+      bar.resize(width, ' ');
+      std::snprintf(line, sizeof line, "\r[%s] %lld/%lld frames  %.1f fps  ETA %d:%02d ",
+                    bar.c_str(), static_cast<long long>(done), static_cast<long long>(total_), fps,
+                    static_cast<int>(eta) / 60, static_cast<int>(eta) % 60);
+      err_ << line << (done == total_ ? "\n" : "") << std::flush;
+    } else if (done == total_ || done * 10 / total_ != (done - 1) * 10 / total_) {
+      std::snprintf(line, sizeof line, "render: %lld/%lld frames, %.1f fps, ETA %.0f s\n",
+                    static_cast<long long>(done), static_cast<long long>(total_), fps, eta);
+      err_ << line << std::flush;
+    }
+  }
+
+ private:
+  std::ostream& err_;
+  std::int64_t total_;
+  bool enabled_;
+  bool terminal_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+  auto fail = [&](const std::string& message) {
+    err << "error: " << message << "\n";
+    return kExitBadInput;
+  };
+  auto kind = output_kind(o);
+  if (!kind) return fail(kind.error().message);
+  auto scene = scene::load_scene(o.scene);
+  if (!scene) return fail(scene.error().message);
+  int width = scene->output.width;
+  int height = scene->output.height;
+  if (!o.size.empty()) {
+    if (Status s = parse_size(o.size, width, height); !s) return fail(s.error().message);
+  }
+  const int fps = o.fps > 0 ? o.fps : scene->output.fps;
+  if (o.fps < 0 || fps > 240) return fail("--fps " + std::to_string(o.fps) + ": must be 1..240");
+  const int msaa = o.msaa > 0 ? o.msaa : scene->output.msaa;
+  if (msaa != 1 && msaa != 2 && msaa != 4 && msaa != 8) {
+    return fail("--msaa " + std::to_string(msaa) + ": must be 1, 2, 4 or 8");
+  }
+
+  stage::StageOptions stage_options;
+  stage_options.asset_dir = o.assets;
+  auto stage = stage::build_stage(*scene, stage_options);
+  if (!stage) return fail((*scene).source + ": " + stage.error().message);
+  stage::Stage& st = **stage;
+
+  const std::int64_t total = frame_count(st.start_s, st.end_s, fps);
+  FrameRange range{0, total};
+  if (!o.still.empty()) {
+    char* end = nullptr;
+    const double t = std::strtod(o.still.c_str(), &end);
+    if (o.still.empty() || end != o.still.c_str() + o.still.size() || !std::isfinite(t)) {
+      return fail("--still \"" + o.still + "\" is not a time in seconds");
+    }
+    range = {0, 1};
+  } else if (!o.frames.empty() && !o.seconds.empty()) {
+    return fail("--frames and --seconds: give one of them");
+  } else if (!o.frames.empty()) {
+    auto parsed = parse_frame_range(o.frames, total);
+    if (!parsed) return fail(parsed.error().message);
+    range = *parsed;
+  } else if (!o.seconds.empty()) {
+    auto parsed = parse_seconds_range(o.seconds, st.start_s, fps, total);
+    if (!parsed) return fail(parsed.error().message);
+    range = *parsed;
+  }
+  if (range.end <= range.first) return fail(o.scene.string() + ": nothing to render");
+
+  render::VulkanContextOptions context_options;
+  context_options.validation = o.validate;
+  context_options.device = o.device;
+  auto context = render::VulkanContext::create(context_options);
+  if (!context) return fail(context.error().message);
+  auto target =
+      render::OffscreenTarget::create(**context, static_cast<std::uint32_t>(width),
+                                      static_cast<std::uint32_t>(height), 2, to_samples(msaa));
+  if (!target) return fail(target.error().message);
+  const std::vector<const model::ModelAsset*> models = st.model_list();
+  auto renderer = render::ModelRenderer::create(**context, **target, models);
+  if (!renderer) return fail(renderer.error().message);
+
+  std::unique_ptr<VideoPipe> video;
+  if (*kind == OutputKind::video) {
+    auto opened = VideoPipe::open(o.output, static_cast<std::uint32_t>(width),
+                                  static_cast<std::uint32_t>(height), fps);
+    if (!opened) return fail(opened.error().message);
+    video = std::move(*opened);
+  } else if (*kind == OutputKind::folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.output, ec);
+    if (ec) return fail(o.output.string() + ": cannot create the folder (" + ec.message() + ")");
+  }
+
+  const scene::Color& bg = scene->output.background;
+  const render::ClearColor clear{static_cast<float>(bg.r), static_cast<float>(bg.g),
+                                 static_cast<float>(bg.b), 1.0f};
+  const render::Lighting lighting = stage::lighting_of(st);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  std::vector<render::ModelInstance> instances;
+  std::vector<std::uint8_t> rgba;
+  Progress progress(err, range.end - range.first, o.progress && o.still.empty());
+
+  // Frame k is rendered while frame k - 1 is read back and written (the target's 2-slot ring).
+  std::uint64_t pending_id = 0;
+  std::int64_t pending_frame = -1;
+  auto flush = [&]() -> Status {
+    if (pending_frame < 0) return Status::success();
+    if (Status s = (*target)->read_pixels(pending_id, rgba); !s) return s;
+    if (o.validate && (*context)->validation_log()->size() > 0) {
+      return Error{"Vulkan validation: " + (*context)->validation_log()->messages().front()};
+    }
+    Status written;
+    if (*kind == OutputKind::video) {
+      written = video->write(rgba);
+    } else {
+      std::filesystem::path file = o.output;
+      if (*kind == OutputKind::folder) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%06lld.png", static_cast<long long>(pending_frame));
+        file /= name;
+      }
+      written = image::write_png(file, rgba, static_cast<std::uint32_t>(width),
+                                 static_cast<std::uint32_t>(height));
+    }
+    if (!written) return written;
+    progress.frame_done(pending_frame - range.first + 1);
+    pending_frame = -1;
+    return Status::success();
+  };
+  for (std::int64_t k = range.first; k < range.end; ++k) {
+    const double t =
+        o.still.empty() ? frame_time(st.start_s, fps, k) : std::strtod(o.still.c_str(), nullptr);
+    stage::evaluate_stage(st, t);
+    stage::collect_instances(st, instances);
+    auto frame = (*target)->begin_frame();
+    if (!frame) return fail(frame.error().message);
+    if (Status s = (*renderer)->record(*frame, **target, instances, stage::camera_at(st, t, aspect),
+                                       lighting, clear);
+        !s) {
+      return fail(s.error().message);
+    }
+    auto id = (*target)->end_frame();
+    if (!id) return fail(id.error().message);
+    if (Status s = flush(); !s) return fail(s.error().message);
+    pending_id = *id;
+    pending_frame = k;
+  }
+  if (Status s = flush(); !s) return fail(s.error().message);
+  if (video) {
+    if (Status s = video->finish(); !s) return fail(s.error().message);
+  }
+  for (const std::string& note : st.notes) err << "note: " << note << "\n";
+  out << "render: wrote " << o.output.string() << " (" << (range.end - range.first) << " frame"
+      << (range.end - range.first == 1 ? "" : "s") << ", " << width << "x" << height << ", " << fps
+      << " fps)\n";
+  return kExitOk;
+}
+
+}  // namespace tutti::app

@@ -1,0 +1,30 @@
+#pragma once
+// `tutti render SCENE -o OUT.mp4|OUT.png|FOLDER/` — an offline render of a scene (the scene's
+// cameras, shot list, lights and output settings) on the Vulkan device (lavapipe when there is no
+// GPU). Frame k shows t = start + k / fps exactly, so a slice (--frames A:B) has the pixels the
+// full render has for those frames: long renders can be split across machines.
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+
+namespace tutti::app {
+
+struct RenderOptions {
+  std::filesystem::path scene;
+  std::filesystem::path output;  // .mp4 (H.264, yuv420p, via ffmpeg), .png (--still), or a folder
+  std::string size;              // "WxH", default: the scene's output size
+  int fps = 0;                   // 0 = the scene's
+  int msaa = 0;                  // 0 = the scene's
+  std::string frames;            // "A:B": frames A (inclusive) to B (exclusive)
+  std::string seconds;           // "A:B": the frames whose times fall in [A, B)
+  std::string still;             // a time in seconds: one frame to a PNG
+  std::string device;            // Vulkan device selector (index or name part)
+  std::filesystem::path assets;  // folder of the generated .glb files (default: the build's)
+  bool validate = false;         // run with the Vulkan validation layer; any message fails
+  bool progress = true;          // progress on stderr
+};
+
+int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace tutti::app

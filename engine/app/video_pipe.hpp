@@ -1,0 +1,41 @@
+#pragma once
+// Encodes RGBA frames to H.264 (yuv420p, MP4) by piping them into Debian's ffmpeg; no shell is
+// involved (fork + exec with an argument vector), so any file name is safe. x264 is deterministic:
+// the same frames give the same file.
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+
+#include "core/result.hpp"
+
+namespace tutti::app {
+
+class VideoPipe {
+ public:
+  // Starts `ffmpeg` (from PATH) writing `path`. An error when ffmpeg cannot be started.
+  static Result<std::unique_ptr<VideoPipe>> open(const std::filesystem::path& path,
+                                                 std::uint32_t width, std::uint32_t height,
+                                                 int fps);
+  ~VideoPipe();
+  VideoPipe(const VideoPipe&) = delete;
+  VideoPipe& operator=(const VideoPipe&) = delete;
+
+  // width * height * 4 bytes, top row first.
+  Status write(std::span<const std::uint8_t> rgba);
+  // Closes the pipe and waits: an error when ffmpeg failed (its last message is included).
+  Status finish();
+
+ private:
+  VideoPipe() = default;
+  std::filesystem::path path_;
+  int fd_ = -1;
+  pid_t pid_ = -1;
+  std::filesystem::path log_;
+};
+
+}  // namespace tutti::app

@@ -1,0 +1,35 @@
+#pragma once
+// Parsing a glTF file's container and JSON with tinygltf, hardened against hostile input before
+// tinygltf sees it: the .glb chunk layout is checked here (tinygltf 2.7 trusts the BIN chunk's
+// length by 8 bytes too many), the JSON is pre-scanned by a SAX pass (nesting depth, value
+// count: tinygltf converts `extras` recursively and allocates far more per value than the
+// text), images are never decoded and never read from disk, and external buffers are read only
+// from the folder given, through the project's capped file reads.
+//
+// Internal to tutti_model: the loader turns the tinygltf::Model into a ModelAsset.
+
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "core/result.hpp"
+
+namespace tutti::model::detail {
+
+inline constexpr std::size_t kMaxJsonDepth = 64;
+inline constexpr std::size_t kMaxJsonValues = 2'000'000;
+// A model file (and each external buffer) is read up to this size.
+inline constexpr std::size_t kMaxModelFileBytes = std::size_t{256} << 20;
+
+// `base_dir`: where external buffers of a .gltf are looked for; nullopt = external files are
+// refused (bytes from memory, the fuzzer). The error is a reason without the file name.
+Result<tinygltf::Model> parse_gltf(std::span<const std::uint8_t> bytes,
+                                   const std::optional<std::string>& base_dir);
+
+// tinygltf's multi-line error and warning text as one short printable line.
+std::string fold_message(const std::string& text);
+
+}  // namespace tutti::model::detail

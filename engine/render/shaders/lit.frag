@@ -1,0 +1,98 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Metallic-roughness shading: a shadowed key light, a fill light, hemisphere ambient with a
+// cheap specular term, filmic tone mapping. Writes linear light; the sRGB attachment encodes it.
+#include "frame_data.glsl"
+
+layout(set = 0, binding = 4) uniform sampler2DShadow shadow_map;
+
+layout(location = 0) in vec3 in_world_position;
+layout(location = 1) in vec3 in_world_normal;
+layout(location = 0) out vec4 out_color;
+
+const float PI = 3.14159265;
+
+float distribution_ggx(float n_dot_h, float alpha) {
+  float a2 = alpha * alpha;
+  float d = n_dot_h * n_dot_h * (a2 - 1.0) + 1.0;
+  return a2 / (PI * d * d);
+}
+
+float visibility_smith(float n_dot_v, float n_dot_l, float alpha) {
+  float k = alpha * 0.5;
+  return 0.25 / ((n_dot_v * (1.0 - k) + k) * (n_dot_l * (1.0 - k) + k));
+}
+
+vec3 fresnel_schlick(float cos_theta, vec3 f0) {
+  return f0 + (1.0 - f0) * pow(1.0 - cos_theta, 5.0);
+}
+
+vec3 direct_light(vec3 n, vec3 v, vec3 l, vec3 radiance, vec3 albedo, float metallic,
+                  float roughness) {
+  float n_dot_l = max(dot(n, l), 0.0);
+  if (n_dot_l <= 0.0) return vec3(0.0);
+  vec3 h = normalize(v + l);
+  float n_dot_v = max(dot(n, v), 1e-4);
+  float alpha = roughness * roughness;
+  vec3 f0 = mix(vec3(0.04), albedo, metallic);
+  vec3 f = fresnel_schlick(max(dot(h, v), 0.0), f0);
+  vec3 specular = f * distribution_ggx(max(dot(n, h), 0.0), alpha) *
+                  visibility_smith(n_dot_v, n_dot_l, alpha);
+  vec3 diffuse = (1.0 - f) * (1.0 - metallic) * albedo / PI;
+  return (diffuse + specular) * radiance * n_dot_l;
+}
+
+// 3x3 taps of the hardware 2x2 comparison filter: soft, stable edges.
+float key_shadow(vec3 world_position, vec3 n) {
+  vec3 l = -frame.key_direction.xyz;
+  // Normal offset keeps grazing surfaces from shadowing themselves.
+  float texel = frame.key_color.w;
+  vec3 offset_position = world_position + n * (texel * 1.5);
+  vec4 clip = frame.light_view_projection * vec4(offset_position, 1.0);
+  vec3 coords = clip.xyz / clip.w;
+  vec2 uv = coords.xy * 0.5 + 0.5;
+  if (uv.x <= 0.0 || uv.x >= 1.0 || uv.y <= 0.0 || uv.y >= 1.0 || coords.z >= 1.0) return 1.0;
+  float bias = frame.key_direction.w * (1.0 + 2.0 * (1.0 - max(dot(n, l), 0.0)));
+  float lit = 0.0;
+  vec2 step_uv = vec2(1.0) / vec2(textureSize(shadow_map, 0));
+  for (int y = -1; y <= 1; ++y) {
+    for (int x = -1; x <= 1; ++x) {
+      lit += texture(shadow_map, vec3(uv + vec2(x, y) * step_uv, coords.z - bias));
+    }
+  }
+  return lit / 9.0;
+}
+
+// Narkowicz's fit of the ACES filmic curve.
+vec3 tone_map(vec3 x) {
+  return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+void main() {
+  vec3 n = normalize(in_world_normal);
+  // Nothing is culled (mirrored nodes flip the winding), so a back face is shaded as the
+  // side of the surface the camera sees.
+  if (!gl_FrontFacing) n = -n;
+  vec3 v = normalize(frame.camera_position.xyz - in_world_position);
+
+  vec3 albedo = draw.base_color.rgb;
+  float metallic = clamp(draw.material.x, 0.0, 1.0);
+  float roughness = clamp(draw.material.y, 0.045, 1.0);
+
+  vec3 color = direct_light(n, v, -frame.key_direction.xyz, frame.key_color.rgb, albedo, metallic,
+                            roughness) *
+               key_shadow(in_world_position, n);
+  color += direct_light(n, v, -frame.fill_direction.xyz, frame.fill_color.rgb, albedo, metallic,
+                        roughness);
+
+  float up = n.y * 0.5 + 0.5;
+  vec3 ambient = mix(frame.ground_color.rgb, frame.sky_color.rgb, up);
+  vec3 f0 = mix(vec3(0.04), albedo, metallic);
+  vec3 r = reflect(-v, n);
+  vec3 reflected = mix(frame.ground_color.rgb, frame.sky_color.rgb, r.y * 0.5 + 0.5);
+  vec3 f = fresnel_schlick(max(dot(n, v), 0.0), f0) * (1.0 - roughness * 0.7);
+  color += ambient * albedo * (1.0 - metallic) + reflected * f * 2.0;
+  color += draw.emissive.rgb;
+
+  out_color = vec4(tone_map(color * frame.sky_color.w), 1.0);
+}

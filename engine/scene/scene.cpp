@@ -1,0 +1,40 @@
+#include "scene/scene.hpp"
+
+#include <algorithm>
+
+namespace tutti::scene {
+
+std::size_t Scene::shot_at(double t_s) const {
+  // The first shot starting after t_s; the one before it is on screen.
+  const auto after = std::upper_bound(shots.begin(), shots.end(), t_s,
+                                      [](double t, const Shot& shot) { return t < shot.start_s; });
+  if (after == shots.begin()) return 0;
+  return static_cast<std::size_t>(after - shots.begin()) - 1;
+}
+
+int Scene::find_camera(std::string_view name) const {
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    if (cameras[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::uint64_t derive_seed(std::uint64_t scene_seed, std::uint64_t stream) {
+  // splitmix64 (Steele, Lea, Flood 2014) of the scene seed advanced by `stream` + 1 steps.
+  std::uint64_t z = scene_seed + (stream + 1) * 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+std::string_view stance_name(Stance stance) {
+  switch (stance) {
+    case Stance::standing:
+      return "standing";
+    case Stance::seated:
+      return "seated";
+  }
+  return "standing";
+}
+
+}  // namespace tutti::scene

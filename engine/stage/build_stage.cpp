@@ -1,0 +1,474 @@
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <glm/gtc/matrix_transform.hpp>
+#include <optional>
+
+#include "brass_model/instrument.hpp"
+#include "brass_motion/brass_motion_params.hpp"
+#include "brass_motion/brass_pose_system.hpp"
+#include "brass_motion/breath_params.hpp"
+#include "brass_motion/plan_brass_player.hpp"
+#include "components/breath.hpp"
+#include "components/finger.hpp"
+#include "components/hand.hpp"
+#include "components/instrument.hpp"
+#include "components/mouth.hpp"
+#include "components/performer.hpp"
+#include "components/slide.hpp"
+#include "components/valve.hpp"
+#include "content/content_dir.hpp"
+#include "finger_motion/finger_motion_params.hpp"
+#include "finger_motion/finger_pose_system.hpp"
+#include "finger_motion/plan_finger_motion.hpp"
+#include "fingering_planner/brass_lines.hpp"
+#include "fingering_planner/brass_planner.hpp"
+#include "fingering_planner/fingering_model.hpp"
+#include "music/load_score.hpp"
+#include "piano_performance/performance_plan.hpp"
+#include "scene/asset_mapping.hpp"
+#include "scene/load_scene.hpp"
+#include "stage/stage.hpp"
+
+#ifndef TUTTI_DEFAULT_ASSET_DIR
+#define TUTTI_DEFAULT_ASSET_DIR ""
+#endif
+
+namespace tutti::stage {
+namespace {
+
+glm::mat4 placement_matrix(const scene::Vec3& position, double facing_deg) {
+  glm::mat4 m = glm::translate(
+      glm::mat4(1.0f), glm::vec3(static_cast<float>(position.x), static_cast<float>(position.y),
+                                 static_cast<float>(position.z)));
+  return glm::rotate(m, glm::radians(static_cast<float>(facing_deg)), glm::vec3(0, 1, 0));
+}
+
+class ModelCache {
+ public:
+  ModelCache(Stage& stage, std::filesystem::path dir) : stage_(stage), dir_(std::move(dir)) {}
+
+  // A generated asset, by file name in the asset folder.
+  Result<std::uint32_t> get(const std::string& file) { return load(dir_ / file, true); }
+  // A user's model (from a mapping file), by path.
+  Result<std::uint32_t> get_user(const std::filesystem::path& path) { return load(path, false); }
+
+  Result<std::uint32_t> load(const std::filesystem::path& path, bool generated) {
+    const std::string file = path.string();
+    for (std::size_t i = 0; i < names_.size(); ++i) {
+      if (names_[i] == file) return static_cast<std::uint32_t>(i);
+    }
+    Result<model::ModelAsset> loaded = model::load_model(path);
+    if (!loaded) {
+      if (!generated) return loaded.error();
+      return Error{loaded.error().message +
+                   " (the generated assets; build the tutti_content_assets target or set "
+                   "TUTTI_ASSET_DIR)"};
+    }
+    stage_.models.push_back(std::make_unique<model::ModelAsset>(std::move(*loaded)));
+    names_.push_back(file);
+    return static_cast<std::uint32_t>(names_.size() - 1);
+  }
+
+  const std::filesystem::path& dir() const { return dir_; }
+
+  std::size_t place(std::uint32_t model, const glm::mat4& root) {
+    PlacedModel placed;
+    placed.model = model;
+    placed.root = root;
+    placed.pose = model::rest_pose(*stage_.models[model]);
+    stage_.placed.push_back(std::move(placed));
+    return stage_.placed.size() - 1;
+  }
+
+ private:
+  Stage& stage_;
+  std::filesystem::path dir_;
+  std::vector<std::string> names_;
+};
+
+// A model and how tutti finds its parts: the generated asset (roles are node names) or a user's
+// model through a mapping file (roles → the user's node and morph names, plus the transform into
+// metres, +Y up, facing +Z).
+struct MappedModel {
+  std::uint32_t model = 0;
+  glm::mat4 correction{1.0f};
+  std::optional<scene::AssetMapping> mapping;
+
+  std::string node_name(std::string_view role) const {
+    return mapping ? std::string(mapping->node(role)) : std::string(role);
+  }
+  std::string morph_name(std::string_view role) const {
+    return mapping ? std::string(mapping->morph(role)) : std::string(role);
+  }
+};
+
+glm::mat4 mapping_correction(const scene::AssetMapping& mapping) {
+  const auto f = [](double v) { return static_cast<float>(v); };
+  glm::mat4 m = glm::translate(glm::mat4(1.0f),
+                               glm::vec3(f(mapping.translation_m.x), f(mapping.translation_m.y),
+                                         f(mapping.translation_m.z)));
+  m = glm::rotate(m, glm::radians(f(mapping.rotation_deg.z)), glm::vec3(0, 0, 1));
+  m = glm::rotate(m, glm::radians(f(mapping.rotation_deg.y)), glm::vec3(0, 1, 0));
+  m = glm::rotate(m, glm::radians(f(mapping.rotation_deg.x)), glm::vec3(1, 0, 0));
+  return glm::scale(m, glm::vec3(f(mapping.scale)));
+}
+
+Result<MappedModel> load_mapped(ModelCache& cache, const std::filesystem::path& mapping_file,
+                                const std::string& generated_file) {
+  MappedModel out;
+  if (mapping_file.empty()) {
+    auto model = cache.get(generated_file);
+    if (!model) return model.error();
+    out.model = *model;
+    return out;
+  }
+  auto mapping = scene::load_asset_mapping(mapping_file);
+  if (!mapping) return mapping.error();
+  auto model = cache.get_user(mapping->model);
+  if (!model) return model.error();
+  out.model = *model;
+  out.correction = mapping_correction(*mapping);
+  out.mapping = std::move(*mapping);
+  return out;
+}
+
+// The node playing `role`: -1 when unmapped; an error when the mapping names a node the model
+// lacks.
+Result<int> find_role(const Stage& stage, const MappedModel& m, std::string_view role) {
+  const std::string name = m.node_name(role);
+  if (name.empty()) return -1;
+  const int node = stage.models[m.model]->find_node(name);
+  if (node < 0 && m.mapping) {
+    return Error{m.mapping->source + ": node \"" + name + "\" for \"" + std::string(role) +
+                 "\" is not in " + m.mapping->model.filename().string()};
+  }
+  return node;
+}
+
+// Direction `tutti_direction` (model frame after the correction) in the local frame of `node`'s
+// parent at rest, so a translation along it moves the node that way whatever the user's axes.
+glm::vec3 local_axis(const model::ModelAsset& asset, int node, const glm::mat4& correction,
+                     const glm::vec3& tutti_direction) {
+  if (node < 0) return tutti_direction;
+  std::vector<glm::mat4> world(asset.nodes.size());
+  model::compute_world_matrices(asset, model::rest_pose(asset), correction, world);
+  const int parent = asset.nodes[static_cast<std::size_t>(node)].parent;
+  const glm::mat3 frame =
+      parent >= 0 ? glm::mat3(world[static_cast<std::size_t>(parent)]) : glm::mat3(correction);
+  return glm::inverse(frame) * tutti_direction;
+}
+
+int morph_index(const model::ModelAsset& asset, const std::string& name) {
+  if (name.empty()) return -1;
+  std::size_t base = 0;
+  for (const model::Mesh& mesh : asset.meshes) {
+    for (std::size_t k = 0; k < mesh.target_names.size(); ++k) {
+      if (mesh.target_names[k] == name) return static_cast<int>(base + k);
+    }
+    base += mesh.target_names.size();
+  }
+  return -1;
+}
+
+Result<BodyNodes> find_body_nodes(const Stage& stage, const MappedModel& body) {
+  BodyNodes n;
+  int* const slots[] = {&n.hips,         &n.spine,           &n.chest,           &n.neck,
+                        &n.head,         &n.mouth,           &n.arm_left.upper,  &n.arm_left.lower,
+                        &n.arm_left.end, &n.arm_right.upper, &n.arm_right.lower, &n.arm_right.end,
+                        &n.thigh_left,   &n.thigh_right,     &n.shin_left,       &n.shin_right,
+                        &n.grip_left,    &n.grip_right};
+  const char* const roles[] = {"hips",      "spine",       "chest",     "neck",    "head",
+                               "mouth",     "upper_arm_l", "forearm_l", "hand_l",  "upper_arm_r",
+                               "forearm_r", "hand_r",      "thigh_l",   "thigh_r", "shin_l",
+                               "shin_r",    "grip_l",      "grip_r"};
+  for (std::size_t i = 0; i < std::size(roles); ++i) {
+    auto node = find_role(stage, body, roles[i]);
+    if (!node) return node.error();
+    *slots[i] = *node;
+  }
+  const model::ModelAsset& asset = *stage.models[body.model];
+  n.morph_tension = morph_index(asset, body.morph_name("tension"));
+  n.morph_open = morph_index(asset, body.morph_name("open"));
+  n.mapped = body.mapping.has_value();
+  return n;
+}
+
+double extra_number(const model::ModelAsset&, int, const char*, double fallback) {
+  // Node extras are not kept by the loader yet; the generator's defaults are used.
+  return fallback;
+}
+
+Status build_brass(Stage& stage, ModelCache& cache) {
+  if (stage.scene.performers.empty()) return Status::success();
+  auto weights = brass::load_planner_weights();
+  if (!weights) return weights.error();
+  auto motion = brass::load_brass_motion_params();
+  if (!motion) return motion.error();
+  auto breath = brass::load_breath_params();
+  if (!breath) return breath.error();
+  // The performer rig is not generated yet (content/generator/README.md): until it is, players
+  // are their instruments at mouth height.
+  const bool rig_generated = std::filesystem::exists(cache.dir() / "performer.glb");
+  auto stand_model = cache.get("music_stand.glb");
+  if (!stand_model) return stand_model.error();
+  auto chair_model = cache.get("chair.glb");
+  if (!chair_model) return chair_model.error();
+
+  for (const scene::Performer& performer : stage.scene.performers) {
+    const music::Score& score = stage.scores[performer.music_file];
+    auto instrument = brass::load_instrument_by_id(performer.instrument);
+    if (!instrument) return instrument.error();
+    // The lines point at their instrument: it lives as long as the stage.
+    stage.instruments.push_back(std::make_shared<const brass::Instrument>(std::move(*instrument)));
+    const brass::Instrument& played = *stage.instruments.back();
+    const int part = scene::find_part(score, performer.part);
+    if (part < 0) {
+      return Error{stage.scene.source + ": performer \"" + performer.name + "\": no part \"" +
+                   performer.part + "\" in " +
+                   stage.scene.music[performer.music_file].filename().string()};
+    }
+    auto line = brass::extract_line(score, part, performer.voice - 1, played);
+    if (!line)
+      return Error{stage.scene.source + ": performer \"" + performer.name +
+                   "\": " + line.error().message};
+    const brass::BrassPlanSummary summary = brass::plan_line(*line, *weights, &score);
+    for (const brass::BrassDiagnostic& d : summary.diagnostics) {
+      stage.notes.push_back(performer.name + ": " + d.message);
+    }
+    auto player = std::make_shared<brass::BrassPlayerMotion>(
+        brass::plan_brass_player(*line, score, *motion, *breath, weights->change));
+
+    BrassSeat seat;
+    seat.name = performer.name;
+    seat.trombone = played.mechanism == brass::Mechanism::slide;
+    seat.seated = performer.stance == scene::Stance::seated;
+    seat.placement = placement_matrix(performer.position_m, performer.facing_deg);
+    seat.performer = stage.world.create();
+    stage.world.add<components::Performer>(seat.performer,
+                                           components::Performer{performer.name, performer.seed});
+    stage.world.add<brass::BrassPlayerMotionHandle>(seat.performer,
+                                                    brass::BrassPlayerMotionHandle{player});
+    stage.world.add<components::Mouth>(seat.performer);
+    stage.world.add<components::Breath>(seat.performer);
+    seat.instrument = stage.world.create();
+    stage.world.add<components::Instrument>(seat.instrument,
+                                            components::Instrument{played.id, seat.performer});
+    if (seat.trombone) {
+      stage.world.add<components::Slide>(seat.instrument);
+    } else {
+      components::Valve valve;
+      valve.count = static_cast<std::uint8_t>(std::min<std::size_t>(played.valves.size(), 6));
+      stage.world.add<components::Valve>(seat.instrument, valve);
+    }
+
+    auto horn = load_mapped(cache, performer.instrument_mapping,
+                            seat.trombone ? "trombone.glb" : "trumpet.glb");
+    if (!horn) return horn.error();
+    if (rig_generated || !performer.character_mapping.empty()) {
+      auto body = load_mapped(cache, performer.character_mapping, "performer.glb");
+      if (!body) return body.error();
+      seat.body = cache.place(body->model, seat.placement * body->correction);
+      auto nodes = find_body_nodes(stage, *body);
+      if (!nodes) return nodes.error();
+      seat.body_nodes = *nodes;
+    }
+    seat.horn = cache.place(horn->model, seat.placement);
+    seat.horn_correction = horn->correction;
+    const model::ModelAsset& horn_asset = *stage.models[horn->model];
+    for (std::size_t v = 0; v < 3; ++v) {
+      auto node = find_role(stage, *horn, "valve_" + std::to_string(v + 1));
+      if (!node) return node.error();
+      seat.valves[v] = *node;
+      seat.valve_axis[v] = local_axis(horn_asset, *node, horn->correction, {0, -1, 0});
+      seat.valve_travel_m[v] = extra_number(horn_asset, *node, "travel_mm", 18.0) / 1000.0;
+    }
+    for (auto [slot, role] : {std::pair{&seat.slide, "slide"},
+                              {&seat.mouthpiece, "mouthpiece"},
+                              {&seat.grip_left, "grip_left"},
+                              {&seat.grip_right, "grip_right"}}) {
+      auto node = find_role(stage, *horn, role);
+      if (!node) return node.error();
+      *slot = *node;
+    }
+    seat.slide_axis = local_axis(horn_asset, seat.slide, horn->correction, {0, 0, -1});
+    if (performer.music_stand) {
+      // The stand 0.75 m in front of the player, desk toward them.
+      const glm::mat4 stand = glm::rotate(glm::translate(seat.placement, glm::vec3(0, 0, 0.75f)),
+                                          glm::radians(180.0f), glm::vec3(0, 1, 0));
+      cache.place(*stand_model, stand);
+    }
+    if (seat.seated) {
+      cache.place(*chair_model, glm::translate(seat.placement, glm::vec3(0, 0, -0.12f)));
+    }
+    stage.brass.push_back(seat);
+  }
+  brass::register_brass_motion(stage.schedule);
+  return Status::success();
+}
+
+Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::path& content_dir) {
+  if (!stage.scene.pianist) return Status::success();
+  const scene::Pianist& pianist = *stage.scene.pianist;
+  if (!pianist.hands_mapping.empty() || !pianist.character_mapping.empty()) {
+    return Error{stage.scene.source +
+                 ": pianist: user hand and character models are not "
+                 "supported yet (the brass players' are); remove \"hands\" / \"character\""};
+  }
+  const music::Score& full = stage.scores[pianist.music_file];
+  // Only the parts the pianist plays.
+  music::Score score = full;
+  std::vector<bool> played(full.parts.size(), false);
+  for (const std::string& name : pianist.parts) {
+    const int part = scene::find_part(full, name);
+    if (part < 0) {
+      return Error{stage.scene.source + ": pianist: no part \"" + name + "\" in " +
+                   stage.scene.music[pianist.music_file].filename().string()};
+    }
+    played[static_cast<std::size_t>(part)] = true;
+  }
+  score.notes.clear();
+  for (const music::Note& note : full.notes) {
+    if (played[static_cast<std::size_t>(note.part)]) score.notes.push_back(note);
+  }
+  auto model = piano::load_fingering_model("default", pianist.hand_size, content_dir);
+  if (!model) return model.error();
+  auto performance = performance::plan_performance(score, *model);
+  if (!performance) return performance.error();
+  for (const performance::HandReport* hand :
+       {&performance->report.right, &performance->report.left}) {
+    if (!hand->path_error.empty()) stage.notes.push_back("pianist: " + hand->path_error);
+  }
+  auto params = finger_motion::load_finger_motion_params(
+      finger_motion::finger_motion_params_path(content_dir));
+  if (!params) return params.error();
+  auto fingers = finger_motion::plan_finger_motion(score, performance->fingering,
+                                                   performance->right_path, performance->left_path,
+                                                   model->keyboard, model->hand, *params);
+  if (!fingers) return fingers.error();
+  auto motion = std::make_shared<finger_motion::PianistMotion>();
+  motion->fingers = std::move(*fingers);
+  motion->right_path = std::move(performance->right_path);
+  motion->left_path = std::move(performance->left_path);
+
+  auto seat = std::make_unique<PianistSeat>();
+  seat->pianist = stage.world.create();
+  stage.world.add<components::Performer>(seat->pianist,
+                                         components::Performer{"pianist", pianist.seed});
+  stage.world.add<finger_motion::PianistMotionHandle>(seat->pianist,
+                                                      finger_motion::PianistMotionHandle{motion});
+  for (int side = 0; side < 2; ++side) {
+    const auto hand_side = side == 0 ? components::HandSide::right : components::HandSide::left;
+    const ecs::Entity hand = stage.world.create();
+    components::Hand hand_value;
+    hand_value.side = hand_side;
+    hand_value.performer = seat->pianist;
+    stage.world.add<components::Hand>(hand, hand_value);
+    seat->hands[static_cast<std::size_t>(side)] = hand;
+    for (int f = 0; f < 5; ++f) {
+      const ecs::Entity finger = stage.world.create();
+      components::Finger finger_value;
+      finger_value.hand = hand;
+      finger_value.side = hand_side;
+      finger_value.finger = f + 1;
+      stage.world.add<components::Finger>(finger, finger_value);
+      seat->fingers[static_cast<std::size_t>(side)][static_cast<std::size_t>(f)] = finger;
+    }
+  }
+  finger_motion::register_finger_motion(stage.schedule);
+
+  auto piano_model = cache.get("piano.glb");
+  if (!piano_model) return piano_model.error();
+  seat->piano = cache.place(*piano_model, glm::mat4(1.0f));
+  const model::ModelAsset& piano = *stage.models[*piano_model];
+  seat->key_nodes.fill(-1);
+  seat->key_dip_rad.fill(0.0);
+  for (int key = 0; key < 128; ++key) {
+    seat->key_nodes[static_cast<std::size_t>(key)] = piano.find_node("key_" + std::to_string(key));
+    // 10 mm at the front of the key: 150 mm from the pivot for white keys, 95 mm for black.
+    const bool black = model->keyboard.contains(key) && model->keyboard.is_black(key);
+    seat->key_dip_rad[static_cast<std::size_t>(key)] = std::atan(10.0 / (black ? 95.0 : 150.0));
+  }
+  {
+    std::vector<glm::mat4> world(piano.nodes.size());
+    model::compute_world_matrices(piano, stage.placed[seat->piano].pose, glm::mat4(1.0f), world);
+    const int keyboard = piano.find_node("keyboard");
+    if (keyboard >= 0) seat->keyboard_to_world = world[static_cast<std::size_t>(keyboard)];
+  }
+  const char* finger_names[5] = {"thumb", "index", "middle", "ring", "little"};
+  for (int side = 0; side < 2; ++side) {
+    auto hand_model = cache.get(side == 0 ? "hand_right.glb" : "hand_left.glb");
+    if (!hand_model) return hand_model.error();
+    seat->hand_models[static_cast<std::size_t>(side)] = cache.place(*hand_model, glm::mat4(1.0f));
+    const model::ModelAsset& hand = *stage.models[*hand_model];
+    seat->hand_root[static_cast<std::size_t>(side)] = hand.roots.empty() ? -1 : hand.roots[0];
+    for (int f = 0; f < 5; ++f) {
+      for (int s = 0; s < 3; ++s) {
+        seat->finger_bones[static_cast<std::size_t>(side)][static_cast<std::size_t>(f)]
+                          [static_cast<std::size_t>(s)] = hand.find_node(
+            std::string(finger_names[f]) + "_" + std::to_string(s + 1) + (side == 0 ? "_r" : "_l"));
+      }
+    }
+  }
+  auto chair_model = cache.get("chair.glb");
+  if (!chair_model) return chair_model.error();
+  // The chair's front (+Z) toward the keys, like the pianist.
+  const glm::mat4 bench = placement_matrix(pianist.position_m, pianist.facing_deg);
+  cache.place(*chair_model, bench);
+  if (std::filesystem::exists(cache.dir() / "performer.glb")) {
+    auto body = load_mapped(cache, {}, "performer.glb");
+    if (!body) return body.error();
+    seat->body = cache.place(body->model, bench);
+    auto nodes = find_body_nodes(stage, *body);
+    if (!nodes) return nodes.error();
+    seat->body_nodes = *nodes;
+    for (int side = 0; side < 2; ++side) {
+      auto hand = find_role(stage, *body, side == 0 ? "hand_r" : "hand_l");
+      if (!hand) return hand.error();
+      seat->rig_hands[static_cast<std::size_t>(side)] = *hand;
+    }
+  }
+  stage.pianist = std::move(seat);
+  return Status::success();
+}
+
+}  // namespace
+
+std::filesystem::path default_asset_dir() {
+  if (const char* dir = std::getenv("TUTTI_ASSET_DIR"); dir != nullptr && *dir != '\0') {
+    return dir;
+  }
+  return TUTTI_DEFAULT_ASSET_DIR;
+}
+
+std::vector<const model::ModelAsset*> Stage::model_list() const {
+  std::vector<const model::ModelAsset*> list;
+  for (const auto& m : models) list.push_back(m.get());
+  return list;
+}
+
+Result<std::unique_ptr<Stage>> build_stage(const scene::Scene& scene, const StageOptions& options) {
+  auto stage = std::make_unique<Stage>();
+  stage->scene = scene;
+  const std::filesystem::path content_dir =
+      options.content_dir.empty() ? content::default_content_dir() : options.content_dir;
+  double music_end = 0.0;
+  for (const std::filesystem::path& file : scene.music) {
+    auto score = music::load_score(file);
+    if (!score) return score.error();
+    music_end = std::max(music_end, score->duration_s());
+    stage->scores.push_back(std::move(*score));
+  }
+  ModelCache cache(*stage, options.asset_dir.empty() ? default_asset_dir() : options.asset_dir);
+  auto floor = cache.get("stage.glb");
+  if (!floor) return floor.error();
+  cache.place(*floor, glm::mat4(1.0f));
+  if (Status s = build_brass(*stage, cache); !s) return s.error();
+  if (Status s = build_pianist(*stage, cache, content_dir); !s) return s.error();
+  stage->start_s = scene.output.start_s;
+  stage->end_s = scene.output.end_s ? *scene.output.end_s : music_end + 1.0;
+  return stage;
+}
+
+}  // namespace tutti::stage

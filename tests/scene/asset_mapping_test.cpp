@@ -1,0 +1,144 @@
+#include "scene/asset_mapping.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "scene_test_support.hpp"
+
+namespace tutti::scene {
+namespace {
+
+using nlohmann::json;
+using test::scenes_dir;
+using test::ScratchDir;
+
+bool has(std::span<const std::string_view> roles, std::string_view role) {
+  return std::find(roles.begin(), roles.end(), role) != roles.end();
+}
+
+TEST(AssetMappingRoles, TheDocumentedNames) {
+  const auto character = node_roles(AssetKind::character);
+  EXPECT_EQ(character.size(), 19u + 30u + 3u);
+  EXPECT_EQ(character.front(), "hips");
+  for (const char* role :
+       {"spine", "chest", "neck", "head", "shoulder_l", "upper_arm_r", "forearm_l", "hand_r",
+        "thigh_l", "shin_r", "foot_l", "thumb_1_l", "index_2_l", "middle_3_r", "ring_1_r",
+        "little_3_r", "mouth", "grip_l", "grip_r"}) {
+    EXPECT_TRUE(has(character, role)) << role;
+  }
+  EXPECT_FALSE(has(character, "little_4_r"));
+  EXPECT_EQ(node_roles(AssetKind::trumpet).size(), 6u);
+  EXPECT_TRUE(has(node_roles(AssetKind::trumpet), "valve_3"));
+  EXPECT_EQ(node_roles(AssetKind::trombone).size(), 5u);
+  EXPECT_TRUE(has(node_roles(AssetKind::trombone), "bell_section"));
+  EXPECT_EQ(node_roles(AssetKind::hand).size(), 4u + 30u);
+  EXPECT_EQ(required_node_roles(AssetKind::hand).size(), 2u + 30u);
+  EXPECT_EQ(morph_roles(AssetKind::character).size(), 2u);
+  EXPECT_TRUE(morph_roles(AssetKind::trumpet).empty());
+  for (AssetKind kind :
+       {AssetKind::character, AssetKind::hand, AssetKind::trumpet, AssetKind::trombone}) {
+    for (std::string_view role : required_node_roles(kind)) {
+      EXPECT_TRUE(has(node_roles(kind), role)) << role;
+    }
+  }
+}
+
+TEST(AssetMapping, TheExampleLoads) {
+  const auto path = scenes_dir() / "examples/mixamo_character.mapping.json";
+  auto mapping = load_asset_mapping(path);
+  ASSERT_TRUE(mapping.ok()) << mapping.error().message;
+  EXPECT_EQ(mapping->source, "mixamo_character.mapping.json");
+  EXPECT_EQ(mapping->kind, AssetKind::character);
+  EXPECT_EQ(mapping->model, scenes_dir() / "examples/mixamo_character.glb");
+  EXPECT_DOUBLE_EQ(mapping->scale, 0.01);
+  EXPECT_EQ(mapping->node("hips"), "mixamorig:Hips");
+  EXPECT_EQ(mapping->node("little_3_r"), "mixamorig:RightHandPinky3");
+  EXPECT_EQ(mapping->node("grip_l"), "");  // left out in the example
+  EXPECT_EQ(mapping->morph("open"), "jawOpen");
+  EXPECT_EQ(mapping->nodes.size(), 19u + 30u + 1u);
+  EXPECT_TRUE(std::is_sorted(mapping->nodes.begin(), mapping->nodes.end()));
+}
+
+json trumpet() {
+  return json::parse(R"({"model": "horn.gltf", "kind": "trumpet",
+    "nodes": {"valve_1": "V1", "valve_2": "V2", "valve_3": "V3", "mouthpiece": "MP"}})");
+}
+
+std::string error_of(const json& document) {
+  auto mapping = parse_asset_mapping(document, "m.json", "/assets");
+  if (mapping.ok()) return "(loaded)";
+  return mapping.error().message;
+}
+
+TEST(AssetMappingErrors, TheValidBaseLoads) {
+  auto mapping = parse_asset_mapping(trumpet(), "m.json", "/assets");
+  ASSERT_TRUE(mapping.ok()) << mapping.error().message;
+  EXPECT_EQ(mapping->model, std::filesystem::path("/assets/horn.gltf"));
+  EXPECT_EQ(mapping->node("valve_2"), "V2");
+  EXPECT_EQ(mapping->scale, 1.0);
+}
+
+TEST(AssetMappingErrors, UnknownRoleListsTheKnownOnes) {
+  json doc = trumpet();
+  doc["nodes"]["valve_4"] = "V4";
+  EXPECT_EQ(error_of(doc),
+            "m.json: /nodes/valve_4: unknown role (known for a trumpet: valve_1, valve_2, "
+            "valve_3, mouthpiece, grip_left, grip_right)");
+  doc = trumpet();
+  doc["morphs"] = {{"open", "jawOpen"}};
+  EXPECT_EQ(error_of(doc), "m.json: /morphs/open: unknown role (a trumpet has none)");
+}
+
+TEST(AssetMappingErrors, MissingRequiredRole) {
+  json doc = json::parse(R"({"model": "bone.glb", "kind": "trombone",
+    "nodes": {"mouthpiece": "MP", "bell_section": "Bell"}})");
+  EXPECT_EQ(error_of(doc),
+            "m.json: /nodes: missing role \"slide\" (required for a trombone: slide, mouthpiece)");
+}
+
+TEST(AssetMappingErrors, BadValues) {
+  json doc = trumpet();
+  doc["kind"] = "horn";
+  EXPECT_EQ(error_of(doc), "m.json: /kind: must be one of character, hand, trumpet, trombone");
+  doc = trumpet();
+  doc["model"] = "horn.fbx";
+  EXPECT_EQ(error_of(doc), "m.json: /model: expected a .glb or .gltf file");
+  doc = trumpet();
+  doc["scale"] = 0;
+  EXPECT_EQ(error_of(doc), "m.json: /scale: must be positive");
+  doc["scale"] = 5000;
+  EXPECT_EQ(error_of(doc), "m.json: /scale: must be in [0, 1000]");
+  doc = trumpet();
+  doc["rotation_deg"] = {0, 720, 0};
+  EXPECT_EQ(error_of(doc), "m.json: /rotation_deg/1: must be in [-360, 360]");
+  doc = trumpet();
+  doc["nodes"]["valve_1"] = "";
+  EXPECT_EQ(error_of(doc), "m.json: /nodes/valve_1: must not be empty");
+  doc = trumpet();
+  doc["nodes"]["valve_1"] = 1;
+  EXPECT_EQ(error_of(doc), "m.json: /nodes/valve_1: expected a string");
+  doc = trumpet();
+  doc["bones"] = json::object();
+  EXPECT_EQ(error_of(doc), "m.json: /bones: unknown key");
+  doc = trumpet();
+  doc.erase("nodes");
+  EXPECT_EQ(error_of(doc), "m.json: /nodes: missing");
+}
+
+TEST(AssetMappingErrors, BadFiles) {
+  ScratchDir dir;
+  auto mapping = load_asset_mapping(dir.write("bad.mapping.json", "{\"model\": "));
+  ASSERT_FALSE(mapping.ok());
+  EXPECT_EQ(mapping.error().message.rfind("bad.mapping.json: not valid JSON (at line 1", 0), 0u)
+      << mapping.error().message;
+  EXPECT_EQ(mapping.error().message.find('\n'), std::string::npos);
+  mapping = load_asset_mapping(dir.path() / "none.mapping.json");
+  ASSERT_FALSE(mapping.ok());
+  EXPECT_EQ(mapping.error().message,
+            (dir.path() / "none.mapping.json").string() + ": no such file");
+}
+
+}  // namespace
+}  // namespace tutti::scene

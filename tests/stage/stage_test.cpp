@@ -1,0 +1,176 @@
+// The stage: the shipped scenes build; the pose at t is a pure function of t; pressed keys and
+// valves move their nodes; a user's own instrument model, through a mapping file with other node
+// names and centimetre units, moves exactly like the generated one.
+#include "stage/stage.hpp"
+
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "components/finger.hpp"
+#include "components/valve.hpp"
+#include "scene/load_scene.hpp"
+
+namespace tutti::stage {
+namespace {
+
+const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
+
+std::unique_ptr<Stage> build(const std::filesystem::path& scene_file) {
+  auto scene = scene::load_scene(scene_file);
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return nullptr;
+  auto stage = build_stage(*scene, {});
+  EXPECT_TRUE(stage) << stage.error().message;
+  return stage ? std::move(*stage) : nullptr;
+}
+
+std::vector<std::vector<model::NodeTransform>> poses(const Stage& stage) {
+  std::vector<std::vector<model::NodeTransform>> out;
+  for (const PlacedModel& p : stage.placed) out.push_back(p.pose.local);
+  return out;
+}
+
+bool same(const std::vector<std::vector<model::NodeTransform>>& a,
+          const std::vector<std::vector<model::NodeTransform>>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t n = 0; n < a[i].size(); ++n) {
+      if (a[i][n].translation != b[i][n].translation || a[i][n].rotation != b[i][n].rotation) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+glm::vec3 node_world(const Stage& stage, std::size_t placed, int node) {
+  const PlacedModel& p = stage.placed[placed];
+  const model::ModelAsset& asset = *stage.models[p.model];
+  std::vector<glm::mat4> world(asset.nodes.size());
+  model::compute_world_matrices(asset, p.pose, p.root, world);
+  return glm::vec3(world[static_cast<std::size_t>(node)][3]);
+}
+
+TEST(Stage, PoseAtTIsAPureFunctionOfT) {
+  for (const char* name : {"piano.json", "quartet.json"}) {
+    auto stage = build(kSource / "content" / "scenes" / name);
+    ASSERT_TRUE(stage);
+    evaluate_stage(*stage, 7.25);
+    const auto first = poses(*stage);
+    int moved = 0;
+    for (double t = 0.0; t < 30.0; t += 0.5) {
+      evaluate_stage(*stage, t);
+      moved += same(first, poses(*stage)) ? 0 : 1;
+    }
+    evaluate_stage(*stage, 7.25);
+    EXPECT_TRUE(same(first, poses(*stage))) << name;
+    EXPECT_GT(moved, 40) << name << ": the pose barely changes over 30 s";
+  }
+}
+
+TEST(Stage, PressedKeysTurnTheirNodes) {
+  auto stage = build(kSource / "content" / "scenes" / "piano.json");
+  ASSERT_TRUE(stage && stage->pianist);
+  const PianistSeat& seat = *stage->pianist;
+  int pressed_frames = 0;
+  for (double t = 0.0; t < 12.0; t += 1.0 / 30) {
+    evaluate_stage(*stage, t);
+    for (const auto& hand : seat.fingers) {
+      for (ecs::Entity e : hand) {
+        const auto& finger = stage->world.get<components::Finger>(e);
+        if (finger.key < 0 || finger.press_depth < 1.0) continue;
+        ++pressed_frames;
+        const int node = seat.key_nodes[static_cast<std::size_t>(finger.key)];
+        ASSERT_GE(node, 0);
+        const glm::quat r =
+            stage->placed[seat.piano].pose.local[static_cast<std::size_t>(node)].rotation;
+        const float angle = 2.0f * std::acos(std::min(1.0f, std::abs(r.w)));
+        EXPECT_NEAR(angle, seat.key_dip_rad[static_cast<std::size_t>(finger.key)], 1e-4) << t;
+      }
+    }
+  }
+  EXPECT_GT(pressed_frames, 100);
+}
+
+// The generated trumpet with every node renamed, its root scaled to centimetres: a "user's" model.
+std::filesystem::path write_user_trumpet(const std::filesystem::path& dir) {
+  tinygltf::TinyGLTF io;
+  tinygltf::Model model;
+  std::string error;
+  std::string warning;
+  const std::filesystem::path generated = default_asset_dir() / "trumpet.glb";
+  EXPECT_TRUE(io.LoadBinaryFromFile(&model, &error, &warning, generated.string())) << error;
+  for (tinygltf::Node& node : model.nodes) {
+    if (node.name == "trumpet") node.scale = {100.0, 100.0, 100.0};
+    node.name = "User:" + node.name;
+  }
+  const std::filesystem::path out = dir / "user_trumpet.glb";
+  EXPECT_TRUE(io.WriteGltfSceneToFile(&model, out.string(), true, true, false, true));
+  return out;
+}
+
+TEST(Stage, AUsersInstrumentThroughAMappingMovesLikeTheGeneratedOne) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("tutti-stage-test-" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  write_user_trumpet(dir);
+  // The root's scale 100 makes the model 100 times too big in metres: the mapping scales back.
+  std::ofstream(dir / "trumpet.mapping.json") << R"({
+    "model": "user_trumpet.glb", "kind": "trumpet", "scale": 0.01,
+    "nodes": {"valve_1": "User:valve_1", "valve_2": "User:valve_2", "valve_3": "User:valve_3",
+              "mouthpiece": "User:mouthpiece", "grip_left": "User:grip_left",
+              "grip_right": "User:grip_right"}})";
+  const std::string music = (kSource / "content" / "music" / "quartet.musicxml").string();
+  auto write_scene = [&](const std::string& name, const std::string& extra) {
+    std::ofstream(dir / name) << R"({"music": ")" << music << R"(",
+      "performers": [{"name": "T", "instrument": "trumpet_bb", "part": "Trumpet 1",
+                      "position_m": [0, 0, 0])"
+                              << extra << R"(}],
+      "cameras": [{"name": "c", "position_m": [0, 1.5, 3], "target_m": [0, 1.5, 0]}]})";
+  };
+  write_scene("generated.json", "");
+  write_scene("user.json", R"(, "instrument_model": "trumpet.mapping.json")");
+  auto generated = build(dir / "generated.json");
+  auto user = build(dir / "user.json");
+  ASSERT_TRUE(generated && user);
+  const BrassSeat& g = generated->brass[0];
+  const BrassSeat& u = user->brass[0];
+  ASSERT_GE(u.valves[0], 0);
+  int pressed = 0;
+  for (double t = 3.0; t < 20.0; t += 0.25) {
+    evaluate_stage(*generated, t);
+    evaluate_stage(*user, t);
+    const auto& valve = generated->world.get<components::Valve>(g.instrument);
+    pressed += valve.press[0] > 0.5f ? 1 : 0;
+    for (std::size_t v = 0; v < 3; ++v) {
+      const glm::vec3 a = node_world(*generated, g.horn, g.valves[v]);
+      const glm::vec3 b = node_world(*user, u.horn, u.valves[v]);
+      ASSERT_LT(glm::length(a - b), 1e-4f) << "valve " << v + 1 << " at " << t;
+    }
+    ASSERT_LT(glm::length(node_world(*generated, g.horn, g.mouthpiece) -
+                          node_world(*user, u.horn, u.mouthpiece)),
+              1e-4f);
+  }
+  EXPECT_GT(pressed, 5) << "the check must see valve 1 down";
+
+  // A mapping naming a node the model does not have.
+  std::ofstream(dir / "trumpet.mapping.json") << R"({
+    "model": "user_trumpet.glb", "kind": "trumpet",
+    "nodes": {"valve_1": "Piston A", "valve_2": "User:valve_2", "valve_3": "User:valve_3",
+              "mouthpiece": "User:mouthpiece"}})";
+  auto scene = scene::load_scene(dir / "user.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto broken = build_stage(*scene, {});
+  ASSERT_FALSE(broken);
+  EXPECT_EQ(broken.error().message,
+            "trumpet.mapping.json: node \"Piston A\" for \"valve_1\" is not in user_trumpet.glb");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tutti::stage
