@@ -123,29 +123,14 @@ Result<std::unique_ptr<ModelRenderer>> ModelRenderer::create(
   }
   renderer->layout_ = DeviceHandle<VkPipelineLayout>(device, layout, vkDestroyPipelineLayout);
 
-  PipelineDescription lit;
-  lit.vertex_spirv = shaders::lit_vert();
-  lit.fragment_spirv = shaders::lit_frag();
-  lit.bindings = {{0, sizeof(model::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-  lit.attributes = vertex_attributes();
-  lit.color_format = target.color_format();
-  lit.depth_format = target.depth_format();
-  lit.samples = target.samples();
-  lit.layout = layout;
-  Result<DeviceHandle<VkPipeline>> lit_pipeline = create_graphics_pipeline(device, lit);
-  if (!lit_pipeline) return lit_pipeline.error();
-  renderer->lit_pipeline_ = std::move(*lit_pipeline);
-
-  PipelineDescription shadow_pass = lit;
-  shadow_pass.vertex_spirv = shaders::shadow_vert();
-  shadow_pass.fragment_spirv = {};
-  shadow_pass.color_format = VK_FORMAT_UNDEFINED;
-  shadow_pass.depth_format = ShadowMap::kFormat;
-  shadow_pass.samples = VK_SAMPLE_COUNT_1_BIT;
-  shadow_pass.depth_bias = true;
-  Result<DeviceHandle<VkPipeline>> shadow_pipeline = create_graphics_pipeline(device, shadow_pass);
-  if (!shadow_pipeline) return shadow_pipeline.error();
-  renderer->shadow_pipeline_ = std::move(*shadow_pipeline);
+  renderer->color_format_ = target.color_format();
+  renderer->depth_format_ = target.depth_format();
+  renderer->samples_ = target.samples();
+  if (Status s = renderer->build_pipelines(shaders::lit_vert(), shaders::lit_frag(),
+                                           shaders::shadow_vert());
+      !s) {
+    return s.error();
+  }
 
   renderer->slots_.resize(slot_count);
   for (FrameSlot& slot : renderer->slots_) {
@@ -170,6 +155,43 @@ Result<std::unique_ptr<ModelRenderer>> ModelRenderer::create(
 }
 
 ModelRenderer::~ModelRenderer() = default;
+
+Status ModelRenderer::build_pipelines(std::span<const std::uint32_t> lit_vert,
+                                      std::span<const std::uint32_t> lit_frag,
+                                      std::span<const std::uint32_t> shadow_vert) {
+  const VkDevice device = context_.device();
+  PipelineDescription lit;
+  lit.vertex_spirv = lit_vert;
+  lit.fragment_spirv = lit_frag;
+  lit.bindings = {{0, sizeof(model::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  lit.attributes = vertex_attributes();
+  lit.color_format = color_format_;
+  lit.depth_format = depth_format_;
+  lit.samples = samples_;
+  lit.layout = layout_.get();
+  Result<DeviceHandle<VkPipeline>> lit_pipeline = create_graphics_pipeline(device, lit);
+  if (!lit_pipeline) return lit_pipeline.error();
+
+  PipelineDescription shadow_pass = lit;
+  shadow_pass.vertex_spirv = shadow_vert;
+  shadow_pass.fragment_spirv = {};
+  shadow_pass.color_format = VK_FORMAT_UNDEFINED;
+  shadow_pass.depth_format = ShadowMap::kFormat;
+  shadow_pass.samples = VK_SAMPLE_COUNT_1_BIT;
+  shadow_pass.depth_bias = true;
+  Result<DeviceHandle<VkPipeline>> shadow_pipeline = create_graphics_pipeline(device, shadow_pass);
+  if (!shadow_pipeline) return shadow_pipeline.error();
+  lit_pipeline_ = std::move(*lit_pipeline);
+  shadow_pipeline_ = std::move(*shadow_pipeline);
+  return Status::success();
+}
+
+Status ModelRenderer::set_shaders(std::span<const std::uint32_t> lit_vert,
+                                  std::span<const std::uint32_t> lit_frag,
+                                  std::span<const std::uint32_t> shadow_vert) {
+  if (Status s = context_.wait_idle(); !s) return s;
+  return build_pipelines(lit_vert, lit_frag, shadow_vert);
+}
 
 Status ModelRenderer::ensure_capacity(FrameSlot& slot, std::size_t matrices, std::size_t weights) {
   bool changed = false;

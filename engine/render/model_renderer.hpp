@@ -99,6 +99,13 @@ class ModelRenderer {
   ModelRenderer(const ModelRenderer&) = delete;
   ModelRenderer& operator=(const ModelRenderer&) = delete;
 
+  // Hot reload: rebuilds both pipelines from SPIR-V compiled at run time (tutti::shader_compiler's
+  // reload_lit_shaders) with the same interface as shaders/lit.vert, lit.frag and shadow.vert.
+  // Waits for the device first. On error the previous pipelines stay in use.
+  Status set_shaders(std::span<const std::uint32_t> lit_vert,
+                     std::span<const std::uint32_t> lit_frag,
+                     std::span<const std::uint32_t> shadow_vert);
+
   // Records the shadow pass and the main pass (begin_main_pass .. end_main_pass) of `frame`.
   // An error for an instance naming an unknown model or a pose of the wrong size.
   Status record(const RecordingFrame& frame, FrameTarget& target,
@@ -114,6 +121,9 @@ class ModelRenderer {
   };
 
   explicit ModelRenderer(VulkanContext& context) : context_(context) {}
+  Status build_pipelines(std::span<const std::uint32_t> lit_vert,
+                         std::span<const std::uint32_t> lit_frag,
+                         std::span<const std::uint32_t> shadow_vert);
   Status ensure_capacity(FrameSlot& slot, std::size_t matrices, std::size_t weights);
   void write_descriptors(FrameSlot& slot);
   void record_draws(VkCommandBuffer commands, VkPipeline pipeline) const;
@@ -127,6 +137,9 @@ class ModelRenderer {
   DeviceHandle<VkPipelineLayout> layout_;
   DeviceHandle<VkPipeline> lit_pipeline_;
   DeviceHandle<VkPipeline> shadow_pipeline_;
+  VkFormat color_format_ = VK_FORMAT_UNDEFINED;
+  VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
+  VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
   std::vector<FrameSlot> slots_;
   // Scratch reused every frame (grows, never shrinks): no allocation in steady state.
   std::vector<glm::mat4> matrices_;

@@ -1,11 +1,20 @@
 #include "render/pipeline_builder.hpp"
 
+#include <string>
+
 #include "render/vk_result.hpp"
 
 namespace tutti::render {
 
 Result<DeviceHandle<VkShaderModule>> create_shader_module(VkDevice device,
                                                           std::span<const std::uint32_t> spirv) {
+  // Hot-reloaded code comes from outside the build: refuse what is not SPIR-V before the driver
+  // sees it (a header is 5 words, the magic number first).
+  constexpr std::uint32_t kSpirvMagic = 0x07230203;
+  if (spirv.size() < 5 || spirv[0] != kSpirvMagic) {
+    return Error{"shader module: not SPIR-V (" + std::to_string(spirv.size()) +
+                 " words, no SPIR-V magic number)"};
+  }
   VkShaderModuleCreateInfo info =
       vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
   info.codeSize = spirv.size_bytes();

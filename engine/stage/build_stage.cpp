@@ -188,6 +188,18 @@ Result<BodyNodes> find_body_nodes(const Stage& stage, const MappedModel& body) {
     if (!node) return node.error();
     *slots[i] = *node;
   }
+  const char* const finger_names[5] = {"thumb", "index", "middle", "ring", "little"};
+  for (std::size_t side = 0; side < 2; ++side) {
+    for (std::size_t f = 0; f < 5; ++f) {
+      for (std::size_t s = 0; s < 3; ++s) {
+        auto node = find_role(
+            stage, body,
+            std::string(finger_names[f]) + "_" + std::to_string(s + 1) + (side == 0 ? "_l" : "_r"));
+        if (!node) return node.error();
+        n.fingers[side][f][s] = *node;
+      }
+    }
+  }
   const model::ModelAsset& asset = *stage.models[body.model];
   n.morph_tension = morph_index(asset, body.morph_name("tension"));
   n.morph_open = morph_index(asset, body.morph_name("open"));

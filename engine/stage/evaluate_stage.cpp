@@ -107,7 +107,7 @@ void pose_brass(Stage& stage, BrassSeat& seat) {
   // Lips of a 1.75 m player, or the rig's mouth node.
   glm::vec3 lips = origin(seat.placement) + glm::vec3(facing * glm::vec4(0, 1.58f, 0.1f, 0));
   PlacedModel* body = seat.body ? &stage.placed[*seat.body] : nullptr;
-  std::vector<glm::mat4> body_world;
+  std::vector<glm::mat4>& body_world = stage.scratch_body_world;
   if (body != nullptr) {
     const model::ModelAsset& body_asset = *stage.models[body->model];
     reset_pose(body_asset, body->pose);
@@ -134,6 +134,25 @@ void pose_brass(Stage& stage, BrassSeat& seat) {
               glm::rotate(glm::mat4(1.0f), tilt, glm::vec3(1, 0, 0)) *
               glm::translate(glm::mat4(1.0f), -mouthpiece) * seat.horn_correction;
   if (body == nullptr) return;
+
+  // Fingers: the left hand wraps the valve casing or the bell brace, the right hand's fingertips
+  // rest on the buttons / hold the slide brace. The default rig flexes its (hanging) fingers
+  // about local -Z on the left, +Z on the right (content/generator/README.md).
+  if (!seat.body_nodes.mapped) {
+    constexpr float kDeg = kPi / 180.0f;
+    const float left_curl[3] = {55 * kDeg, 45 * kDeg, 30 * kDeg};
+    const float right_curl[3] = {30 * kDeg, 35 * kDeg, 20 * kDeg};
+    for (std::size_t side = 0; side < 2; ++side) {
+      const float* curl = side == 0 ? left_curl : right_curl;
+      const glm::vec3 axis = side == 0 ? glm::vec3(0, 0, -1) : glm::vec3(0, 0, 1);
+      for (std::size_t f = 1; f < 5; ++f) {
+        for (std::size_t s = 0; s < 3; ++s) {
+          turn(body->pose, seat.body_nodes.fingers[side][f][s], curl[s], axis);
+        }
+      }
+      turn(body->pose, seat.body_nodes.fingers[side][0][1], 0.5f * curl[0], axis);
+    }
+  }
 
   // Hands on the grips: the hand turned so the rig's grip frame matches the instrument's, the
   // arm solved so the wrist lands where that puts the palm on the grip. The elbows hang down and

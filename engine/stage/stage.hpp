@@ -55,6 +55,8 @@ struct BodyNodes {
   TwoBoneChain arm_left, arm_right;
   int thigh_left = -1, thigh_right = -1, shin_left = -1, shin_right = -1;
   int morph_tension = -1, morph_open = -1;  // indices into the pose's morph_weights
+  // Finger bones [left, right][thumb .. little][segment], for the grip curls.
+  std::array<std::array<std::array<int, 3>, 5>, 2> fingers{};
   bool mapped = false;  // a user's rig (mapping file): only IK and morphs, no canned bends
 };
 
@@ -112,7 +114,8 @@ struct Stage {
   double end_s = 0.0;  // output end (scene's end_s, else the end of the music + 1 s)
   std::vector<std::shared_ptr<const brass::Instrument>> instruments;  // the brass players'
   std::vector<std::string> notes;        // planning diagnostics worth showing (out of range, ...)
-  std::vector<glm::mat4> scratch_world;  // reused by evaluate_stage
+  std::vector<glm::mat4> scratch_world;  // reused by evaluate_stage (instrument / pianist)
+  std::vector<glm::mat4> scratch_body_world;  // reused by evaluate_stage (brass players' bodies)
 
   std::vector<const model::ModelAsset*> model_list() const;
 };

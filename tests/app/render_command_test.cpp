@@ -88,6 +88,20 @@ TEST_F(RenderCommandTest, ASliceHasExactlyTheFullRendersPixels) {
             read_bytes(dir_ / "full" / "frame_000045.png"));
 }
 
+TEST_F(RenderCommandTest, VideoOfTheSameSliceIsByteIdentical) {
+  RenderOptions o;
+  o.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / "quartet.json";
+  o.frames = "100:110";
+  o.output = dir_ / "a.mp4";
+  std::string error;
+  ASSERT_EQ(run(o, &error), 0) << error;
+  o.output = dir_ / "b.mp4";
+  ASSERT_EQ(run(o, &error), 0) << error;
+  const std::string a = read_bytes(dir_ / "a.mp4");
+  EXPECT_GT(a.size(), 1000u);
+  EXPECT_EQ(a, read_bytes(dir_ / "b.mp4"));
+}
+
 TEST_F(RenderCommandTest, BadOptionsAreOneLineErrors) {
   struct Case {
     RenderOptions options;

@@ -5,11 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "image/png.hpp"
 #include "render/offscreen_target.hpp"
+#include "render/shader_compiler.hpp"
 #include "render_test_support.hpp"
 
 namespace tutti::render {
@@ -268,6 +273,53 @@ TEST_F(ModelRendererTest, SameFrameTwiceIsByteIdentical) {
   const auto b = render({&scene}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_4_BIT);
   ASSERT_FALSE(a.empty());
   EXPECT_EQ(a, b);
+}
+
+TEST_F(ModelRendererTest, HotReloadedShadersReplaceThePipelines) {
+  const model::ModelAsset scene = floor_and_cube();
+  const Camera camera = look_at_camera({1, 2, 3}, {0, 0.5f, 0}, 45.0f, float(kWidth) / kHeight);
+  auto target = OffscreenTarget::create(context(), kWidth, kHeight);
+  ASSERT_TRUE(target);
+  std::vector<const model::ModelAsset*> models = {&scene};
+  auto renderer = ModelRenderer::create(context(), **target, models);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const std::vector<ModelInstance> instances = {{0, nullptr, glm::mat4(1.0f)}};
+  auto draw = [&] {
+    auto frame = (*target)->begin_frame();
+    EXPECT_TRUE(frame);
+    EXPECT_TRUE((*renderer)->record(*frame, **target, instances, camera, {}, {0, 0, 0, 1}));
+    auto id = (*target)->end_frame();
+    std::vector<std::uint8_t> rgba;
+    EXPECT_TRUE((*target)->read_pixels(*id, rgba));
+    return rgba;
+  };
+  const auto built_in = draw();
+  // The shipped sources compiled at run time draw the same picture.
+  const std::filesystem::path dir =
+      std::filesystem::path(TUTTI_SOURCE_DIR) / "engine" / "render" / "shaders";
+  auto shaders = reload_lit_shaders(dir);
+  ASSERT_TRUE(shaders) << shaders.error().message;
+  ASSERT_TRUE((*renderer)->set_shaders(shaders->lit_vert, shaders->lit_frag, shaders->shadow_vert));
+  EXPECT_EQ(draw(), built_in);
+  // An edited fragment shader (everything emissive green) changes it.
+  std::ifstream in(dir / "lit.frag");
+  std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string last = "out_color = vec4(tone_map(color * frame.sky_color.w), 1.0);";
+  ASSERT_NE(source.find(last), std::string::npos);
+  source.replace(source.find(last), last.size(), "out_color = vec4(0.0, 1.0, 0.0, 1.0);");
+  const std::filesystem::path include[] = {dir};
+  auto green = compile_glsl(source, ShaderStage::fragment, "lit.frag", include);
+  ASSERT_TRUE(green) << green.error().message;
+  ASSERT_TRUE((*renderer)->set_shaders(shaders->lit_vert, *green, shaders->shadow_vert));
+  const auto edited = draw();
+  const std::size_t centre = (std::size_t{kHeight / 2} * kWidth + kWidth / 2) * 4;
+  EXPECT_EQ(edited[centre], 0);
+  EXPECT_EQ(edited[centre + 1], 255);
+  // Broken SPIR-V is an error and the last good pipelines stay.
+  std::vector<std::uint32_t> broken = *green;
+  broken[0] = 0;
+  EXPECT_FALSE((*renderer)->set_shaders(shaders->lit_vert, broken, shaders->shadow_vert));
+  EXPECT_EQ(draw(), edited);
 }
 
 TEST_F(ModelRendererTest, UnknownModelAndMismatchedPoseAreErrors) {
