@@ -72,7 +72,7 @@ Influence limb_influence(DVec3 p, DVec3 a, DVec3 b, int parent, int self, int ch
 // A tapered tube with rounded ends and `rings` rings along it (so it bends smoothly when
 // skinned), radius ra at a and rb at b (metres).
 void add_limb(MeshData& mesh, DVec3 a, DVec3 b, double ra, double rb, int rings = 8,
-              int segments = 20) {
+              int segments = 16) {
   Tube tube;
   for (int i = 0; i < rings; ++i) {
     const double u = static_cast<double>(i) / (rings - 1);
@@ -395,7 +395,7 @@ tinygltf::Model build_performer(const PerformerDimensions& dims, const HandRig& 
       return limb_influence(p, neck_side, shoulder_at, jc, jsh, ju, 0.05);
     });
     first = suit.vertex_count();
-    add_sphere(suit, f3(shoulder_at + DVec3{0, -0.005, 0}), 0.058f, 24);
+    add_sphere(suit, f3(shoulder_at + DVec3{0, -0.005, 0}), 0.058f, 16);
     weight_with(suit, first, [&](DVec3) { return Influence{{ju, jsh, -1, -1}, {0.6, 0.4, 0, 0}}; });
     // Sleeves (the jacket), the shirt cuff at the wrist.
     first = suit.vertex_count();
@@ -428,12 +428,12 @@ tinygltf::Model build_performer(const PerformerDimensions& dims, const HandRig& 
               jft = sk.joint(foot_bone);
     std::size_t first = suit.vertex_count();
     const DVec3 thigh_top = hip + DVec3{-s.sign * 0.005, 0.03, 0.0};
-    add_limb(suit, thigh_top, knee, 0.088, 0.058, 12, 24);
+    add_limb(suit, thigh_top, knee, 0.088, 0.058, 8, 16);
     weight_with(suit, first,
                 [&](DVec3 p) { return limb_influence(p, thigh_top, knee, jh, jt, js, 0.08); });
     first = suit.vertex_count();
     const DVec3 cuff{s.sign * hx, ankle_y + 0.01, 0.005};
-    add_limb(suit, knee, cuff, 0.057, 0.050, 12, 24);
+    add_limb(suit, knee, cuff, 0.057, 0.050, 8, 16);
     weight_with(suit, first,
                 [&](DVec3 p) { return limb_influence(p, knee, cuff, jt, js, jft, 0.06); });
     // The shoe: a rounded last, heel 50 mm behind the ankle, the sole on the floor.
@@ -451,7 +451,7 @@ tinygltf::Model build_performer(const PerformerDimensions& dims, const HandRig& 
     const std::size_t first = skin.vertex_count();
     const DVec3 a{0, neck_y - 0.03, -0.005};
     const DVec3 b{0, head_y + 0.04, 0.0};
-    add_limb(skin, a, b, 0.052, 0.049, 8, 24);
+    add_limb(skin, a, b, 0.052, 0.049, 6, 16);
     weight_with(skin, first, [&](DVec3 p) {
       return limb_influence(p, a, b, sk.joint(chest), sk.joint(neck), sk.joint(head), 0.04);
     });
@@ -498,7 +498,7 @@ tinygltf::Model build_performer(const PerformerDimensions& dims, const HandRig& 
   auto ellipsoid = [&](MeshData& mesh, DVec3 c, DVec3 r, int segments) {
     add_ellipsoid(mesh, f3(hp(c[0], c[1], c[2])), f3(k * r), segments);
   };
-  ellipsoid(face, cranium_c, cranium_r, 48);
+  ellipsoid(face, cranium_c, cranium_r, 32);
   ellipsoid(face, jaw_c, jaw_r, 40);
   for (const double side : {-1.0, 1.0}) {
     ellipsoid(face, {side * 0.036, 0.082, 0.05}, {0.028, 0.026, 0.03}, 24);    // cheeks
@@ -545,7 +545,7 @@ tinygltf::Model build_performer(const PerformerDimensions& dims, const HandRig& 
     const double ey = 0.142;
     const double ez = face_z(ex, ey) - 0.0072;
     const double er = 0.0125;
-    add_sphere(eyes, f3(hp(ex, ey, ez)), f(k * er), 24);
+    add_sphere(eyes, f3(hp(ex, ey, ez)), f(k * er), 16);
     ellipsoid(irises, {ex, ey, ez + er - 0.0014}, {0.0058, 0.0058, 0.0024}, 20);
     const double by = 0.163;
     add_capsule(hair, f3(hp(side * 0.014, by, face_z(side * 0.014, by) + 0.001)),
