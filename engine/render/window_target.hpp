@@ -133,7 +133,6 @@ class WindowTarget final : public FrameTarget {
 
   bool capture_requested_ = false;
   bool capture_pending_ = false;  // recorded into a submitted frame, not yet taken
-  Slot* capture_slot_ = nullptr;
   DeviceBuffer capture_buffer_;
   VkExtent2D capture_extent_{};
   VkFormat capture_format_ = VK_FORMAT_UNDEFINED;
