@@ -48,15 +48,9 @@ Result<DeviceBuffer> create_device_buffer_with_data(VulkanContext& context,
   if (!buffer) return buffer.error();
 
   const VkDevice device = context.device();
-  VkCommandBufferAllocateInfo allocate =
-      vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
-  allocate.commandPool = context.command_pool();
-  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocate.commandBufferCount = 1;
-  VkCommandBuffer commands = VK_NULL_HANDLE;
-  if (VkResult r = vkAllocateCommandBuffers(device, &allocate, &commands); r != VK_SUCCESS) {
-    return vk_error("vkAllocateCommandBuffers", r);
-  }
+  Result<VkCommandBuffer> allocated = context.allocate_command_buffer();
+  if (!allocated) return allocated.error();
+  VkCommandBuffer commands = *allocated;
   struct FreeCommands {
     VkDevice device;
     VkCommandPool pool;

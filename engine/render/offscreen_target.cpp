@@ -74,21 +74,12 @@ Result<std::unique_ptr<OffscreenTarget>> OffscreenTarget::create(VulkanContext& 
     if (!readback) return readback.error();
     slot.readback = std::move(*readback);
 
-    VkCommandBufferAllocateInfo allocate =
-        vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
-    allocate.commandPool = context.command_pool();
-    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocate.commandBufferCount = 1;
-    if (VkResult r = vkAllocateCommandBuffers(device, &allocate, &slot.commands); r != VK_SUCCESS) {
-      return vk_error("vkAllocateCommandBuffers", r);
-    }
-    VkFenceCreateInfo fence_info =
-        vk_struct<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
-    VkFence fence = VK_NULL_HANDLE;
-    if (VkResult r = vkCreateFence(device, &fence_info, nullptr, &fence); r != VK_SUCCESS) {
-      return vk_error("vkCreateFence", r);
-    }
-    slot.done = DeviceHandle<VkFence>(device, fence, vkDestroyFence);
+    Result<VkCommandBuffer> commands = context.allocate_command_buffer();
+    if (!commands) return commands.error();
+    slot.commands = *commands;
+    Result<DeviceHandle<VkFence>> fence = context.create_fence(false);
+    if (!fence) return fence.error();
+    slot.done = std::move(*fence);
   }
   return target;
 }

@@ -416,4 +416,27 @@ Status VulkanContext::wait_idle() const {
   return vk_check("vkDeviceWaitIdle", vkDeviceWaitIdle(device_));
 }
 
+Result<VkCommandBuffer> VulkanContext::allocate_command_buffer() const {
+  VkCommandBufferAllocateInfo allocate =
+      vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+  allocate.commandPool = command_pool_;
+  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocate.commandBufferCount = 1;
+  VkCommandBuffer commands = VK_NULL_HANDLE;
+  if (VkResult r = vkAllocateCommandBuffers(device_, &allocate, &commands); r != VK_SUCCESS) {
+    return vk_error("vkAllocateCommandBuffers", r);
+  }
+  return commands;
+}
+
+Result<DeviceHandle<VkFence>> VulkanContext::create_fence(bool signaled) const {
+  VkFenceCreateInfo info = vk_struct<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
+  if (signaled) info.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+  VkFence fence = VK_NULL_HANDLE;
+  if (VkResult r = vkCreateFence(device_, &info, nullptr, &fence); r != VK_SUCCESS) {
+    return vk_error("vkCreateFence", r);
+  }
+  return DeviceHandle<VkFence>(device_, fence, vkDestroyFence);
+}
+
 }  // namespace tutti::render

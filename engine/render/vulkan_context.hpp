@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/result.hpp"
+#include "render/device_memory.hpp"
 
 namespace tutti::render {
 
@@ -94,6 +95,11 @@ class VulkanContext {
   std::shared_ptr<const ValidationLog> validation_log() const { return log_; }
 
   Status wait_idle() const;
+
+  // A primary command buffer from command_pool(); the caller frees it (vkFreeCommandBuffers).
+  Result<VkCommandBuffer> allocate_command_buffer() const;
+  // A fence owned by the returned handle; `signaled` = created signalled.
+  Result<DeviceHandle<VkFence>> create_fence(bool signaled) const;
 
  private:
   VulkanContext() = default;

@@ -145,22 +145,13 @@ Result<std::unique_ptr<WindowTarget>> WindowTarget::create(VulkanContext& contex
 
   target->slots_.resize(options.frames_in_flight);
   for (Slot& slot : target->slots_) {
-    VkCommandBufferAllocateInfo allocate =
-        vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
-    allocate.commandPool = context.command_pool();
-    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocate.commandBufferCount = 1;
-    if (VkResult r = vkAllocateCommandBuffers(device, &allocate, &slot.commands); r != VK_SUCCESS) {
-      return vk_error("vkAllocateCommandBuffers", r);
-    }
-    VkFenceCreateInfo fence_info =
-        vk_struct<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
-    fence_info.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // the first begin_frame need not wait
-    VkFence fence = VK_NULL_HANDLE;
-    if (VkResult r = vkCreateFence(device, &fence_info, nullptr, &fence); r != VK_SUCCESS) {
-      return vk_error("vkCreateFence", r);
-    }
-    slot.done = DeviceHandle<VkFence>(device, fence, vkDestroyFence);
+    Result<VkCommandBuffer> commands = context.allocate_command_buffer();
+    if (!commands) return commands.error();
+    slot.commands = *commands;
+    // Signalled: the first begin_frame need not wait.
+    Result<DeviceHandle<VkFence>> fence = context.create_fence(true);
+    if (!fence) return fence.error();
+    slot.done = std::move(*fence);
     VkSemaphoreCreateInfo semaphore_info =
         vk_struct<VkSemaphoreCreateInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO);
     VkSemaphore semaphore = VK_NULL_HANDLE;
