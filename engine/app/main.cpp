@@ -81,6 +81,8 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--size", render.size, "WxH (default: the scene's)");
   render_cmd->add_option("--fps", render.fps, "frames per second (default: the scene's)");
   render_cmd->add_option("--msaa", render.msaa, "samples per pixel: 1, 2, 4 or 8");
+  render_cmd->add_option("--shadows", render.shadows,
+                         "hard (one shadow-map comparison per pixel) or soft (four)");
   render_cmd->add_option("--frames", render.frames, "A:B, frames A (inclusive) to B (exclusive)");
   render_cmd->add_option("--seconds", render.seconds, "A:B, the frames whose times are in [A, B)");
   render_cmd->add_option("--still", render.still, "one frame at this time (seconds) to a .png");

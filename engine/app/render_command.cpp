@@ -127,6 +127,10 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (msaa != 1 && msaa != 2 && msaa != 4 && msaa != 8) {
     return fail("--msaa " + std::to_string(msaa) + ": must be 1, 2, 4 or 8");
   }
+  if (!o.shadows.empty() && o.shadows != "hard" && o.shadows != "soft") {
+    return fail("--shadows \"" + o.shadows + "\": must be hard or soft");
+  }
+  const bool soft_shadows = o.shadows.empty() ? scene->output.soft_shadows : o.shadows == "soft";
 
   stage::StageOptions stage_options;
   stage_options.asset_dir = o.assets;
@@ -166,7 +170,9 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
                                       static_cast<std::uint32_t>(height), 2, to_samples(msaa));
   if (!target) return fail(target.error().message);
   const std::vector<const model::ModelAsset*> models = st.model_list();
-  auto renderer = render::ModelRenderer::create(**context, **target, models);
+  render::ModelRendererOptions renderer_options;
+  renderer_options.shadow_taps = soft_shadows ? 4 : 1;
+  auto renderer = render::ModelRenderer::create(**context, **target, models, renderer_options);
   if (!renderer) return fail(renderer.error().message);
 
   std::unique_ptr<VideoPipe> video;

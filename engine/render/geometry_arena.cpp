@@ -19,11 +19,12 @@ Result<std::unique_ptr<GeometryArena>> GeometryArena::create(
   std::size_t delta_count = 0;
   constexpr std::size_t kLimit = std::numeric_limits<std::int32_t>::max();
   for (const model::ModelAsset* asset : models) {
+    arena->lods_.push_back(build_mesh_lods(*asset));
     arena->ranges_.push_back({static_cast<std::uint32_t>(vertex_count),
                               static_cast<std::uint32_t>(index_count),
                               static_cast<std::uint32_t>(delta_count)});
     vertex_count += asset->vertices.size();
-    index_count += asset->indices.size();
+    index_count += arena->lods_.back().indices.size();
     delta_count += asset->morph_deltas.size();
     if (vertex_count > kLimit || index_count > kLimit || delta_count > kLimit / 2) {
       return Error{asset->source + ": too much geometry for one renderer (" +
@@ -38,9 +39,11 @@ Result<std::unique_ptr<GeometryArena>> GeometryArena::create(
   vertices.reserve(vertex_count);
   indices.reserve(index_count);
   deltas.reserve(delta_count * 2);
-  for (const model::ModelAsset* asset : models) {
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    const model::ModelAsset* asset = models[m];
     vertices.insert(vertices.end(), asset->vertices.begin(), asset->vertices.end());
-    indices.insert(indices.end(), asset->indices.begin(), asset->indices.end());
+    const std::vector<std::uint32_t>& lod_indices = arena->lods_[m].indices;
+    indices.insert(indices.end(), lod_indices.begin(), lod_indices.end());
     for (const model::MorphDelta& d : asset->morph_deltas) {
       deltas.emplace_back(d.position, 0.0f);
       deltas.emplace_back(d.normal, 0.0f);

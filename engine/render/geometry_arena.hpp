@@ -2,7 +2,8 @@
 // GeometryArena: the vertices, indices and morph deltas of every model a renderer draws, in three
 // device-local buffers (one vertex buffer binding, one index buffer, one storage buffer), so a
 // frame binds geometry once. Built once from ModelAssets; models are identified by their index
-// in the span given to create().
+// in the span given to create(). The index buffer holds every level of detail (mesh_lod.hpp):
+// a level's indices start at range(model).first_index + level.first_index.
 
 #include <cstdint>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "core/result.hpp"
 #include "model/model_asset.hpp"
 #include "render/device_memory.hpp"
+#include "render/mesh_lod.hpp"
 #include "render/vulkan_context.hpp"
 
 namespace tutti::render {
@@ -30,6 +32,7 @@ class GeometryArena {
       VulkanContext& context, std::span<const model::ModelAsset* const> models);
 
   const ModelRange& range(std::size_t model) const { return ranges_[model]; }
+  const MeshLods& lods(std::size_t model) const { return lods_[model]; }
   std::size_t model_count() const { return ranges_.size(); }
   VkBuffer vertices() const { return vertices_.buffer.get(); }
   VkBuffer indices() const { return indices_.buffer.get(); }
@@ -39,6 +42,7 @@ class GeometryArena {
  private:
   GeometryArena() = default;
   std::vector<ModelRange> ranges_;
+  std::vector<MeshLods> lods_;
   DeviceBuffer vertices_;
   DeviceBuffer indices_;
   DeviceBuffer morph_deltas_;

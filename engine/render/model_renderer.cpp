@@ -1,6 +1,8 @@
 #include "render/model_renderer.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
@@ -47,6 +49,31 @@ std::vector<VkVertexInputAttributeDescription> vertex_attributes() {
   };
 }
 
+// Closer than this, a primitive is judged as if this close (its sphere may hold the eye).
+constexpr float kNearestLodDistance = 0.05f;
+
+// How far the nearest point of the candidate's sphere can be from the eye.
+float nearest_distance(const detail::DrawCandidate& candidate, const glm::vec3& eye) {
+  return std::max(glm::length(candidate.bound.center - eye) - candidate.bound.radius,
+                  kNearestLodDistance);
+}
+
+// Planes (xyz normal, w offset; inside when dot >= 0) of clip space x, y in [-w, w], z in [0, w].
+using FrustumPlanes = std::array<glm::vec4, 6>;
+FrustumPlanes frustum_planes(const glm::mat4& m) {
+  const glm::mat4 t = glm::transpose(m);  // rows of m
+  FrustumPlanes planes = {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[2], t[3] - t[2]};
+  for (glm::vec4& plane : planes) plane /= glm::length(glm::vec3(plane));
+  return planes;
+}
+
+bool sphere_in_frustum(const FrustumPlanes& planes, const glm::vec3& center, float radius) {
+  for (const glm::vec4& plane : planes) {
+    if (glm::dot(glm::vec3(plane), center) + plane.w < -radius) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 Camera look_at_camera(const glm::vec3& position, const glm::vec3& target, float fov_y_deg,
@@ -65,6 +92,12 @@ Result<std::unique_ptr<ModelRenderer>> ModelRenderer::create(
   std::unique_ptr<ModelRenderer> renderer(new ModelRenderer(context));
   const VkDevice device = context.device();
   renderer->models_.assign(models.begin(), models.end());
+  renderer->lod_pixel_error_ = options.lod_pixel_error;
+  if (options.shadow_taps != 1 && options.shadow_taps != 4) {
+    return Error{"model renderer: shadow_taps must be 1 or 4, not " +
+                 std::to_string(options.shadow_taps)};
+  }
+  renderer->shadow_taps_ = options.shadow_taps;
 
   Result<std::unique_ptr<GeometryArena>> geometry = GeometryArena::create(context, models);
   if (!geometry) return geometry.error();
@@ -169,12 +202,14 @@ Status ModelRenderer::build_pipelines(std::span<const std::uint32_t> lit_vert,
   lit.depth_format = depth_format_;
   lit.samples = samples_;
   lit.layout = layout_.get();
+  lit.fragment_constants = {shadow_taps_};
   Result<DeviceHandle<VkPipeline>> lit_pipeline = create_graphics_pipeline(device, lit);
   if (!lit_pipeline) return lit_pipeline.error();
 
   PipelineDescription shadow_pass = lit;
   shadow_pass.vertex_spirv = shadow_vert;
   shadow_pass.fragment_spirv = {};
+  shadow_pass.fragment_constants = {};
   shadow_pass.color_format = VK_FORMAT_UNDEFINED;
   shadow_pass.depth_format = ShadowMap::kFormat;
   shadow_pass.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -248,7 +283,7 @@ Status ModelRenderer::record(const RecordingFrame& frame, FrameTarget& target,
   if (frame.id == 0) return Error{"model renderer: frame has no id (not begun)"};
   matrices_.clear();
   weights_.clear();
-  draws_.clear();
+  candidates_.clear();
   for (const ModelInstance& instance : instances) {
     if (instance.model >= models_.size()) {
       return Error{"model renderer: instance of model " + std::to_string(instance.model) +
@@ -276,30 +311,33 @@ Status ModelRenderer::record(const RecordingFrame& frame, FrameTarget& target,
     const auto node_base = static_cast<std::uint32_t>(matrices_.size());
     matrices_.insert(matrices_.end(), world_.begin(), world_.end());
 
+    const MeshLods& lods = geometry_->lods(instance.model);
     for (std::size_t n = 0; n < asset.nodes.size(); ++n) {
       const model::Node& node = asset.nodes[n];
       if (node.mesh < 0) continue;
-      const model::Mesh& mesh = asset.meshes[static_cast<std::size_t>(node.mesh)];
+      const auto mesh_index = static_cast<std::size_t>(node.mesh);
+      const model::Mesh& mesh = asset.meshes[mesh_index];
       std::uint32_t matrix_index = node_base + static_cast<std::uint32_t>(n);
-      bool skinned = false;
+      const model::Skin* skin = nullptr;
       if (node.skin >= 0) {
-        const model::Skin& skin = asset.skins[static_cast<std::size_t>(node.skin)];
+        skin = &asset.skins[static_cast<std::size_t>(node.skin)];
         matrix_index = static_cast<std::uint32_t>(matrices_.size());
-        matrices_.resize(matrices_.size() + skin.joints.size());
+        matrices_.resize(matrices_.size() + skin->joints.size());
         model::compute_joint_matrices(
             asset, node.skin, world_,
-            std::span<glm::mat4>(matrices_).subspan(matrix_index, skin.joints.size()));
-        skinned = true;
+            std::span<glm::mat4>(matrices_).subspan(matrix_index, skin->joints.size()));
       }
-      for (const model::Primitive& primitive : mesh.primitives) {
-        detail::Draw draw;
+      for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const model::Primitive& primitive = mesh.primitives[p];
+        const PrimitiveLods& primitive_lods = lods.primitives[lods.first_primitive[mesh_index] + p];
+        if (primitive_lods.level_count == 0) continue;
+        detail::DrawCandidate draw;
         DrawConstants& c = draw.constants;
         c.matrix_index = matrix_index;
-        c.skinned = skinned ? 1 : 0;
+        c.skinned = skin != nullptr ? 1 : 0;
         c.morph_count = static_cast<std::uint32_t>(mesh.target_names.size());
         c.morph_delta_base = 2 * (range.first_morph_delta + primitive.first_morph_delta);
-        c.morph_weight_base =
-            weight_base + pose->first_morph_weight[static_cast<std::size_t>(node.mesh)];
+        c.morph_weight_base = weight_base + pose->first_morph_weight[mesh_index];
         c.vertex_base = range.first_vertex + primitive.first_vertex;
         c.vertex_count = primitive.vertex_count;
         if (primitive.material >= 0) {
@@ -309,10 +347,16 @@ Status ModelRenderer::record(const RecordingFrame& frame, FrameTarget& target,
           c.emissive = glm::vec4(m.emissive, 0.0f);
           c.flags = m.double_sided ? 1u : 0u;
         }
-        draw.index_count = primitive.index_count;
-        draw.first_index = range.first_index + primitive.first_index;
+        draw.lods = &primitive_lods;
+        draw.casts_shadows = instance.casts_shadows;
+        draw.first_index = range.first_index;
         draw.vertex_offset = static_cast<std::int32_t>(c.vertex_base);
-        draws_.push_back(draw);
+        draw.bound =
+            skin != nullptr
+                ? skinned_world_bound(primitive_lods, *skin, world_,
+                                      std::span<const glm::mat4>(matrices_).subspan(matrix_index))
+                : rigid_world_bound(primitive_lods, world_[n]);
+        candidates_.push_back(draw);
       }
     }
   }
@@ -350,22 +394,66 @@ Status ModelRenderer::record(const RecordingFrame& frame, FrameTarget& target,
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1,
                           &slot.descriptors, 0, nullptr);
 
+  const glm::mat4 view_projection = camera.projection * camera.view;
+  const VkExtent2D extent = target.extent();
+  select_draws(Pass::main, view_projection,
+               std::abs(camera.projection[1][1]) * 0.5f * static_cast<float>(extent.height),
+               camera.projection[2][3] != 0.0f, camera.position, main_draws_);
+  // One shadow texel is 2 r / size metres wide, everywhere (orthographic).
+  select_draws(Pass::shadow, uniforms.light_view_projection,
+               static_cast<float>(shadow_map_->size()) / (2.0f * lighting.shadow_radius), false,
+               glm::vec3(0.0f), shadow_draws_);
+  stats_ = {};
+  stats_.candidates = static_cast<std::uint32_t>(candidates_.size());
+  stats_.main_draws = static_cast<std::uint32_t>(main_draws_.size());
+  stats_.shadow_draws = static_cast<std::uint32_t>(shadow_draws_.size());
+  for (const detail::Draw& d : main_draws_) stats_.main_triangles += d.index_count / 3;
+  for (const detail::Draw& d : shadow_draws_) stats_.shadow_triangles += d.index_count / 3;
+
   shadow_map_->begin(commands);
-  record_draws(commands, shadow_pipeline_.get());
+  record_draws(commands, shadow_pipeline_.get(), shadow_draws_);
   shadow_map_->end(commands);
 
   target.begin_main_pass(clear);
-  record_draws(commands, lit_pipeline_.get());
+  record_draws(commands, lit_pipeline_.get(), main_draws_);
   target.end_main_pass();
   return Status::success();
 }
 
-void ModelRenderer::record_draws(VkCommandBuffer commands, VkPipeline pipeline) const {
+void ModelRenderer::select_draws(Pass pass, const glm::mat4& view_projection,
+                                 float pixels_per_metre, bool perspective, const glm::vec3& eye,
+                                 std::vector<detail::Draw>& draws) const {
+  const FrustumPlanes planes = frustum_planes(view_projection);
+  const float error_budget = lod_pixel_error_;
+  draws.clear();
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const detail::DrawCandidate& candidate = candidates_[i];
+    if (pass == Pass::shadow && !candidate.casts_shadows) continue;
+    if (!sphere_in_frustum(planes, candidate.bound.center, candidate.bound.radius)) continue;
+    float pixels = pixels_per_metre;
+    if (perspective) pixels /= nearest_distance(candidate, eye);
+    const PrimitiveLods& lods = *candidate.lods;
+    std::uint32_t level = 0;
+    if (error_budget > 0.0f) {
+      while (level + 1 < lods.level_count &&
+             lods.levels[level + 1].error * candidate.bound.scale * pixels <= error_budget) {
+        ++level;
+      }
+    }
+    const LodLevel& chosen = lods.levels[level];
+    draws.push_back({static_cast<std::uint32_t>(i), chosen.index_count,
+                     candidate.first_index + chosen.first_index});
+  }
+}
+
+void ModelRenderer::record_draws(VkCommandBuffer commands, VkPipeline pipeline,
+                                 const std::vector<detail::Draw>& draws) const {
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-  for (const detail::Draw& draw : draws_) {
+  for (const detail::Draw& draw : draws) {
+    const detail::DrawCandidate& candidate = candidates_[draw.candidate];
     vkCmdPushConstants(commands, layout_.get(), kDrawStages, 0, sizeof(DrawConstants),
-                       &draw.constants);
-    vkCmdDrawIndexed(commands, draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
+                       &candidate.constants);
+    vkCmdDrawIndexed(commands, draw.index_count, 1, draw.first_index, candidate.vertex_offset, 0);
   }
 }
 

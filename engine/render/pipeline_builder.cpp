@@ -48,6 +48,16 @@ Result<DeviceHandle<VkPipeline>> create_graphics_pipeline(VkDevice device,
   stages[0].pName = "main";
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = frag.get();
+  std::vector<VkSpecializationMapEntry> entries;
+  for (std::uint32_t i = 0; i < description.fragment_constants.size(); ++i) {
+    entries.push_back({i, i * 4u, 4u});
+  }
+  VkSpecializationInfo specialization{};
+  specialization.mapEntryCount = static_cast<std::uint32_t>(entries.size());
+  specialization.pMapEntries = entries.data();
+  specialization.dataSize = description.fragment_constants.size() * 4u;
+  specialization.pData = description.fragment_constants.data();
+  if (!entries.empty()) stages[1].pSpecializationInfo = &specialization;
   stages[1].pName = "main";
 
   VkPipelineVertexInputStateCreateInfo vertex_input =

@@ -27,6 +27,10 @@ struct PipelineDescription {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   bool depth_bias = false;  // constant + slope bias (shadow maps), set dynamically
   VkPipelineLayout layout = VK_NULL_HANDLE;
+  // 32-bit specialization constants of the fragment shader, constant_id = index (compile-time
+  // choices without a run-time branch: lavapipe runs both sides of a branch it cannot prove
+  // uniform).
+  std::vector<std::uint32_t> fragment_constants;
 };
 
 Result<DeviceHandle<VkPipeline>> create_graphics_pipeline(VkDevice device,

@@ -436,7 +436,8 @@ Status SceneParser::parse_output(const json& document, Output& output) const {
   const json& object = document.at("output");
   const std::string path = "/output";
   if (auto ok = reader_.json().check_keys(
-          object, path, {"width", "height", "fps", "msaa", "background", "start_s", "end_s"});
+          object, path,
+          {"width", "height", "fps", "msaa", "shadows", "background", "start_s", "end_s"});
       !ok) {
     return ok;
   }
@@ -457,6 +458,12 @@ Status SceneParser::parse_output(const json& document, Output& output) const {
     return reader_.error("/output/msaa", "must be 1, 2, 4 or 8");
   }
   output.msaa = static_cast<int>(*msaa);
+  auto shadows = reader_.string_or(object, path, "shadows", output.soft_shadows ? "soft" : "hard");
+  if (!shadows) return shadows.error();
+  if (*shadows != "hard" && *shadows != "soft") {
+    return reader_.error("/output/shadows", "must be \"hard\" or \"soft\"");
+  }
+  output.soft_shadows = *shadows == "soft";
   auto background = reader_.color_or(object, path, "background", output.background);
   if (!background) return background.error();
   output.background = *background;

@@ -131,6 +131,9 @@ struct Output {
   int height = 720;  // pixels, even, [16, 4320]
   int fps = 30;      // [1, 240]
   int msaa = 4;      // samples: 1, 2, 4 or 8
+  // "hard": one filtered shadow-map comparison per pixel; "soft": four (wider penumbra, on
+  // lavapipe about a fifth more time per frame at 720p).
+  bool soft_shadows = false;
   Color background{0.02, 0.02, 0.03};
   double start_s = 0.0;
   std::optional<double> end_s;  // nullopt = the end of the music; else > start_s

@@ -475,7 +475,7 @@ Result<std::unique_ptr<Stage>> build_stage(const scene::Scene& scene, const Stag
   ModelCache cache(*stage, options.asset_dir.empty() ? default_asset_dir() : options.asset_dir);
   auto floor = cache.get("stage.glb");
   if (!floor) return floor.error();
-  cache.place(*floor, glm::mat4(1.0f));
+  stage->placed[cache.place(*floor, glm::mat4(1.0f))].casts_shadows = false;
   if (Status s = build_brass(*stage, cache); !s) return s.error();
   if (Status s = build_pianist(*stage, cache, content_dir); !s) return s.error();
   stage->start_s = scene.output.start_s;

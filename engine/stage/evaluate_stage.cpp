@@ -296,7 +296,7 @@ void evaluate_stage(Stage& stage, double t_s) {
 void collect_instances(const Stage& stage, std::vector<render::ModelInstance>& out) {
   out.clear();
   for (const PlacedModel& placed : stage.placed) {
-    out.push_back({placed.model, &placed.pose, placed.root});
+    out.push_back({placed.model, &placed.pose, placed.root, placed.casts_shadows});
   }
 }
 
@@ -319,7 +319,7 @@ render::Lighting lighting_of(const Stage& stage) {
   glm::vec3 lo(-1.0f, 0.0f, -1.0f);
   glm::vec3 hi(1.0f, 2.0f, 1.0f);
   for (const PlacedModel& placed : stage.placed) {
-    if (placed.model == 0) continue;  // the floor itself
+    if (!placed.casts_shadows) continue;  // the floor itself
     const glm::vec3 p = origin(placed.root);
     lo = glm::min(lo, p - glm::vec3(1.0f, 0.0f, 1.0f));
     hi = glm::max(hi, p + glm::vec3(1.0f, 2.0f, 1.0f));

@@ -46,6 +46,7 @@ struct PlacedModel {
   std::uint32_t model = 0;  // index into Stage::models
   glm::mat4 root{1.0f};
   model::ModelPose pose;
+  bool casts_shadows = true;  // the floor does not (it is under everything)
 };
 
 // Node indices in the default performer rig (-1 where the model lacks one).

@@ -102,6 +102,20 @@ TEST_F(RenderCommandTest, VideoOfTheSameSliceIsByteIdentical) {
   EXPECT_EQ(a, read_bytes(dir_ / "b.mp4"));
 }
 
+TEST_F(RenderCommandTest, SoftShadowsChangeThePicture) {
+  RenderOptions o;
+  o.scene = scene_path();
+  o.still = "6.0";
+  o.size = "320x180";
+  o.output = dir_ / "hard.png";
+  std::string error;
+  ASSERT_EQ(run(o, &error), 0) << error;
+  o.shadows = "soft";
+  o.output = dir_ / "soft.png";
+  ASSERT_EQ(run(o, &error), 0) << error;
+  EXPECT_NE(read_bytes(dir_ / "hard.png"), read_bytes(dir_ / "soft.png"));
+}
+
 TEST_F(RenderCommandTest, BadOptionsAreOneLineErrors) {
   struct Case {
     RenderOptions options;
@@ -117,6 +131,11 @@ TEST_F(RenderCommandTest, BadOptionsAreOneLineErrors) {
   {
     Case c{base(), "--size \"12x9\""};
     c.options.size = "12x9";
+    cases.push_back(c);
+  }
+  {
+    Case c{base(), "--shadows \"blurry\": must be hard or soft"};
+    c.options.shadows = "blurry";
     cases.push_back(c);
   }
   {

@@ -1,4 +1,4 @@
-// Milliseconds per frame of the two demo scenes at 1280x720, 4x MSAA, on the Vulkan device
+// Milliseconds per frame of the two demo scenes at 1280x720, 1x and 4x MSAA, on the Vulkan device
 // (lavapipe on a machine without a GPU): posing only, posing + rendering + readback, and all of
 // that + H.264 encoding through ffmpeg (what `tutti render -o OUT.mp4` does per frame). Frames
 // step at 30 fps through the scene so the systems and the camera cuts do real work.
@@ -31,7 +31,8 @@ struct Fixture {
   std::vector<const tutti::model::ModelAsset*> models;
 };
 
-std::unique_ptr<Fixture> make_fixture(benchmark::State& state, const char* scene_name) {
+std::unique_ptr<Fixture> make_fixture(benchmark::State& state, const char* scene_name,
+                                      VkSampleCountFlagBits samples) {
   auto scene = tutti::scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "content" /
                                         "scenes" / scene_name);
   if (!scene) {
@@ -51,8 +52,8 @@ std::unique_ptr<Fixture> make_fixture(benchmark::State& state, const char* scene
     return nullptr;
   }
   fixture->context = std::move(*context);
-  auto target = tutti::render::OffscreenTarget::create(*fixture->context, kWidth, kHeight, 2,
-                                                       VK_SAMPLE_COUNT_4_BIT);
+  auto target =
+      tutti::render::OffscreenTarget::create(*fixture->context, kWidth, kHeight, 2, samples);
   if (!target) {
     state.SkipWithError(target.error().message.c_str());
     return nullptr;
@@ -72,7 +73,8 @@ std::unique_ptr<Fixture> make_fixture(benchmark::State& state, const char* scene
 enum class Work { pose, render, encode };
 
 void run_frames(benchmark::State& state, const char* scene_name, Work work) {
-  auto fixture = make_fixture(state, scene_name);
+  const auto samples = static_cast<VkSampleCountFlagBits>(state.range(0));
+  auto fixture = make_fixture(state, scene_name, samples);
   if (!fixture) return;
   tutti::stage::Stage& stage = *fixture->stage;
   std::unique_ptr<tutti::app::VideoPipe> video;
@@ -121,6 +123,11 @@ void run_frames(benchmark::State& state, const char* scene_name, Work work) {
   if (video) (void)video->finish();
   std::error_code ignored;
   std::filesystem::remove(video_path, ignored);
+  if (work != Work::pose) {
+    const tutti::render::RenderStats& stats = fixture->renderer->last_stats();
+    state.counters["main_tris"] = static_cast<double>(stats.main_triangles);
+    state.counters["shadow_tris"] = static_cast<double>(stats.shadow_triangles);
+  }
   state.counters["fps"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
@@ -136,11 +143,35 @@ void BM_QuartetRenderEncode(benchmark::State& state) {
   run_frames(state, "quartet.json", Work::encode);
 }
 
-BENCHMARK(BM_PianoPose)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_QuartetPose)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_PianoRender)->Unit(benchmark::kMillisecond)->Iterations(90)->UseRealTime();
-BENCHMARK(BM_PianoRenderEncode)->Unit(benchmark::kMillisecond)->Iterations(90)->UseRealTime();
-BENCHMARK(BM_QuartetRender)->Unit(benchmark::kMillisecond)->Iterations(90)->UseRealTime();
-BENCHMARK(BM_QuartetRenderEncode)->Unit(benchmark::kMillisecond)->Iterations(90)->UseRealTime();
+BENCHMARK(BM_PianoPose)->ArgName("msaa")->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_QuartetPose)->ArgName("msaa")->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PianoRender)
+    ->ArgName("msaa")
+    ->Arg(1)
+    ->Arg(4)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(90)
+    ->UseRealTime();
+BENCHMARK(BM_PianoRenderEncode)
+    ->ArgName("msaa")
+    ->Arg(1)
+    ->Arg(4)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(90)
+    ->UseRealTime();
+BENCHMARK(BM_QuartetRender)
+    ->ArgName("msaa")
+    ->Arg(1)
+    ->Arg(4)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(90)
+    ->UseRealTime();
+BENCHMARK(BM_QuartetRenderEncode)
+    ->ArgName("msaa")
+    ->Arg(1)
+    ->Arg(4)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(90)
+    ->UseRealTime();
 
 }  // namespace

@@ -111,16 +111,53 @@ model::ModelAsset skinned_bar() {
   return asset;
 }
 
+// A UV sphere of radius 0.5 m (segments x rings quads), the kind of smooth mesh levels of
+// detail are for.
+model::ModelAsset dense_sphere(int segments, int rings) {
+  model::ModelAsset asset;
+  asset.source = "dense_sphere";
+  asset.materials.push_back({"white", {0.9f, 0.9f, 0.9f, 1.0f}, 0.0f, 0.5f, {}, false});
+  model::Primitive p;
+  p.material = 0;
+  for (int r = 0; r <= rings; ++r) {
+    const float theta = 3.14159265f * static_cast<float>(r) / static_cast<float>(rings);
+    for (int s = 0; s <= segments; ++s) {
+      const float phi = 2.0f * 3.14159265f * static_cast<float>(s) / static_cast<float>(segments);
+      model::Vertex v;
+      v.normal = {std::sin(theta) * std::cos(phi), std::cos(theta),
+                  std::sin(theta) * std::sin(phi)};
+      v.position = 0.5f * v.normal;
+      asset.vertices.push_back(v);
+    }
+  }
+  const auto at = [&](int r, int s) { return static_cast<std::uint32_t>(r * (segments + 1) + s); };
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      for (std::uint32_t i :
+           {at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s), at(r + 1, s + 1), at(r, s + 1)}) {
+        asset.indices.push_back(i);
+      }
+    }
+  }
+  p.vertex_count = static_cast<std::uint32_t>(asset.vertices.size());
+  p.index_count = static_cast<std::uint32_t>(asset.indices.size());
+  asset.meshes.push_back({"sphere", {p}, {}, {}});
+  add_node(asset, "sphere", 0, -1, {0, 0, 0});
+  return asset;
+}
+
 class ModelRendererTest : public test::VulkanTest {
  protected:
   std::vector<std::uint8_t> render(const std::vector<const model::ModelAsset*>& models,
                                    const std::vector<ModelInstance>& instances,
                                    const Camera& camera, VkSampleCountFlagBits samples,
-                                   const Lighting& lighting = {}) {
+                                   const Lighting& lighting = {},
+                                   const ModelRendererOptions& options = {},
+                                   RenderStats* stats = nullptr) {
     auto target = OffscreenTarget::create(context(), kWidth, kHeight, 2, samples);
     EXPECT_TRUE(target) << target.error().message;
     if (!target) return {};
-    auto renderer = ModelRenderer::create(context(), **target, models);
+    auto renderer = ModelRenderer::create(context(), **target, models, options);
     EXPECT_TRUE(renderer) << renderer.error().message;
     if (!renderer) return {};
     auto frame = (*target)->begin_frame();
@@ -128,6 +165,7 @@ class ModelRendererTest : public test::VulkanTest {
     Status recorded = (*renderer)->record(*frame, **target, instances, camera, lighting,
                                           {0.0f, 0.0f, 0.0f, 1.0f});
     EXPECT_TRUE(recorded) << recorded.error().message;
+    if (stats != nullptr) *stats = (*renderer)->last_stats();
     auto id = (*target)->end_frame();
     EXPECT_TRUE(id);
     std::vector<std::uint8_t> rgba;
@@ -181,6 +219,123 @@ TEST_F(ModelRendererTest, KeyLightCastsAShadowOfTheCubeOnTheFloor) {
   const int top = luminance(rgba, to_pixel(camera, {0.0f, 1.0f, 0.0f}));
   const int front = luminance(rgba, to_pixel(camera, {0.0f, 0.7f, 0.25f}));
   EXPECT_GT(top, front);
+}
+
+TEST_F(ModelRendererTest, FourShadowTapsSoftenTheEdgeAndOtherCountsAreErrors) {
+  const model::ModelAsset scene = floor_and_cube();
+  const Camera camera = look_at_camera({0, 3, 4}, {0, 0.3f, 0}, 45.0f, float(kWidth) / kHeight);
+  Lighting lighting;
+  lighting.key.direction = {0, -1, 0};
+  lighting.shadow_center = {0, 0.5f, 0};
+  lighting.shadow_radius = 3.0f;
+  // A small map makes the texels big enough to see the filter.
+  ModelRendererOptions hard;
+  hard.shadow_map_size = 256;
+  ModelRendererOptions soft = hard;
+  soft.shadow_taps = 4;
+  const auto one = render({&scene}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT,
+                          lighting, hard);
+  const auto four = render({&scene}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT,
+                           lighting, soft);
+  ASSERT_EQ(one.size(), four.size());
+  ASSERT_FALSE(one.empty());
+  // Both shadow the spot under the cube; they differ along the shadow's edge only.
+  const int lit = luminance(one, to_pixel(camera, {1.5f, 0.0f, 0.8f}));
+  EXPECT_LT(luminance(one, to_pixel(camera, {0.0f, 0.0f, 0.1f})) * 10, lit * 8);
+  EXPECT_LT(luminance(four, to_pixel(camera, {0.0f, 0.0f, 0.1f})) * 10, lit * 8);
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < one.size(); ++i) differing += one[i] != four[i] ? 1 : 0;
+  EXPECT_GT(differing, 0u);
+  EXPECT_LT(differing, one.size() / 20);
+
+  auto target = OffscreenTarget::create(context(), kWidth, kHeight, 2, VK_SAMPLE_COUNT_1_BIT);
+  ASSERT_TRUE(target) << target.error().message;
+  ModelRendererOptions wrong;
+  wrong.shadow_taps = 2;
+  const std::vector<const model::ModelAsset*> models = {&scene};
+  auto renderer = ModelRenderer::create(context(), **target, models, wrong);
+  ASSERT_FALSE(renderer);
+  EXPECT_NE(renderer.error().message.find("shadow_taps must be 1 or 4"), std::string::npos)
+      << renderer.error().message;
+}
+
+TEST_F(ModelRendererTest, FloorThatCastsNoShadowsLeavesNoShadow) {
+  const model::ModelAsset scene = floor_and_cube();
+  const Camera camera = look_at_camera({0, 3, 4}, {0, 0.3f, 0}, 45.0f, float(kWidth) / kHeight);
+  Lighting lighting;
+  lighting.key.direction = {0, -1, 0};
+  lighting.shadow_center = {0, 0.5f, 0};
+  lighting.shadow_radius = 3.0f;
+  RenderStats stats;
+  ModelInstance instance{0, nullptr, glm::mat4(1.0f)};
+  instance.casts_shadows = false;
+  const auto rgba =
+      render({&scene}, {instance}, camera, VK_SAMPLE_COUNT_1_BIT, lighting, {}, &stats);
+  ASSERT_EQ(rgba.size(), std::size_t{kWidth} * kHeight * 4);
+  EXPECT_EQ(stats.shadow_draws, 0u);
+  EXPECT_EQ(stats.main_draws, 2u);
+  const int under_cube = luminance(rgba, to_pixel(camera, {0.0f, 0.0f, 0.22f}));
+  const int lit = luminance(rgba, to_pixel(camera, {1.5f, 0.0f, 0.8f}));
+  EXPECT_NEAR(under_cube, lit, 12);
+}
+
+TEST_F(ModelRendererTest, CubeOutOfViewIsNotDrawnButStillCastsItsShadow) {
+  const model::ModelAsset scene = floor_and_cube();
+  // Looking steeply down at the floor in front of the cube: the cube (0.5 .. 1.0 m up) is above
+  // the view, its shadow in it.
+  const Camera camera =
+      look_at_camera({0, 0.45f, 0.9f}, {0, 0.0f, 0.6f}, 60.0f, float(kWidth) / kHeight);
+  Lighting lighting;
+  lighting.key.direction = glm::normalize(glm::vec3(0, -1, 1));  // the shadow falls toward +z
+  lighting.shadow_center = {0, 0.5f, 0};
+  lighting.shadow_radius = 3.0f;
+  RenderStats stats;
+  const auto rgba = render({&scene}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT,
+                           lighting, {}, &stats);
+  ASSERT_EQ(rgba.size(), std::size_t{kWidth} * kHeight * 4);
+  EXPECT_EQ(stats.candidates, 2u);
+  EXPECT_EQ(stats.main_draws, 1u) << "the cube is out of view";
+  EXPECT_EQ(stats.shadow_draws, 2u);
+  // The cube's shadow (offset +z by its height above the floor) vs open floor beside it.
+  const int shadowed = luminance(rgba, to_pixel(camera, {0.0f, 0.0f, 0.6f}));
+  const int lit = luminance(rgba, to_pixel(camera, {0.36f, 0.0f, 0.6f}));
+  EXPECT_LT(shadowed * 10, lit * 8) << "shadowed " << shadowed << ", lit " << lit;
+}
+
+TEST_F(ModelRendererTest, DistantModelsDrawCoarserLevelsAndStillCover) {
+  const model::ModelAsset sphere = dense_sphere(96, 48);
+  const std::uint64_t full = sphere.indices.size() / 3;
+  const auto at_distance = [&](float distance, float lod_pixel_error, RenderStats& stats) {
+    const Camera camera =
+        look_at_camera({0, 0, distance}, {0, 0, 0}, 30.0f, float(kWidth) / kHeight, 0.05f, 500.0f);
+    ModelRendererOptions options;
+    options.lod_pixel_error = lod_pixel_error;
+    return render({&sphere}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT, {},
+                  options, &stats);
+  };
+  RenderStats near_stats;
+  RenderStats far_stats;
+  RenderStats exact_stats;
+  (void)at_distance(0.7f, 1.0f, near_stats);
+  const auto far = at_distance(40.0f, 1.0f, far_stats);
+  const auto exact = at_distance(40.0f, 0.0f, exact_stats);
+  EXPECT_EQ(near_stats.main_triangles, full);
+  EXPECT_EQ(exact_stats.main_triangles, full);
+  EXPECT_LT(far_stats.main_triangles * 4, full) << far_stats.main_triangles << " of " << full;
+  // The coarse sphere covers the same pixels, give or take its outline.
+  ASSERT_EQ(far.size(), exact.size());
+  int coverage_far = 0;
+  int coverage_exact = 0;
+  int differing = 0;
+  for (std::size_t i = 0; i < far.size(); i += 4) {
+    const bool a = far[i] + far[i + 1] + far[i + 2] > 0;
+    const bool b = exact[i] + exact[i + 1] + exact[i + 2] > 0;
+    coverage_far += a ? 1 : 0;
+    coverage_exact += b ? 1 : 0;
+    differing += a != b ? 1 : 0;
+  }
+  EXPECT_GT(coverage_exact, 30);
+  EXPECT_LE(differing, coverage_exact / 5 + 4) << coverage_far << " vs " << coverage_exact;
 }
 
 TEST_F(ModelRendererTest, MultisamplingBlendsEdgesAndKeepsInteriors) {

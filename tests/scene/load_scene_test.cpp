@@ -162,7 +162,13 @@ TEST(SceneErrors, TheValidBaseLoads) {
   EXPECT_EQ(scene->performers.size(), 2u);
   EXPECT_EQ(scene->shots.size(), 3u);
   EXPECT_EQ(scene->output.width, 1280);  // defaults
+  EXPECT_FALSE(scene->output.soft_shadows);
   EXPECT_EQ(scene->lights.fill.intensity, 0.6);
+  json soft = valid_scene();
+  soft["output"] = {{"shadows", "soft"}};
+  auto with_soft = parse_scene(soft, "s.json", scenes_dir());
+  ASSERT_TRUE(with_soft.ok()) << with_soft.error().message;
+  EXPECT_TRUE(with_soft->output.soft_shadows);
 }
 
 TEST(SceneErrors, UnknownKeyAtTopLevel) {
@@ -230,6 +236,9 @@ TEST(SceneErrors, OutOfRange) {
   doc = valid_scene();
   doc["output"] = {{"msaa", 3}};
   EXPECT_EQ(error_of(doc), "s.json: /output/msaa: must be 1, 2, 4 or 8");
+  doc = valid_scene();
+  doc["output"] = {{"shadows", "blurry"}};
+  EXPECT_EQ(error_of(doc), "s.json: /output/shadows: must be \"hard\" or \"soft\"");
   doc = valid_scene();
   doc["output"] = {{"width", 641}};
   EXPECT_EQ(error_of(doc), "s.json: /output/width: must be even (for video encoders)");

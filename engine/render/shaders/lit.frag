@@ -5,6 +5,8 @@
 #include "frame_data.glsl"
 
 layout(set = 0, binding = 4) uniform sampler2DShadow shadow_map;
+// Shadow-map comparisons per pixel (ModelRendererOptions::shadow_taps): 1 or 4.
+layout(constant_id = 0) const uint SHADOW_TAPS = 1u;
 
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_world_normal;
@@ -24,7 +26,9 @@ float visibility_smith(float n_dot_v, float n_dot_l, float alpha) {
 }
 
 vec3 fresnel_schlick(float cos_theta, vec3 f0) {
-  return f0 + (1.0 - f0) * pow(1.0 - cos_theta, 5.0);
+  float m = 1.0 - cos_theta;
+  float m2 = m * m;
+  return f0 + (1.0 - f0) * (m2 * m2 * m);
 }
 
 vec3 direct_light(vec3 n, vec3 v, vec3 l, vec3 radiance, vec3 albedo, float metallic,
@@ -42,20 +46,21 @@ vec3 direct_light(vec3 n, vec3 v, vec3 l, vec3 radiance, vec3 albedo, float meta
   return (diffuse + specular) * radiance * n_dot_l;
 }
 
-// 2x2 taps, half a texel apart, of the hardware 2x2 comparison filter: a 3x3-texel footprint
-// at four lookups (lavapipe shades on the CPU: every tap counts).
-float key_shadow(vec3 world_position, vec3 n) {
-  vec3 l = -frame.key_direction.xyz;
+// The hardware 2x2 comparison filter, once (hard edges) or at four taps half a texel apart (a
+// 3x3-texel footprint, soft edges). Branch-free where it can be: lavapipe shades eight pixels
+// at a time on the CPU and runs both sides of a branch it cannot prove uniform. Outside the map the sampler's white
+// border reads as lit.
+float key_shadow(vec3 world_position, vec3 n, float n_dot_l) {
   // Normal offset keeps grazing surfaces from shadowing themselves.
   float texel = frame.key_color.w;
   vec3 offset_position = world_position + n * (texel * 1.5);
   vec4 clip = frame.light_view_projection * vec4(offset_position, 1.0);
   vec3 coords = clip.xyz / clip.w;
   vec2 uv = coords.xy * 0.5 + 0.5;
-  if (uv.x <= 0.0 || uv.x >= 1.0 || uv.y <= 0.0 || uv.y >= 1.0 || coords.z >= 1.0) return 1.0;
-  float bias = frame.key_direction.w * (1.0 + 2.0 * (1.0 - max(dot(n, l), 0.0)));
+  float bias = frame.key_direction.w * (1.0 + 2.0 * (1.0 - n_dot_l));
+  float depth = min(coords.z - bias, 1.0);
+  if (SHADOW_TAPS == 1u) return texture(shadow_map, vec3(uv, depth));
   vec2 half_texel = 0.5 / vec2(textureSize(shadow_map, 0));
-  float depth = coords.z - bias;
   float lit = texture(shadow_map, vec3(uv + vec2(-half_texel.x, -half_texel.y), depth)) +
               texture(shadow_map, vec3(uv + vec2(half_texel.x, -half_texel.y), depth)) +
               texture(shadow_map, vec3(uv + vec2(-half_texel.x, half_texel.y), depth)) +
@@ -79,11 +84,13 @@ void main() {
   float metallic = clamp(draw.material.x, 0.0, 1.0);
   float roughness = clamp(draw.material.y, 0.045, 1.0);
 
-  vec3 color = direct_light(n, v, -frame.key_direction.xyz, frame.key_color.rgb, albedo, metallic,
-                            roughness) *
-               key_shadow(in_world_position, n);
-  color += direct_light(n, v, -frame.fill_direction.xyz, frame.fill_color.rgb, albedo, metallic,
-                        roughness);
+  float key_n_dot_l = max(dot(n, -frame.key_direction.xyz), 0.0);
+  vec3 color = direct_light(n, v, -frame.key_direction.xyz, frame.key_color.rgb, albedo,
+                            metallic, roughness) *
+               key_shadow(in_world_position, n, key_n_dot_l);
+  // The fill is soft and dim: diffuse only.
+  color += albedo * (1.0 - metallic) / PI * frame.fill_color.rgb *
+           max(dot(n, -frame.fill_direction.xyz), 0.0);
 
   float up = n.y * 0.5 + 0.5;
   vec3 ambient = mix(frame.ground_color.rgb, frame.sky_color.rgb, up);
