@@ -81,6 +81,11 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--size", render.size, "WxH (default: the scene's)");
   render_cmd->add_option("--fps", render.fps, "frames per second (default: the scene's)");
   render_cmd->add_option("--msaa", render.msaa, "samples per pixel: 1, 2, 4 or 8");
+  render_cmd->add_option("--wav", render.wav, "also write the rendered range's audio (WAV)");
+  render_cmd->add_option("--soundfont", render.soundfont,
+                         "General MIDI .sf2 (default: $TUTTI_SOUNDFONT, then Debian's)");
+  bool no_audio = false;
+  render_cmd->add_flag("--no-audio", no_audio, "an .mp4 without a sound track");
   render_cmd->add_option("--shadows", render.shadows,
                          "hard (one shadow-map comparison per pixel) or soft (four)");
   render_cmd->add_option("--frames", render.frames, "A:B, frames A (inclusive) to B (exclusive)");
@@ -108,6 +113,7 @@ int main(int argc, char** argv) {
   if (*brass_cmd) return tutti::app::run_brass(brass, std::cout, std::cerr);
   if (*render_cmd) {
     render.progress = !no_progress;
+    render.audio = !no_audio;
     return tutti::app::run_render(render, std::cout, std::cerr);
   }
   return tutti::app::kExitBadInput;

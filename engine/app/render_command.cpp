@@ -10,7 +10,9 @@
 
 #include "app/exit_codes.hpp"
 #include "app/frame_range.hpp"
+#include "app/scene_audio.hpp"
 #include "app/video_pipe.hpp"
+#include "audio/wav_file.hpp"
 #include "image/png.hpp"
 #include "render/model_renderer.hpp"
 #include "render/offscreen_target.hpp"
@@ -175,10 +177,36 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   auto renderer = render::ModelRenderer::create(**context, **target, models, renderer_options);
   if (!renderer) return fail(renderer.error().message);
 
+  // Sound first: ffmpeg reads the WAV while the frames arrive. Without --wav the track goes
+  // through a temporary file next to the video, removed at the end.
+  const bool with_audio =
+      o.still.empty() && (!o.wav.empty() || (*kind == OutputKind::video && o.audio));
+  std::filesystem::path audio_file = o.wav;
+  struct RemoveOnExit {
+    std::filesystem::path path;
+    ~RemoveOnExit() {
+      std::error_code ignored;
+      if (!path.empty()) std::filesystem::remove(path, ignored);
+    }
+  } temporary_audio;
+  if (with_audio) {
+    SceneAudioOptions audio_options;
+    audio_options.sound_font = o.soundfont;
+    auto sound = render_scene_audio(st, fps, range.first, range.end, audio_options);
+    if (!sound) return fail(sound.error().message);
+    if (audio_file.empty()) {
+      audio_file = o.output;
+      audio_file += ".tutti-audio.wav";
+      temporary_audio.path = audio_file;
+    }
+    if (Status s = audio::write_wav(audio_file, *sound); !s) return fail(s.error().message);
+  }
+
   std::unique_ptr<VideoPipe> video;
   if (*kind == OutputKind::video) {
     auto opened = VideoPipe::open(o.output, static_cast<std::uint32_t>(width),
-                                  static_cast<std::uint32_t>(height), fps);
+                                  static_cast<std::uint32_t>(height), fps,
+                                  o.audio ? audio_file : std::filesystem::path{});
     if (!opened) return fail(opened.error().message);
     video = std::move(*opened);
   } else if (*kind == OutputKind::folder) {
@@ -248,7 +276,9 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   for (const std::string& note : st.notes) err << "note: " << note << "\n";
   out << "render: wrote " << o.output.string() << " (" << (range.end - range.first) << " frame"
       << (range.end - range.first == 1 ? "" : "s") << ", " << width << "x" << height << ", " << fps
-      << " fps)\n";
+      << " fps" << (*kind == OutputKind::video && with_audio && o.audio ? ", AAC audio" : "")
+      << ")\n";
+  if (!o.wav.empty()) out << "render: wrote " << o.wav.string() << " (48 kHz, 16-bit stereo)\n";
   return kExitOk;
 }
 

@@ -22,8 +22,11 @@ struct RenderOptions {
   std::string still;             // a time in seconds: one frame to a PNG
   std::string device;            // Vulkan device selector (index or name part)
   std::filesystem::path assets;  // folder of the generated .glb files (default: the build's)
-  bool validate = false;         // run with the Vulkan validation layer; any message fails
-  bool progress = true;          // progress on stderr
+  std::filesystem::path wav;     // also write the rendered range's audio here (16-bit PCM)
+  std::filesystem::path soundfont;  // General MIDI .sf2 (default: audio::find_sound_font)
+  bool audio = true;                // .mp4: an AAC track of the scene's music
+  bool validate = false;            // run with the Vulkan validation layer; any message fails
+  bool progress = true;             // progress on stderr
 };
 
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);

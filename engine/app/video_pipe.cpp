@@ -15,7 +15,8 @@ namespace tutti::app {
 
 Result<std::unique_ptr<VideoPipe>> VideoPipe::open(const std::filesystem::path& path,
                                                    std::uint32_t width, std::uint32_t height,
-                                                   int fps) {
+                                                   int fps,
+                                                   const std::filesystem::path& audio_wav) {
   // A dying ffmpeg must give an error from write(), not kill us with SIGPIPE.
   signal(SIGPIPE, SIG_IGN);
   std::unique_ptr<VideoPipe> pipe_out(new VideoPipe());
@@ -30,11 +31,23 @@ Result<std::unique_ptr<VideoPipe>> VideoPipe::open(const std::filesystem::path& 
   const std::string rate = std::to_string(fps);
   const std::string output = path.string();
   const std::string log = pipe_out->log_.string();
-  std::vector<std::string> args = {
-      "ffmpeg",   "-nostdin", "-y",      "-loglevel", "error",      "-f",       "rawvideo",
-      "-pix_fmt", "rgba",     "-s",      size,        "-r",         rate,       "-i",
-      "-",        "-an",      "-c:v",    "libx264",   "-preset",    "veryfast", "-crf",
-      "18",       "-pix_fmt", "yuv420p", "-movflags", "+faststart", output};
+  std::vector<std::string> args = {"ffmpeg", "-nostdin", "-y",       "-loglevel", "error",
+                                   "-f",     "rawvideo", "-pix_fmt", "rgba",      "-s",
+                                   size,     "-r",       rate,       "-i",        "-"};
+  if (audio_wav.empty()) {
+    args.push_back("-an");
+  } else {
+    args.emplace_back("-i");
+    args.push_back(audio_wav.string());
+    for (const char* a : {"-map", "0:v:0", "-map", "1:a:0", "-c:a", "aac", "-b:a", "192k"}) {
+      args.emplace_back(a);
+    }
+  }
+  for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt",
+                        "yuv420p", "-movflags", "+faststart"}) {
+    args.emplace_back(a);
+  }
+  args.push_back(output);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

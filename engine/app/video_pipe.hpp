@@ -1,5 +1,6 @@
 #pragma once
-// Encodes RGBA frames to H.264 (yuv420p, MP4) by piping them into Debian's ffmpeg; no shell is
+// Encodes RGBA frames to H.264 (yuv420p, MP4), with an optional AAC track from a WAV file, by
+// piping them into Debian's ffmpeg; no shell is
 // involved (fork + exec with an argument vector), so any file name is safe. x264 is deterministic:
 // the same frames give the same file.
 
@@ -17,10 +18,11 @@ namespace tutti::app {
 
 class VideoPipe {
  public:
-  // Starts `ffmpeg` (from PATH) writing `path`. An error when ffmpeg cannot be started.
+  // Starts `ffmpeg` (from PATH) writing `path`. With `audio_wav`, that file becomes the AAC
+  // audio track (192 kb/s). An error when ffmpeg cannot be started.
   static Result<std::unique_ptr<VideoPipe>> open(const std::filesystem::path& path,
-                                                 std::uint32_t width, std::uint32_t height,
-                                                 int fps);
+                                                 std::uint32_t width, std::uint32_t height, int fps,
+                                                 const std::filesystem::path& audio_wav = {});
   ~VideoPipe();
   VideoPipe(const VideoPipe&) = delete;
   VideoPipe& operator=(const VideoPipe&) = delete;

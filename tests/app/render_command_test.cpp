@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 
+#include "audio/wav_file.hpp"
 #include "render/vulkan_context.hpp"
 
 namespace tutti::app {
@@ -23,6 +25,20 @@ std::filesystem::path scene_path() {
 std::string read_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// ffprobe's "codec_type,duration" lines for every stream of `file` (Debian's ffmpeg package).
+std::string probe_streams(const std::filesystem::path& file) {
+  const std::string command =
+      "ffprobe -v error -show_entries stream=codec_type,duration -of csv=p=0 '" + file.string() +
+      "'";
+  std::string out;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
+    pclose(pipe);
+  }
+  return out;
 }
 
 class RenderCommandTest : public ::testing::Test {
@@ -102,6 +118,47 @@ TEST_F(RenderCommandTest, VideoOfTheSameSliceIsByteIdentical) {
   EXPECT_EQ(a, read_bytes(dir_ / "b.mp4"));
 }
 
+TEST_F(RenderCommandTest, VideoCarriesTheMusicAsAacOfTheSlicesLength) {
+  RenderOptions o;
+  o.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / "quartet.json";
+  o.frames = "60:120";
+  o.output = dir_ / "with.mp4";
+  std::string error;
+  ASSERT_EQ(run(o, &error), 0) << error;
+  EXPECT_EQ(probe_streams(dir_ / "with.mp4"), "video,2.000000\naudio,2.000000\n");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "with.mp4.tutti-audio.wav")) << "temporary kept";
+  o.audio = false;
+  o.output = dir_ / "without.mp4";
+  ASSERT_EQ(run(o, &error), 0) << error;
+  EXPECT_EQ(probe_streams(dir_ / "without.mp4"), "video,2.000000\n");
+}
+
+TEST_F(RenderCommandTest, ASlicesWavHasExactlyTheFullRendersSamples) {
+  RenderOptions o;
+  o.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / "quartet.json";
+  o.size = "32x18";
+  o.frames = "0:90";
+  o.output = dir_ / "full/";
+  o.wav = dir_ / "full.wav";
+  std::string error;
+  ASSERT_EQ(run(o, &error), 0) << error;
+  o.frames = "45:90";
+  o.output = dir_ / "slice/";
+  o.wav = dir_ / "slice.wav";
+  ASSERT_EQ(run(o, &error), 0) << error;
+  auto full = audio::read_wav(dir_ / "full.wav");
+  auto slice = audio::read_wav(dir_ / "slice.wav");
+  ASSERT_TRUE(full && slice);
+  ASSERT_EQ(full->frames(), 90 * 1600);  // 30 fps at 48 kHz: 1600 samples a frame
+  ASSERT_EQ(slice->frames(), 45 * 1600);
+  const std::vector<std::int16_t> tail(full->samples.begin() + 45 * 1600 * 2, full->samples.end());
+  EXPECT_EQ(slice->samples, tail);
+  // The quartet plays from its first beat: the first three seconds are not silence.
+  std::int64_t loud = 0;
+  for (std::int16_t v : full->samples) loud += std::abs(v) > 1000 ? 1 : 0;
+  EXPECT_GT(loud, 48000);
+}
+
 TEST_F(RenderCommandTest, SoftShadowsChangeThePicture) {
   RenderOptions o;
   o.scene = scene_path();
@@ -131,6 +188,11 @@ TEST_F(RenderCommandTest, BadOptionsAreOneLineErrors) {
   {
     Case c{base(), "--size \"12x9\""};
     c.options.size = "12x9";
+    cases.push_back(c);
+  }
+  {
+    Case c{base(), "/nonexistent/gm.sf2: no such sound font (given with --soundfont)"};
+    c.options.soundfont = "/nonexistent/gm.sf2";
     cases.push_back(c);
   }
   {
