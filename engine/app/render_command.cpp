@@ -134,6 +134,14 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   }
   const bool soft_shadows = o.shadows.empty() ? scene->output.soft_shadows : o.shadows == "soft";
 
+  int fixed_camera = -1;
+  if (!o.camera.empty()) {
+    fixed_camera = scene->find_camera(o.camera);
+    if (fixed_camera < 0) {
+      return fail("--camera \"" + o.camera + "\": " + scene->source + " has no such camera");
+    }
+  }
+
   stage::StageOptions stage_options;
   stage_options.asset_dir = o.assets;
   auto stage = stage::build_stage(*scene, stage_options);
@@ -258,8 +266,12 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     stage::collect_instances(st, instances);
     auto frame = (*target)->begin_frame();
     if (!frame) return fail(frame.error().message);
-    if (Status s = (*renderer)->record(*frame, **target, instances, stage::camera_at(st, t, aspect),
-                                       lighting, clear);
+    if (Status s = (*renderer)->record(
+            *frame, **target, instances,
+            fixed_camera >= 0
+                ? stage::scene_camera(st, static_cast<std::size_t>(fixed_camera), aspect)
+                : stage::camera_at(st, t, aspect),
+            lighting, clear);
         !s) {
       return fail(s.error().message);
     }

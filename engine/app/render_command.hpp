@@ -16,6 +16,7 @@ struct RenderOptions {
   std::string size;              // "WxH", default: the scene's output size
   int fps = 0;                   // 0 = the scene's
   int msaa = 0;                  // 0 = the scene's
+  std::string camera;            // a scene camera's name: every frame through it (no shot list)
   std::string shadows;           // "hard" or "soft"; empty = the scene's
   std::string frames;            // "A:B": frames A (inclusive) to B (exclusive)
   std::string seconds;           // "A:B": the frames whose times fall in [A, B)

@@ -467,11 +467,12 @@ Status SceneParser::parse_output(const json& document, Output& output) const {
   auto background = reader_.color_or(object, path, "background", output.background);
   if (!background) return background.error();
   output.background = *background;
-  auto start = reader_.number_or(object, path, "start_s", 0.0, 86400.0, output.start_s);
+  // Negative: a pre-roll before the music (the lead's cue, the first breath).
+  auto start = reader_.number_or(object, path, "start_s", -60.0, 86400.0, output.start_s);
   if (!start) return start.error();
   output.start_s = *start;
   if (object.contains("end_s") && !object.at("end_s").is_null()) {
-    auto end = reader_.number(object, path, "end_s", 0.0, 86400.0);
+    auto end = reader_.number(object, path, "end_s", -60.0, 86400.0);
     if (!end) return end.error();
     if (*end <= output.start_s) {
       return reader_.error("/output/end_s",

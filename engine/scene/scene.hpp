@@ -135,7 +135,7 @@ struct Output {
   // lavapipe about a fifth more time per frame at 720p).
   bool soft_shadows = false;
   Color background{0.02, 0.02, 0.03};
-  double start_s = 0.0;
+  double start_s = 0.0;          // [-60, 86400]; < 0 = a pre-roll before the music starts
   std::optional<double> end_s;  // nullopt = the end of the music; else > start_s
 };
 

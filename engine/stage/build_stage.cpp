@@ -10,6 +10,7 @@
 #include "brass_motion/brass_pose_system.hpp"
 #include "brass_motion/breath_params.hpp"
 #include "brass_motion/plan_brass_player.hpp"
+#include "components/body_motion.hpp"
 #include "components/breath.hpp"
 #include "components/finger.hpp"
 #include "components/hand.hpp"
@@ -19,6 +20,7 @@
 #include "components/slide.hpp"
 #include "components/valve.hpp"
 #include "content/content_dir.hpp"
+#include "ensemble_variation/ensemble_variation_system.hpp"
 #include "finger_motion/finger_motion_params.hpp"
 #include "finger_motion/finger_pose_system.hpp"
 #include "finger_motion/plan_finger_motion.hpp"
@@ -228,6 +230,7 @@ Status build_brass(Stage& stage, ModelCache& cache) {
   auto chair_model = cache.get("chair.glb");
   if (!chair_model) return chair_model.error();
 
+  std::vector<ensemble::PerformerInput> ensemble_inputs;
   for (const scene::Performer& performer : stage.scene.performers) {
     const music::Score& score = stage.scores[performer.music_file];
     auto instrument = brass::load_instrument_by_id(performer.instrument);
@@ -315,8 +318,32 @@ Status build_brass(Stage& stage, ModelCache& cache) {
       cache.place(*chair_model, glm::translate(seat.placement, glm::vec3(0, 0, -0.12f)));
     }
     stage.brass.push_back(seat);
+
+    ensemble::PerformerInput input;
+    input.seed = performer.seed;
+    input.params = ensemble::resolve_variation(performer.seed, performer.variation);
+    input.lead = performer.lead;
+    input.score = &score;
+    input.breaths = &player->breaths;
+    if (!player->motion.sounding.empty()) {
+      input.first_onset_s = player->motion.sounding.front().onset_s;
+      input.last_offset_s = player->motion.sounding.back().offset_s;
+    }
+    ensemble_inputs.push_back(input);
+    stage.ensemble_players.push_back(player);
   }
   brass::register_brass_motion(stage.schedule);
+  if (!stage.brass.empty()) {
+    auto ensemble_plan = ensemble::plan_ensemble(ensemble_inputs);
+    if (!ensemble_plan) return ensemble_plan.error();
+    stage.ensemble = std::make_shared<const ensemble::EnsemblePlan>(std::move(*ensemble_plan));
+    for (std::size_t i = 0; i < stage.brass.size(); ++i) {
+      stage.world.add<ensemble::EnsembleMotionHandle>(
+          stage.brass[i].performer, ensemble::EnsembleMotionHandle{stage.ensemble, i});
+      stage.world.add<components::BodyMotion>(stage.brass[i].performer);
+    }
+    ensemble::register_ensemble_variation(stage.schedule);
+  }
   return Status::success();
 }
 

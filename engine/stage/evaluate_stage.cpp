@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "components/body_motion.hpp"
 #include "components/breath.hpp"
 #include "components/finger.hpp"
 #include "components/hand.hpp"
@@ -79,6 +80,33 @@ void pose_body_base(const BodyNodes& n, bool seated, const model::ModelAsset& bo
   }
 }
 
+// The ensemble's motion on the default rig (player facing +Z, their left +X, identity rest
+// rotations): weight on one foot, knees, sway and twist from the spine, the breathing chest, the
+// head's nod.
+void pose_body_motion(const BodyNodes& n, bool seated, const model::ModelAsset& body,
+                      const components::BodyMotion& m, model::ModelPose& pose) {
+  if (n.hips >= 0) {
+    glm::vec3& hips = pose.local[static_cast<std::size_t>(n.hips)].translation;
+    hips.x += m.hips_shift_m;
+    if (!seated && m.knee_flex_m > 0.0f && n.shin_left >= 0) {
+      // Thigh forward and shin back by the same angle keep the feet where they were.
+      const float leg =
+          glm::length(body.nodes[static_cast<std::size_t>(n.shin_left)].rest.translation);
+      const float angle = std::acos(std::clamp(1.0f - m.knee_flex_m / (2.0f * leg), 0.5f, 1.0f));
+      for (int thigh : {n.thigh_left, n.thigh_right}) turn(pose, thigh, -angle, {1, 0, 0});
+      for (int shin : {n.shin_left, n.shin_right}) turn(pose, shin, 2.0f * angle, {1, 0, 0});
+      hips.y -= 2.0f * leg * (1.0f - std::cos(angle));
+    }
+  }
+  turn(pose, n.spine, -m.sway_rad, {0, 0, 1});
+  turn(pose, n.spine, m.twist_rad, {0, 1, 0});
+  turn(pose, n.chest, -m.lean_back_rad, {1, 0, 0});
+  turn(pose, n.neck, 0.6f * m.lean_back_rad, {1, 0, 0});
+  if (n.chest >= 0)
+    pose.local[static_cast<std::size_t>(n.chest)].translation.y += m.shoulder_lift_m;
+  turn(pose, n.head, m.head_nod_rad, {1, 0, 0});
+}
+
 void pose_brass(Stage& stage, BrassSeat& seat) {
   PlacedModel& horn = stage.placed[seat.horn];
   const model::ModelAsset& horn_asset = *stage.models[horn.model];
@@ -107,16 +135,25 @@ void pose_brass(Stage& stage, BrassSeat& seat) {
   // Lips of a 1.75 m player, or the rig's mouth node.
   glm::vec3 lips = origin(seat.placement) + glm::vec3(facing * glm::vec4(0, 1.58f, 0.1f, 0));
   PlacedModel* body = seat.body ? &stage.placed[*seat.body] : nullptr;
+  const components::BodyMotion* body_motion = nullptr;
   std::vector<glm::mat4>& body_world = stage.scratch_body_world;
   if (body != nullptr) {
     const model::ModelAsset& body_asset = *stage.models[body->model];
     reset_pose(body_asset, body->pose);
     const auto* mouth = stage.world.try_get<components::Mouth>(seat.performer);
     const auto* breath = stage.world.try_get<components::Breath>(seat.performer);
-    pose_body_base(seat.body_nodes, seat.seated && !seat.body_nodes.mapped, body_asset, breath,
-                   body->pose);
+    body_motion = stage.world.try_get<components::BodyMotion>(seat.performer);
+    // With ensemble motion the breathing body comes from it (per-player depth); without, from
+    // the Breath component alone.
+    pose_body_base(seat.body_nodes, seat.seated && !seat.body_nodes.mapped, body_asset,
+                   body_motion != nullptr ? nullptr : breath, body->pose);
+    if (body_motion != nullptr && !seat.body_nodes.mapped) {
+      pose_body_motion(seat.body_nodes, seat.seated, body_asset, *body_motion, body->pose);
+    }
     if (mouth != nullptr) {
-      set_morph(body->pose, seat.body_nodes.morph_tension, mouth->tension);
+      // A phrase that outlasts the air strains the face.
+      const double strain = breath != nullptr ? 0.8 * breath->strain : 0.0;
+      set_morph(body->pose, seat.body_nodes.morph_tension, std::max(mouth->tension, strain));
       set_morph(body->pose, seat.body_nodes.morph_open, mouth->open);
     }
     body_world.resize(body_asset.nodes.size());
@@ -128,7 +165,8 @@ void pose_brass(Stage& stage, BrassSeat& seat) {
   // The instrument hangs from the lips: its mouthpiece at the mouth, pointing where the player
   // faces, the bell a little down. The generated instruments point their bell along -Z (their
   // player at +Z); performers face +Z.
-  const float tilt = seat.trombone ? -0.08f : -0.16f;
+  const float tilt = (seat.trombone ? -0.08f : -0.16f) +
+                     (body_motion != nullptr ? body_motion->bell_lift_rad : 0.0f);
   horn.root = glm::translate(glm::mat4(1.0f), lips) * facing *
               glm::rotate(glm::mat4(1.0f), kPi, glm::vec3(0, 1, 0)) *
               glm::rotate(glm::mat4(1.0f), tilt, glm::vec3(1, 0, 0)) *
@@ -302,6 +340,12 @@ void collect_instances(const Stage& stage, std::vector<render::ModelInstance>& o
 
 render::Camera camera_at(const Stage& stage, double t_s, float aspect) {
   const scene::Camera& camera = stage.scene.camera_at(t_s);
+  return render::look_at_camera(to_vec3(camera.position_m), to_vec3(camera.target_m),
+                                static_cast<float>(camera.fov_deg), aspect);
+}
+
+render::Camera scene_camera(const Stage& stage, std::size_t index, float aspect) {
+  const scene::Camera& camera = stage.scene.cameras[index];
   return render::look_at_camera(to_vec3(camera.position_m), to_vec3(camera.target_m),
                                 static_cast<float>(camera.fov_deg), aspect);
 }

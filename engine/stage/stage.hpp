@@ -26,6 +26,13 @@
 #include "scene/scene.hpp"
 #include "stage/two_bone_ik.hpp"
 
+namespace tutti::ensemble {
+struct EnsemblePlan;
+}
+namespace tutti::brass {
+struct BrassPlayerMotion;
+}
+
 namespace tutti::brass {
 struct Instrument;
 }
@@ -108,6 +115,10 @@ struct Stage {
   std::vector<std::unique_ptr<model::ModelAsset>> models;
   std::vector<PlacedModel> placed;
   std::vector<BrassSeat> brass;
+  // The ensemble's body motion (every brass player, in `brass` order) and the brass plans it
+  // points into (kept alive here).
+  std::shared_ptr<const ensemble::EnsemblePlan> ensemble;
+  std::vector<std::shared_ptr<const brass::BrassPlayerMotion>> ensemble_players;
   std::unique_ptr<PianistSeat> pianist;
   ecs::World world;
   ecs::Schedule schedule;
@@ -130,6 +141,8 @@ void evaluate_stage(Stage& stage, double t_s);
 // The model instances as the renderer wants them (pointing into stage.placed).
 void collect_instances(const Stage& stage, std::vector<render::ModelInstance>& out);
 render::Camera camera_at(const Stage& stage, double t_s, float aspect);
+// The scene's camera number `camera` (Scene::cameras), whatever the shot list says.
+render::Camera scene_camera(const Stage& stage, std::size_t camera, float aspect);
 render::Lighting lighting_of(const Stage& stage);
 
 }  // namespace tutti::stage

@@ -137,12 +137,12 @@ TEST_F(RenderCommandTest, ASlicesWavHasExactlyTheFullRendersSamples) {
   RenderOptions o;
   o.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / "quartet.json";
   o.size = "32x18";
-  o.frames = "0:90";
+  o.frames = "90:180";  // 0.5 .. 3.5 s of the music (the scene starts 2.5 s before it)
   o.output = dir_ / "full/";
   o.wav = dir_ / "full.wav";
   std::string error;
   ASSERT_EQ(run(o, &error), 0) << error;
-  o.frames = "45:90";
+  o.frames = "135:180";
   o.output = dir_ / "slice/";
   o.wav = dir_ / "slice.wav";
   ASSERT_EQ(run(o, &error), 0) << error;
@@ -153,10 +153,30 @@ TEST_F(RenderCommandTest, ASlicesWavHasExactlyTheFullRendersSamples) {
   ASSERT_EQ(slice->frames(), 45 * 1600);
   const std::vector<std::int16_t> tail(full->samples.begin() + 45 * 1600 * 2, full->samples.end());
   EXPECT_EQ(slice->samples, tail);
-  // The quartet plays from its first beat: the first three seconds are not silence.
+  // Three seconds of the quartet playing are not silence.
   std::int64_t loud = 0;
   for (std::int16_t v : full->samples) loud += std::abs(v) > 1000 ? 1 : 0;
   EXPECT_GT(loud, 48000);
+}
+
+TEST_F(RenderCommandTest, AFixedCameraOverridesTheShotList) {
+  // At 3.0 s the quartet's shot list shows "wide"; at 5.0 s "lead_trumpet".
+  RenderOptions o;
+  o.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / "quartet.json";
+  o.size = "160x90";
+  std::string error;
+  const auto still = [&](const char* t, const char* camera, const char* name) {
+    o.still = t;
+    o.camera = camera;
+    o.output = dir_ / name;
+    EXPECT_EQ(run(o, &error), 0) << error;
+    return read_bytes(dir_ / name);
+  };
+  const std::string shots = still("5.0", "", "shots.png");
+  const std::string lead = still("5.0", "lead_trumpet", "lead.png");
+  const std::string wide = still("5.0", "wide", "wide.png");
+  EXPECT_EQ(shots, lead);
+  EXPECT_NE(shots, wide);
 }
 
 TEST_F(RenderCommandTest, SoftShadowsChangeThePicture) {
@@ -193,6 +213,11 @@ TEST_F(RenderCommandTest, BadOptionsAreOneLineErrors) {
   {
     Case c{base(), "/nonexistent/gm.sf2: no such sound font (given with --soundfont)"};
     c.options.soundfont = "/nonexistent/gm.sf2";
+    cases.push_back(c);
+  }
+  {
+    Case c{base(), "--camera \"drone\": "};
+    c.options.camera = "drone";
     cases.push_back(c);
   }
   {

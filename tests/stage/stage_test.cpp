@@ -10,8 +10,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "components/body_motion.hpp"
 #include "components/finger.hpp"
 #include "components/valve.hpp"
+#include "ensemble_variation/ensemble_plan.hpp"
 #include "scene/load_scene.hpp"
 
 namespace tutti::stage {
@@ -70,6 +72,38 @@ TEST(Stage, PoseAtTIsAPureFunctionOfT) {
     EXPECT_TRUE(same(first, poses(*stage))) << name;
     EXPECT_GT(moved, 40) << name << ": the pose barely changes over 30 s";
   }
+}
+
+TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
+  auto stage = build(kSource / "content" / "scenes" / "quartet.json");
+  ASSERT_TRUE(stage);
+  ASSERT_TRUE(stage->ensemble);
+  ASSERT_EQ(stage->ensemble->performers.size(), 4u);
+  EXPECT_EQ(stage->ensemble->lead, 0);  // "Trumpet 1 leads"
+  const ensemble::CueMotion& cue = *stage->ensemble->performers[0].cue;
+  EXPECT_NEAR(cue.dip_s, stage->ensemble->entrance_s, 1e-9);
+  // The lead's bell at the top of the cue, in the rendered pose: the generated trumpet's bell
+  // points along its -Z, which rises in the world as the bell lifts.
+  const BrassSeat& lead = stage->brass[0];
+  const auto bell_rise = [&](double t) {
+    evaluate_stage(*stage, t);
+    return (stage->placed[lead.horn].root * glm::vec4(0, 0, -1, 0)).y;
+  };
+  const float before = bell_rise(cue.start_s - 0.01);
+  const float lifted = bell_rise(cue.lift_s);
+  EXPECT_GT(lifted - before, 0.1f) << "bell direction y " << before << " -> " << lifted;
+  std::printf("quartet: first entrance %.3f s, the lead's cue %.3f .. %.3f s\n",
+              stage->ensemble->entrance_s, cue.start_s, cue.end_s);
+  // Over the piece the four bodies move differently: their hips and spines differ.
+  int differing = 0;
+  for (double t = 5.0; t < 35.0; t += 1.0) {
+    evaluate_stage(*stage, t);
+    const auto* a = stage->world.try_get<components::BodyMotion>(stage->brass[0].performer);
+    const auto* b = stage->world.try_get<components::BodyMotion>(stage->brass[1].performer);
+    ASSERT_TRUE(a && b);
+    differing += std::abs(a->sway_rad - b->sway_rad) > 0.005f ? 1 : 0;
+  }
+  EXPECT_GT(differing, 15);
 }
 
 TEST(Stage, PressedKeysTurnTheirNodes) {

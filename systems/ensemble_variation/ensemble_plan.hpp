@@ -1,0 +1,91 @@
+#pragma once
+// The ensemble's body motion, planned once per scene (Horii 2018: sway, weight shifts, breathing,
+// the lead's cue, per-player variation), then evaluated per frame as a pure function of t
+// (evaluate_body_motion.hpp). Every player follows the beat of their own score's tempo map.
+//
+//  - Sway: the upper body leans side to side, amplitude 0.5..4 deg (sway_amount), one cycle per
+//    2..8 beats (sway_period), starting sway_phase into it; the torso twists a little with it.
+//    While the player is idle (before 2 s ahead of their first breath, 2 s after their last note)
+//    it keeps 30 % of its size.
+//  - Weight shifts: at the bar lines, every 8..1 bars (weight_shift_rate), the hips move to the
+//    other foot (±1.2..2.2 cm) over one beat.
+//  - Breathing: at every BreathEvent of the player's breath plan the chest leans back (up to
+//    1.8..4.5 deg by breath_depth, times the event's depth) and the shoulders rise (up to 6..15
+//    mm), rising from the event's preparation (or inhale) start to its end, released over the
+//    following 0.35 s.
+//  - The lead's cue, before the first entrance E (the earliest first note of any player, one
+//    beat b long there): the bell lifts from E - b to E - b/2, dips to its lowest at E as the
+//    knees flex (up to 3 cm), and settles by E + b/2. Size 0.3..1 of the full gesture
+//    (cue_strength: 0.14 rad of bell lift). Followers answer with the same shape at a third of
+//    their cue_strength, 60..140 ms late (reaction).
+//  - Head: nods with the sway at half its rate, 1..4 deg (head_motion).
+// Players who breathe in the same rest move together (their breath plans share the rest's
+// window) but not alike: depth, sway and phase are theirs.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "brass_motion/breath_plan.hpp"
+#include "core/result.hpp"
+#include "ensemble_variation/variation_params.hpp"
+#include "music/score.hpp"
+
+namespace tutti::ensemble {
+
+struct WeightShift {
+  double start_s = 0.0;
+  double end_s = 0.0;
+  float from_m = 0.0f;
+  float to_m = 0.0f;
+};
+
+struct BreathMotion {
+  double rise_start_s = 0.0;  // the breath's preparation start, or its inhale start
+  double peak_s = 0.0;        // the inhale's end
+  double release_end_s = 0.0;
+  float size = 0.0f;  // event depth x (0.4 + 0.6 breath_depth)
+};
+
+struct CueMotion {
+  double start_s = 0.0;  // E - b (+ reaction delay for a follower)
+  double lift_s = 0.0;   // E - b/2: the bell at its highest
+  double dip_s = 0.0;    // E: lowest bell, knees most flexed
+  double end_s = 0.0;    // E + b/2
+  float strength = 0.0f;
+};
+
+struct PerformerMotionPlan {
+  VariationParams params;
+  music::TempoMap tempo;
+  float sway_amplitude_rad = 0.0f;
+  double sway_period_beats = 4.0;
+  float head_amplitude_rad = 0.0f;
+  double active_start_s = 0.0;
+  double active_end_s = 0.0;
+  float initial_shift_m = 0.0f;
+  std::vector<WeightShift> weight_shifts;  // in time order, not overlapping
+  std::vector<BreathMotion> breaths;       // in time order
+  std::optional<CueMotion> cue;            // the lead's cue, or a follower's answer
+};
+
+struct PerformerInput {
+  std::uint64_t seed = 0;
+  VariationParams params;
+  bool lead = false;
+  const music::Score* score = nullptr;  // the player's score (tempo map, time signatures)
+  const brass::BreathPlan* breaths = nullptr;
+  double first_onset_s = 0.0;  // first note the player plays
+  double last_offset_s = 0.0;
+};
+
+struct EnsemblePlan {
+  std::vector<PerformerMotionPlan> performers;  // in the order of the inputs
+  int lead = -1;                                // index of the lead, -1 = none
+  double entrance_s = 0.0;                      // E: the first entrance of anyone
+};
+
+// Deterministic: the same inputs give the same plan. Inputs without a score are an error.
+Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& performers);
+
+}  // namespace tutti::ensemble
