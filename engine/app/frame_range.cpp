@@ -57,7 +57,7 @@ Result<FrameRange> parse_frame_range(const std::string& text, std::int64_t total
 }
 
 Result<FrameRange> parse_seconds_range(const std::string& text, double start_s, int fps,
-                                       std::int64_t total) {
+                                       std::int64_t total, double tempo_factor) {
   auto sides = split(text, "--seconds");
   if (!sides) return sides.error();
   FrameRange range{0, total};
@@ -66,7 +66,7 @@ Result<FrameRange> parse_seconds_range(const std::string& text, double start_s, 
     if (s.empty()) continue;
     auto value = parse_number(s, "--seconds");
     if (!value) return value.error();
-    const std::int64_t frame = frame_count(start_s, *value, fps);
+    const std::int64_t frame = frame_count(0.0, (*value - start_s) / tempo_factor, fps);
     (side == 0 ? range.first : range.end) = std::clamp<std::int64_t>(frame, 0, total);
   }
   if (range.first >= range.end) {

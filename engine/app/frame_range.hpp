@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "audio_sync/audio_clock.hpp"
 #include "core/result.hpp"
 
 namespace tutti::app {
@@ -19,12 +20,14 @@ std::int64_t frame_count(double start_s, double end_s, int fps);
 
 // "A:B" (either side may be empty: from the first / to the last frame) in frame numbers.
 Result<FrameRange> parse_frame_range(const std::string& text, std::int64_t total);
-// "A:B" in seconds of the music: the frames whose times lie in [A, B).
+// "A:B" in seconds of the music: the frames whose times lie in [A, B) (at a practice tempo,
+// frame k shows start_s + k / fps x tempo_factor).
 Result<FrameRange> parse_seconds_range(const std::string& text, double start_s, int fps,
-                                       std::int64_t total);
+                                       std::int64_t total, double tempo_factor = 1.0);
 
-inline double frame_time(double start_s, int fps, std::int64_t frame) {
-  return start_s + static_cast<double>(frame) / fps;
+// The score time frame k shows: audio_sync's offline clock.
+inline double frame_time(double start_s, int fps, std::int64_t frame, double tempo_factor = 1.0) {
+  return audio_sync::offline_frame_time(start_s, fps, frame, tempo_factor);
 }
 
 }  // namespace tutti::app

@@ -86,6 +86,8 @@ int main(int argc, char** argv) {
                          "General MIDI .sf2 (default: $TUTTI_SOUNDFONT, then Debian's)");
   bool no_audio = false;
   render_cmd->add_flag("--no-audio", no_audio, "an .mp4 without a sound track");
+  render_cmd->add_option("--tempo", render.tempo,
+                         "practice tempo, 0.1..4 (0.5 = half speed: picture and sound)");
   render_cmd->add_option("--camera", render.camera,
                          "render every frame through this scene camera (ignore the shot list)");
   render_cmd->add_option("--shadows", render.shadows,

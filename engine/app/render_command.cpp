@@ -148,7 +148,8 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (!stage) return fail((*scene).source + ": " + stage.error().message);
   stage::Stage& st = **stage;
 
-  const std::int64_t total = frame_count(st.start_s, st.end_s, fps);
+  if (!(o.tempo >= 0.1 && o.tempo <= 4.0)) return fail("--tempo: must be in [0.1, 4]");
+  const std::int64_t total = frame_count(0.0, (st.end_s - st.start_s) / o.tempo, fps);
   FrameRange range{0, total};
   if (!o.still.empty()) {
     char* end = nullptr;
@@ -164,7 +165,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     if (!parsed) return fail(parsed.error().message);
     range = *parsed;
   } else if (!o.seconds.empty()) {
-    auto parsed = parse_seconds_range(o.seconds, st.start_s, fps, total);
+    auto parsed = parse_seconds_range(o.seconds, st.start_s, fps, total, o.tempo);
     if (!parsed) return fail(parsed.error().message);
     range = *parsed;
   }
@@ -200,6 +201,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (with_audio) {
     SceneAudioOptions audio_options;
     audio_options.sound_font = o.soundfont;
+    audio_options.tempo_factor = o.tempo;
     auto sound = render_scene_audio(st, fps, range.first, range.end, audio_options);
     if (!sound) return fail(sound.error().message);
     if (audio_file.empty()) {
@@ -260,8 +262,8 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     return Status::success();
   };
   for (std::int64_t k = range.first; k < range.end; ++k) {
-    const double t =
-        o.still.empty() ? frame_time(st.start_s, fps, k) : std::strtod(o.still.c_str(), nullptr);
+    const double t = o.still.empty() ? frame_time(st.start_s, fps, k, o.tempo)
+                                     : std::strtod(o.still.c_str(), nullptr);
     stage::evaluate_stage(st, t);
     stage::collect_instances(st, instances);
     auto frame = (*target)->begin_frame();

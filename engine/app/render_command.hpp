@@ -16,6 +16,7 @@ struct RenderOptions {
   std::string size;              // "WxH", default: the scene's output size
   int fps = 0;                   // 0 = the scene's
   int msaa = 0;                  // 0 = the scene's
+  double tempo = 1.0;            // practice tempo: 0.5 = half speed, picture and sound alike
   std::string camera;            // a scene camera's name: every frame through it (no shot list)
   std::string shadows;           // "hard" or "soft"; empty = the scene's
   std::string frames;            // "A:B": frames A (inclusive) to B (exclusive)

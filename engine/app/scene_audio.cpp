@@ -26,6 +26,7 @@ Result<audio::AudioBuffer> render_scene_audio(const stage::Stage& stage, int fps
   audio::TimelineOptions timeline_options;
   timeline_options.sample_rate = options.sample_rate;
   timeline_options.start_s = stage.start_s;
+  timeline_options.tempo_factor = options.tempo_factor;
   auto timeline = audio::build_synth_timeline(scores, timeline_options);
   if (!timeline) return timeline.error();
   const std::int64_t from = audio_frame_of_video_frame(first_frame, fps, options.sample_rate);

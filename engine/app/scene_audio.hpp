@@ -15,6 +15,7 @@ namespace tutti::app {
 struct SceneAudioOptions {
   std::filesystem::path sound_font;  // empty: find_sound_font()'s search
   int sample_rate = 48000;
+  double tempo_factor = 1.0;  // practice tempo (the frames are at the same factor)
 };
 
 Result<audio::AudioBuffer> render_scene_audio(const stage::Stage& stage, int fps,

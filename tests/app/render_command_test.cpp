@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -179,6 +180,50 @@ TEST_F(RenderCommandTest, AFixedCameraOverridesTheShotList) {
   EXPECT_NE(shots, wide);
 }
 
+// The first frame (at 48 kHz) where either channel exceeds `threshold`, -1 if none.
+std::int64_t first_loud_frame(const audio::AudioBuffer& audio, int threshold) {
+  for (std::size_t i = 0; i < audio.samples.size(); ++i) {
+    if (std::abs(audio.samples[i]) > threshold) return static_cast<std::int64_t>(i / 2);
+  }
+  return -1;
+}
+
+TEST_F(RenderCommandTest, HalfTempoSlowsPictureAndSoundTogether) {
+  RenderOptions o;
+  o.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / "quartet.json";
+  o.size = "32x18";
+  std::string error;
+  // Frame 31 at half tempo shows the score at -2.5 + 31 / 30 x 0.5 s.
+  o.tempo = 0.5;
+  o.frames = "31:32";
+  o.output = dir_ / "slow/";
+  ASSERT_EQ(run(o, &error), 0) << error;
+  RenderOptions still = o;
+  still.tempo = 1.0;
+  still.frames.clear();
+  still.still = std::to_string(-2.5 + 31.0 / 30.0 * 0.5);
+  still.output = dir_ / "still.png";
+  ASSERT_EQ(run(still, &error), 0) << error;
+  EXPECT_EQ(read_bytes(dir_ / "slow" / "frame_000031.png"), read_bytes(dir_ / "still.png"));
+  // The music starts at score time 0, 2.5 s into the scene: heard 2.5 s in at full tempo,
+  // 5 s in at half tempo. A one-second slice from a third of a second before that.
+  for (const double tempo : {1.0, 0.5}) {
+    const int first_frame = static_cast<int>(std::lround((2.5 / tempo - 1.0 / 3.0) * 30.0));
+    o.tempo = tempo;
+    o.frames = std::to_string(first_frame) + ":" + std::to_string(first_frame + 30);
+    o.output = dir_ / "audio/";
+    o.wav = dir_ / "audio.wav";
+    ASSERT_EQ(run(o, &error), 0) << error;
+    auto wav = audio::read_wav(dir_ / "audio.wav");
+    ASSERT_TRUE(wav);
+    EXPECT_EQ(wav->frames(), 30 * 1600);
+    const double expected = 16000.0;  // a third of a second into the slice
+    const std::int64_t first = first_loud_frame(*wav, 100);
+    EXPECT_GE(first, static_cast<std::int64_t>(expected) - 64) << tempo;
+    EXPECT_LT(first, static_cast<std::int64_t>(expected) + 2400) << tempo;  // a brass attack
+  }
+}
+
 TEST_F(RenderCommandTest, SoftShadowsChangeThePicture) {
   RenderOptions o;
   o.scene = scene_path();
@@ -218,6 +263,11 @@ TEST_F(RenderCommandTest, BadOptionsAreOneLineErrors) {
   {
     Case c{base(), "--camera \"drone\": "};
     c.options.camera = "drone";
+    cases.push_back(c);
+  }
+  {
+    Case c{base(), "--tempo: must be in [0.1, 4]"};
+    c.options.tempo = 0.0;
     cases.push_back(c);
   }
   {
