@@ -10,6 +10,7 @@
 #include "app/fit_fingering_command.hpp"
 #include "app/info_command.hpp"
 #include "app/render_command.hpp"
+#include "app/sync_report_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tutti: music to animated performances"};
@@ -102,6 +103,22 @@ int main(int argc, char** argv) {
   bool no_progress = false;
   render_cmd->add_flag("--no-progress", no_progress, "no progress output");
 
+  tutti::app::SyncReportOptions sync;
+  CLI::App* sync_cmd = app.add_subcommand(
+      "sync-report",
+      "How far the sound is from the picture: note onsets detected in the rendered audio against "
+      "the animation's contact times (key bottom, valve down, slide arrives, tongue)");
+  sync_cmd->add_option("SCENE", sync.scene, "scene file")->required();
+  sync_cmd->add_option("--assets", sync.assets, "folder of the generated .glb assets");
+  sync_cmd->add_option("--soundfont", sync.soundfont,
+                       "General MIDI .sf2 (default: $TUTTI_SOUNDFONT, then Debian's)");
+  sync_cmd->add_option("--wav", sync.wav, "also write the analysed audio (WAV)");
+  sync_cmd->add_option("--tempo", sync.tempo, "practice tempo, 0.1..4");
+  sync_cmd->add_option("--step-ms", sync.step_ms, "animation sampling step (default 0.5)");
+  sync_cmd->add_option("--tolerance-ms", sync.tolerance_ms, "furthest match (default 50)");
+  sync_cmd->add_option("--worst", sync.worst, "list this many largest offsets (default 5)");
+  sync_cmd->add_flag("--check", sync.check, "exit 1 unless mean <= 5 ms and max <= 16.67 ms");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -115,6 +132,7 @@ int main(int argc, char** argv) {
   if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
   if (*fit_cmd) return tutti::app::run_fit_fingering(fit, std::cout, std::cerr);
   if (*brass_cmd) return tutti::app::run_brass(brass, std::cout, std::cerr);
+  if (*sync_cmd) return tutti::app::run_sync_report(sync, std::cout, std::cerr);
   if (*render_cmd) {
     render.progress = !no_progress;
     render.audio = !no_audio;

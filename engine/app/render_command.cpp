@@ -132,6 +132,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (!o.shadows.empty() && o.shadows != "hard" && o.shadows != "soft") {
     return fail("--shadows \"" + o.shadows + "\": must be hard or soft");
   }
+  if (!(o.tempo >= 0.1 && o.tempo <= 4.0)) return fail("--tempo: must be in [0.1, 4]");
   const bool soft_shadows = o.shadows.empty() ? scene->output.soft_shadows : o.shadows == "soft";
 
   int fixed_camera = -1;
@@ -148,7 +149,6 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (!stage) return fail((*scene).source + ": " + stage.error().message);
   stage::Stage& st = **stage;
 
-  if (!(o.tempo >= 0.1 && o.tempo <= 4.0)) return fail("--tempo: must be in [0.1, 4]");
   const std::int64_t total = frame_count(0.0, (st.end_s - st.start_s) / o.tempo, fps);
   FrameRange range{0, total};
   if (!o.still.empty()) {

@@ -1,0 +1,148 @@
+// `tutti sync-report` (app/sync_report*.hpp): the animation's contact times against the onsets
+// found in the rendered audio, on the shipped demo scenes; a deliberately delayed sound track is
+// caught; bad options are one-line errors.
+#include "app/sync_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "app/frame_range.hpp"
+#include "app/scene_audio.hpp"
+#include "app/sync_report_command.hpp"
+#include "scene/load_scene.hpp"
+
+namespace tutti::app {
+namespace {
+
+std::filesystem::path scene_file(const char* name) {
+  return std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / name;
+}
+
+struct Measured {
+  std::vector<Contact> contacts;
+  audio::AudioBuffer audio;
+  double start_s = 0.0;
+  std::unique_ptr<stage::Stage> stage;
+};
+
+Measured measure(const char* scene_name) {
+  Measured m;
+  auto scene = scene::load_scene(scene_file(scene_name));
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return m;
+  auto built = stage::build_stage(*scene, {});
+  EXPECT_TRUE(built) << built.error().message;
+  if (!built) return m;
+  m.stage = std::move(*built);
+  const int fps = scene->output.fps;
+  const std::int64_t frames = frame_count(0.0, m.stage->end_s - m.stage->start_s, fps);
+  auto audio = render_scene_audio(*m.stage, fps, 0, frames);
+  EXPECT_TRUE(audio) << audio.error().message;
+  if (audio) m.audio = std::move(*audio);
+  m.start_s = m.stage->start_s;
+  m.contacts = sample_contacts(*m.stage, m.stage->start_s, m.stage->end_s, 0.0005);
+  return m;
+}
+
+TEST(SyncReport, EveryPianoKeyBottomIsAtItsNoteOnset) {
+  Measured m = measure("piano.json");
+  ASSERT_FALSE(m.contacts.empty());
+  const music::Score& score = m.stage->scores.front();
+  for (const Contact& c : m.contacts) {
+    ASSERT_EQ(c.kind, ContactKind::key_bottom);
+    double nearest = 1e9;
+    for (const music::Note& n : score.notes) {
+      if (n.pitch == c.detail && std::abs(n.onset_s - c.time_s) < std::abs(nearest)) {
+        nearest = n.onset_s - c.time_s;
+      }
+    }
+    EXPECT_LE(std::abs(nearest), 0.0005) << "key " << c.detail << " at " << c.time_s;
+  }
+}
+
+TEST(SyncReport, ThePianoDemoSoundsWhereItsKeysReachBottom) {
+  Measured m = measure("piano.json");
+  const SyncFigures f = measure_sync(m.contacts, m.audio, m.start_s, {});
+  std::printf("piano: %zu expected, %zu detected, %zu matched, mean |%.2f| max |%.2f| ms\n",
+              f.expected, f.detected, f.matches.size(), f.mean_abs_ms, f.max_abs_ms);
+  EXPECT_GE(f.expected, 50u);
+  EXPECT_EQ(f.matches.size(), f.expected) << "every contact has its sound";
+  EXPECT_LE(f.unmatched_detected_s.size(), 2u);
+  EXPECT_LE(f.mean_abs_ms, kSyncGoalMeanMs);
+  EXPECT_LE(f.max_abs_ms, kSyncGoalMaxMs);
+  EXPECT_GE(f.mean_signed_ms, 0.0) << "a sound never starts before its key is down";
+
+  // The same audio 20 ms late: the report must see it.
+  audio::AudioBuffer late = m.audio;
+  late.samples.insert(late.samples.begin(), static_cast<std::size_t>(0.020 * 48000) * 2, 0);
+  const SyncFigures g = measure_sync(m.contacts, late, m.start_s, {});
+  EXPECT_NEAR(g.mean_signed_ms, f.mean_signed_ms + 20.0, 0.5);
+  EXPECT_GT(g.max_abs_ms, kSyncGoalMaxMs);
+}
+
+TEST(SyncReport, TheQuartetsEntrancesSoundWithTheirTongues) {
+  Measured m = measure("quartet.json");
+  ASSERT_FALSE(m.contacts.empty());
+  std::size_t tongues = 0;
+  for (const Contact& c : m.contacts) tongues += c.kind == ContactKind::tongue;
+  EXPECT_GE(tongues, 16u) << "four players, four phrases at least";
+  const SyncFigures f = measure_sync(m.contacts, m.audio, m.start_s, {});
+  std::printf("quartet: %zu expected, %zu detected, %zu matched, mean |%.2f| max |%.2f| ms\n",
+              f.expected, f.detected, f.matches.size(), f.mean_abs_ms, f.max_abs_ms);
+  // The four phrase entrances (everyone tongues after a breath) are found and in sync.
+  std::size_t entrances = 0;
+  for (const SyncMatch& match : f.matches) {
+    std::size_t tongued = 0;
+    for (const Contact* c : match.contacts) tongued += c->kind == ContactKind::tongue;
+    entrances += tongued >= 4;
+  }
+  EXPECT_GE(entrances, 4u);
+  EXPECT_LE(f.mean_abs_ms, kSyncGoalMeanMs);
+  EXPECT_LE(f.max_abs_ms, kSyncGoalMaxMs);
+}
+
+// Not yet in sync by the report's own measure: GM brass note changes under a held sound are
+// not found in the audio (see README, "Sync report"), so the goal's coverage is missed and
+// --check says so.
+TEST(SyncReport, TheQuartetsSlurredChangesAreNotYetHeardAndCheckSaysSo) {
+  SyncReportOptions options;
+  options.scene = scene_file("quartet.json");
+  options.check = true;
+  std::ostringstream out, err;
+  EXPECT_EQ(run_sync_report(options, out, err), kExitSyncGoalMissed) << out.str() << err.str();
+  EXPECT_NE(out.str().find(": missed ("), std::string::npos) << out.str();
+}
+
+TEST(SyncReport, TheCommandPrintsTheFiguresAndChecksTheGoal) {
+  SyncReportOptions options;
+  options.scene = scene_file("piano.json");
+  options.check = true;
+  std::ostringstream out, err;
+  EXPECT_EQ(run_sync_report(options, out, err), 0) << err.str();
+  EXPECT_NE(out.str().find("goal (mean ≤ 5 ms, max ≤ 16.67 ms, ≥ 90 % of contacts heard): met"),
+            std::string::npos)
+      << out.str();
+  EXPECT_NE(out.str().find("key bottom"), std::string::npos) << out.str();
+}
+
+TEST(SyncReport, BadOptionsAreOneLineErrors) {
+  std::ostringstream out, err;
+  SyncReportOptions options;
+  options.scene = scene_file("piano.json");
+  options.tempo = 9.0;
+  EXPECT_EQ(run_sync_report(options, out, err), 2);
+  EXPECT_EQ(err.str(), "error: --tempo: must be in [0.1, 4]\n");
+  err.str("");
+  options.tempo = 1.0;
+  options.scene = "/nonexistent/scene.json";
+  EXPECT_EQ(run_sync_report(options, out, err), 2);
+  const std::string message = err.str();
+  EXPECT_NE(message.find("/nonexistent/scene.json"), std::string::npos) << message;
+  EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+}
+
+}  // namespace
+}  // namespace tutti::app
