@@ -117,6 +117,9 @@ int main(int argc, char** argv) {
   sync_cmd->add_option("--step-ms", sync.step_ms, "animation sampling step (default 0.5)");
   sync_cmd->add_option("--tolerance-ms", sync.tolerance_ms, "furthest match (default 50)");
   sync_cmd->add_option("--worst", sync.worst, "list this many largest offsets (default 5)");
+  bool no_compensation = false;
+  sync_cmd->add_flag("--no-attack-compensation", no_compensation,
+                     "every note at its score time, not early by its sample's attack");
   sync_cmd->add_flag("--check", sync.check, "exit 1 unless mean <= 5 ms and max <= 16.67 ms");
 
   try {
@@ -132,7 +135,10 @@ int main(int argc, char** argv) {
   if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
   if (*fit_cmd) return tutti::app::run_fit_fingering(fit, std::cout, std::cerr);
   if (*brass_cmd) return tutti::app::run_brass(brass, std::cout, std::cerr);
-  if (*sync_cmd) return tutti::app::run_sync_report(sync, std::cout, std::cerr);
+  if (*sync_cmd) {
+    sync.compensate_attacks = !no_compensation;
+    return tutti::app::run_sync_report(sync, std::cout, std::cerr);
+  }
   if (*render_cmd) {
     render.progress = !no_progress;
     render.audio = !no_audio;

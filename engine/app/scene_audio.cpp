@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "audio/attack_time.hpp"
 #include "audio/sound_font.hpp"
 #include "audio/synth_events.hpp"
 
@@ -22,13 +23,21 @@ Result<audio::AudioBuffer> render_scene_audio(const stage::Stage& stage, int fps
   auto font = audio::find_sound_font(options.sound_font);
   if (!font) return font.error();
   std::vector<const music::Score*> scores;
-  for (const music::Score& score : stage.scores) scores.push_back(&score);
+  // The notes as played (catch breaths leave gaps), not as written.
+  for (const music::Score& score : stage.sounding.empty() ? stage.scores : stage.sounding) {
+    scores.push_back(&score);
+  }
   audio::TimelineOptions timeline_options;
   timeline_options.sample_rate = options.sample_rate;
   timeline_options.start_s = stage.start_s;
   timeline_options.tempo_factor = options.tempo_factor;
   auto timeline = audio::build_synth_timeline(scores, timeline_options);
   if (!timeline) return timeline.error();
+  if (options.compensate_attacks) {
+    auto compensated = audio::compensate_attacks(*timeline, *font);
+    if (!compensated) return compensated.error();
+  }
+
   const std::int64_t from = audio_frame_of_video_frame(first_frame, fps, options.sample_rate);
   const std::int64_t to = audio_frame_of_video_frame(end_frame, fps, options.sample_rate);
   audio::OfflineSynthOptions synth_options;

@@ -57,6 +57,7 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
   SceneAudioOptions audio_options;
   audio_options.sound_font = o.soundfont;
   audio_options.tempo_factor = o.tempo;
+  audio_options.compensate_attacks = o.compensate_attacks;
   auto audio = render_scene_audio(stage, fps, 0, frames, audio_options);
   if (!audio) return fail(audio.error().message);
   if (!o.wav.empty()) {
@@ -90,6 +91,13 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
   for (const SyncMatch* m : worst) {
     out << "    " << format("%8.3f", m->contact_s) << " s  " << format("%+6.2f", m->offset_ms())
         << " ms  " << kinds_of(*m) << "\n";
+  }
+  if (!f.unmatched_expected_s.empty()) {
+    out << "  contacts without a sound at:";
+    for (std::size_t i = 0; i < f.unmatched_expected_s.size() && i < 12; ++i) {
+      out << " " << format("%.3f", f.unmatched_expected_s[i]);
+    }
+    out << (f.unmatched_expected_s.size() > 12 ? " ..." : "") << " s\n";
   }
   const double heard =
       f.expected == 0 ? 0.0

@@ -19,6 +19,7 @@ struct SyncReportOptions {
   double tolerance_ms = 50.0;       // furthest match
   int worst = 5;                    // list this many largest offsets
   bool check = false;               // exit 1 when the goal is missed
+  bool compensate_attacks = true;   // false: every note at its score time (audio/attack_time.hpp)
 };
 
 inline constexpr double kSyncGoalMeanMs = 5.0;

@@ -54,7 +54,7 @@ std::vector<Band> make_bands(std::size_t n, int sample_rate, int bands_per_octav
 // The analysis window, oldest sample first: a long half-Hann rise over the past (frequency
 // resolution), then a 2 ms fall at the newest end, so a new sound is seen at nearly full weight
 // within 2 ms of its start (time resolution).
-std::vector<float> asymmetric_window(std::size_t n, std::size_t fall) {
+std::vector<float> asymmetric_window(std::size_t n, std::size_t fall) {  // see onset_window
   std::vector<float> window(n);
   const std::size_t rise = n - fall;
   for (std::size_t i = 0; i < n; ++i) {
@@ -78,9 +78,7 @@ std::vector<float> log_spectra(const std::vector<float>& mono, const OnsetOption
   std::vector<float> spectra(frame_count * bands.size(), 0.0f);
   if (bands.empty()) return spectra;
 
-  const auto fall = std::clamp<std::size_t>(
-      static_cast<std::size_t>(std::lround(o.leading_edge_s * sample_rate)), 1, n / 2);
-  const std::vector<float> window = asymmetric_window(n, fall);
+  const std::vector<float> window = onset_window(o, sample_rate);
   double window_energy = 0.0;
   for (float w : window) window_energy += static_cast<double>(w) * w;
   const std::unique_ptr<kiss_fftr_state, FftrDeleter> fft(
@@ -128,49 +126,151 @@ std::vector<float> log_spectra(const std::vector<float>& mono, const OnsetOption
   return spectra;
 }
 
+struct Analysis {
+  std::vector<float> spectra;  // log band energies, frame-major
+  std::vector<float> widened;  // each band's maximum with its neighbours
+  std::size_t frame_count = 0, bands = 0, lag = 1, memory = 1;
+  std::vector<double> flux;
+};
+
+// Power of `rising` bands at frame k (magnitudes back from the log scale).
+double band_power(const std::vector<float>& spectra, std::size_t bands, std::size_t k,
+                  const std::vector<std::size_t>& rising, const OnsetOptions& o) {
+  double sum = 0.0;
+  for (std::size_t b : rising) {
+    const double m = std::expm1(static_cast<double>(spectra[k * bands + b])) / o.compression;
+    sum += m * m;
+  }
+  return sum;
+}
+
+std::size_t fall_frames(const OnsetOptions& o, int sample_rate) {
+  return std::clamp<std::size_t>(
+      static_cast<std::size_t>(std::lround(o.leading_edge_s * sample_rate)), 1,
+      static_cast<std::size_t>(o.window_frames) / 2);
+}
+
+Analysis analyse(const AudioBuffer& audio, const OnsetOptions& o) {
+  Analysis out;
+  std::vector<double>& flux = out.flux;
+  if (audio.sample_rate <= 0 || o.window_frames < 16 || o.hop_frames < 1 ||
+      (o.window_frames & (o.window_frames - 1)) != 0) {
+    return out;
+  }
+  const std::vector<float> mono = mono_of(audio);
+  if (mono.empty()) return out;
+  std::size_t& frame_count = out.frame_count;
+  std::size_t& bins = out.bands;
+  out.spectra = log_spectra(mono, o, audio.sample_rate, frame_count, bins);
+  const std::vector<float>& spectra = out.spectra;
+  if (bins == 0) return out;
+
+  const double hop_s = static_cast<double>(o.hop_frames) / audio.sample_rate;
+  const auto lag = out.lag = static_cast<std::size_t>(std::max(1.0, std::round(o.lag_s / hop_s)));
+  const auto memory =
+      std::max(lag, static_cast<std::size_t>(std::max(1.0, std::round(o.memory_s / hop_s))));
+  // Each band's maximum with its neighbours: a vibrato or a glide is not a new note.
+  std::vector<float>& widened = out.widened;
+  widened.resize(spectra.size());
+  for (std::size_t k = 0; k < frame_count; ++k) {
+    const float* row = &spectra[k * bins];
+    float* row_out = &widened[k * bins];
+    for (std::size_t b = 0; b < bins; ++b) {
+      float m = row[b];
+      if (b > 0) m = std::max(m, row[b - 1]);
+      if (b + 1 < bins) m = std::max(m, row[b + 1]);
+      row_out[b] = m;
+    }
+  }
+  // The rise of each band over its loudest in [k - memory, k - lag]: a tremolo or a beating
+  // chord goes up and down within that span and adds nothing; a new note's partials do.
+  flux.assign(frame_count, 0.0);
+  std::vector<float> reference(bins);
+  for (std::size_t k = lag; k < frame_count; ++k) {
+    const std::size_t from = k > memory ? k - memory : 0;
+    std::copy_n(&widened[(k - lag) * bins], bins, reference.begin());
+    for (std::size_t j = from; j < k - lag; ++j) {
+      const float* row = &widened[j * bins];
+      for (std::size_t b = 0; b < bins; ++b) reference[b] = std::max(reference[b], row[b]);
+    }
+    const float* now = &spectra[k * bins];
+    double sum = 0.0;
+    for (std::size_t b = 0; b < bins; ++b) sum += std::max(0.0f, now[b] - reference[b]);
+    flux[k] = sum;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<double> onset_envelope(const AudioBuffer& audio, const OnsetOptions& o) {
-  std::vector<double> flux;
-  if (audio.sample_rate <= 0 || o.window_frames < 16 || o.hop_frames < 1 ||
-      (o.window_frames & (o.window_frames - 1)) != 0) {
-    return flux;
-  }
-  const std::vector<float> mono = mono_of(audio);
-  if (mono.empty()) return flux;
-  std::size_t frame_count = 0, bins = 0;
-  const std::vector<float> spectra = log_spectra(mono, o, audio.sample_rate, frame_count, bins);
-  if (bins == 0) return flux;
+  return analyse(audio, o).flux;
+}
 
-  const double hop_s = static_cast<double>(o.hop_frames) / audio.sample_rate;
-  const auto lag = static_cast<std::size_t>(std::max(1.0, std::round(o.lag_s / hop_s)));
-  flux.assign(frame_count, 0.0);
-  for (std::size_t k = lag; k < frame_count; ++k) {
-    const float* now = &spectra[k * bins];
-    const float* before = &spectra[(k - lag) * bins];
-    double sum = 0.0;
-    for (std::size_t b = 0; b < bins; ++b) {
-      // The neighbours' maximum: a vibrato or a glide is not a new note.
-      float reference = before[b];
-      if (b > 0) reference = std::max(reference, before[b - 1]);
-      if (b + 1 < bins) reference = std::max(reference, before[b + 1]);
-      sum += std::max(0.0f, now[b] - reference);
-    }
-    flux[k] = sum;
+std::vector<float> onset_window(const OnsetOptions& o, int sample_rate) {
+  return asymmetric_window(static_cast<std::size_t>(o.window_frames), fall_frames(o, sample_rate));
+}
+
+double onset_window_latency_s(const OnsetOptions& o, int sample_rate, double power_fraction) {
+  // The detector's own step response: three steady tones (low, middle, high) start together at
+  // t0 out of silence; how long until their bands reach power_fraction of their power.
+  constexpr double kStart = 0.1;
+  const auto length = static_cast<std::size_t>(0.4 * sample_rate);
+  std::vector<float> mono(length, 0.0f);
+  for (std::size_t i = static_cast<std::size_t>(kStart * sample_rate); i < length; ++i) {
+    const double t = static_cast<double>(i) / sample_rate;
+    double v = 0.0;
+    for (double hz : {220.0, 880.0, 3520.0}) v += 0.1 * std::sin(2.0 * std::numbers::pi * hz * t);
+    mono[i] = static_cast<float>(v);
   }
-  return flux;
+  std::size_t frames = 0, bands = 0;
+  const std::vector<float> spectra = log_spectra(mono, o, sample_rate, frames, bands);
+  const double hop_s = static_cast<double>(o.hop_frames) / sample_rate;
+  const auto at = [&](double t) {
+    return std::min(frames - 1, static_cast<std::size_t>(std::lround(t / hop_s)));
+  };
+  std::vector<std::size_t> rising;
+  for (std::size_t b = 0; b < bands; ++b) {
+    if (spectra[at(kStart + 0.15) * bands + b] > spectra[at(kStart - 0.01) * bands + b] + 1.0f) {
+      rising.push_back(b);
+    }
+  }
+  const auto power = [&](std::size_t k) { return band_power(spectra, bands, k, rising, o); };
+  const double before = power(at(kStart - 0.01));
+  const double after = power(at(kStart + 0.15));
+  const double level = before + std::clamp(power_fraction, 0.0, 1.0) * (after - before);
+  double previous = before;
+  for (std::size_t k = at(kStart - 0.01); k < frames; ++k) {
+    const double current = power(k);
+    if (current >= level) {
+      double index = static_cast<double>(k);
+      if (current > previous) index -= (current - level) / (current - previous);
+      return std::max(0.0, index * hop_s - kStart);
+    }
+    previous = current;
+  }
+  return 0.0;
 }
 
 std::vector<Onset> detect_onsets(const AudioBuffer& audio, const OnsetOptions& o) {
   std::vector<Onset> onsets;
-  const std::vector<double> flux = onset_envelope(audio, o);
+  const Analysis analysis = analyse(audio, o);
+  const std::vector<double>& flux = analysis.flux;
   if (flux.empty()) return onsets;
+  const std::size_t bands = analysis.bands;
+  const double latency_s = onset_window_latency_s(o, audio.sample_rate, o.power_fraction);
+  const auto settle =
+      static_cast<std::size_t>(std::round(o.settle_s * audio.sample_rate / o.hop_frames));
+  std::vector<float> reference(bands);
+  std::vector<std::size_t> rising;
+  auto power = [&](std::size_t t) { return band_power(analysis.spectra, bands, t, rising, o); };
   const std::size_t frame_count = flux.size();
   const double hop_s = static_cast<double>(o.hop_frames) / audio.sample_rate;
   const double loudest = *std::max_element(flux.begin(), flux.end());
   if (loudest <= 0.0) return onsets;
 
   const auto gap = static_cast<std::size_t>(std::max(1.0, std::round(o.min_gap_s / hop_s)));
+  const auto backtrack = static_cast<std::size_t>(std::max(1.0, std::round(o.backtrack_s / hop_s)));
   const auto local = static_cast<std::size_t>(std::max(1.0, std::round(o.local_window_s / hop_s)));
   // Prefix sums for the local means.
   std::vector<double> prefix(frame_count + 1, 0.0);
@@ -192,25 +292,52 @@ std::vector<Onset> detect_onsets(const AudioBuffer& audio, const OnsetOptions& o
     const std::size_t mean_to = std::min(frame_count, k + local / 2 + 1);
     const double mean =
         (prefix[mean_to] - prefix[mean_from]) / static_cast<double>(mean_to - mean_from);
-    if (flux[k] - mean < o.threshold * loudest) continue;
+    if (flux[k] - mean < o.threshold) continue;
     if (have_peak && k - last_peak < gap) continue;
 
-    // The start of the rise: back from the peak while the flux stays above the rise level.
+    // The start of the rise: the flux's lowest in the backtrack span before the peak (not
+    // before the previous onset's peak).
     std::size_t floor_index = k;
-    for (std::size_t j = k; j + gap > k && j > 0; --j) {
-      if (flux[j - 1] < flux[floor_index]) floor_index = j - 1;
+    for (std::size_t j = k; j + backtrack > k && j > 0; --j) {
       if (have_peak && j - 1 <= last_peak) break;
+      if (flux[j - 1] < flux[floor_index]) floor_index = j - 1;
+      if (flux[floor_index] <= 0.0) break;
     }
-    const double base = flux[floor_index];
-    const double level = base + o.rise_fraction * (flux[k] - base);
-    std::size_t j = k;
-    while (j > floor_index && flux[j - 1] >= level) --j;
+    // Heard where the bands that rise reach power_fraction of the power they gain: the
+    // perceptual onset, not the first trace of sound (a slow attack is heard late).
+    rising.clear();
+    {
+      const std::size_t lag = std::min(analysis.lag, k);
+      const std::size_t from_j = k > analysis.memory ? k - analysis.memory : 0;
+      std::copy_n(&analysis.widened[(k - lag) * bands], bands, reference.begin());
+      for (std::size_t j = from_j; j < k - lag; ++j) {
+        for (std::size_t b = 0; b < bands; ++b) {
+          reference[b] = std::max(reference[b], analysis.widened[j * bands + b]);
+        }
+      }
+      for (std::size_t b = 0; b < bands; ++b) {
+        if (analysis.spectra[k * bands + b] > reference[b]) rising.push_back(b);
+      }
+    }
+    const double before = power(floor_index);
+    double after = before;
+    for (std::size_t t = k; t < std::min(frame_count, k + settle + 1); ++t) {
+      after = std::max(after, power(t));
+    }
+    const double level = before + o.power_fraction * (after - before);
+    std::size_t j = floor_index;
+    double previous = before;
+    double current = before;
+    for (; j < frame_count; ++j) {
+      current = power(j);
+      if (current >= level) break;
+      previous = current;
+    }
     // Between frame j - 1 (below the level) and j (at or above): interpolate.
     double index = static_cast<double>(j);
-    if (j > 0 && flux[j] > flux[j - 1]) {
-      index -= (flux[j] - level) / (flux[j] - flux[j - 1]);
-    }
-    onsets.push_back({index * hop_s, flux[k] / loudest});
+    if (j > floor_index && current > previous) index -= (current - level) / (current - previous);
+    index = std::max(0.0, index - latency_s / hop_s);
+    onsets.push_back({index * hop_s, flux[k] / loudest, flux[k]});
     last_peak = k;
     have_peak = true;
   }

@@ -254,6 +254,17 @@ Status build_brass(Stage& stage, ModelCache& cache) {
     }
     auto player = std::make_shared<brass::BrassPlayerMotion>(
         brass::plan_brass_player(*line, score, *motion, *breath, weights->change));
+    music::Score& heard = stage.sounding[performer.music_file];
+    for (const brass::ShortenedNote& shortened : player->breaths.shortened) {
+      if (shortened.note < 0 || static_cast<std::size_t>(shortened.note) >= line->notes.size()) {
+        continue;
+      }
+      const int index = line->notes[static_cast<std::size_t>(shortened.note)].score_index;
+      if (index < 0 || static_cast<std::size_t>(index) >= heard.notes.size()) continue;
+      music::Note& note = heard.notes[static_cast<std::size_t>(index)];
+      note.offset_s = std::clamp(shortened.offset_s, note.onset_s, note.offset_s);
+      note.offset_beats = std::clamp(shortened.offset_beats, note.onset_beats, note.offset_beats);
+    }
 
     BrassSeat seat;
     seat.name = performer.name;
@@ -499,6 +510,7 @@ Result<std::unique_ptr<Stage>> build_stage(const scene::Scene& scene, const Stag
     music_end = std::max(music_end, score->duration_s());
     stage->scores.push_back(std::move(*score));
   }
+  stage->sounding = stage->scores;
   ModelCache cache(*stage, options.asset_dir.empty() ? default_asset_dir() : options.asset_dir);
   auto floor = cache.get("stage.glb");
   if (!floor) return floor.error();

