@@ -8,54 +8,10 @@
 #include <mutex>
 #include <string>
 
+#include "audio/fluid_synth_util.hpp"
+
 namespace tutti::audio {
 namespace {
-
-struct SettingsDeleter {
-  void operator()(fluid_settings_t* s) const { delete_fluid_settings(s); }
-};
-struct SynthDeleter {
-  void operator()(fluid_synth_t* s) const { delete_fluid_synth(s); }
-};
-
-// FluidSynth prints warnings (a missing preset, say) to stderr by default; tutti reports its own
-// errors, so its log goes nowhere except panics and errors, which are kept for the message.
-std::string& last_fluid_error() {
-  static std::string message;
-  return message;
-}
-
-void keep_error(int, const char* message, void*) {
-  last_fluid_error() = message != nullptr ? message : "";
-}
-
-void quiet_log() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    fluid_set_log_function(FLUID_PANIC, keep_error, nullptr);
-    fluid_set_log_function(FLUID_ERR, keep_error, nullptr);
-    fluid_set_log_function(FLUID_WARN, nullptr, nullptr);
-    fluid_set_log_function(FLUID_INFO, nullptr, nullptr);
-    fluid_set_log_function(FLUID_DBG, nullptr, nullptr);
-  });
-}
-
-void send(fluid_synth_t* synth, const SynthEvent& event) {
-  switch (event.kind) {
-    case SynthEventKind::note_on:
-      fluid_synth_noteon(synth, event.channel, event.data1, event.data2);
-      break;
-    case SynthEventKind::note_off:
-      fluid_synth_noteoff(synth, event.channel, event.data1);
-      break;
-    case SynthEventKind::control:
-      fluid_synth_cc(synth, event.channel, event.data1, event.data2);
-      break;
-    case SynthEventKind::program:
-      fluid_synth_program_change(synth, event.channel, event.data1);
-      break;
-  }
-}
 
 std::int16_t to_pcm(float v) {
   const float scaled = std::nearbyint(std::clamp(v, -1.0f, 1.0f) * 32767.0f);
@@ -66,7 +22,7 @@ std::int16_t to_pcm(float v) {
 
 Result<AudioBuffer> render_timeline(const SynthTimeline& timeline,
                                     const OfflineSynthOptions& options) {
-  quiet_log();
+  quiet_fluid_log();
   std::int64_t frames = options.frames;
   if (frames < 0) {
     frames = timeline.end_frame +
@@ -100,7 +56,7 @@ Result<AudioBuffer> render_timeline(const SynthTimeline& timeline,
   // next, which is its frame (synth_events.hpp).
   for (std::int64_t at = 0; at < frames; at += kSynthBlockFrames) {
     while (next < timeline.events.size() && timeline.events[next].frame <= at) {
-      send(synth.get(), timeline.events[next++]);
+      send_event(synth.get(), timeline.events[next++]);
     }
     const auto count = static_cast<int>(std::min<std::int64_t>(kSynthBlockFrames, frames - at));
     fluid_synth_write_float(synth.get(), count, left.data(), 0, 1, right.data(), 0, 1);

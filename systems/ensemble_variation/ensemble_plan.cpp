@@ -70,13 +70,33 @@ Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs) {
       }
     }
 
-    // Weight shifts on every n-th bar line while the player is on stage.
+    // Weight shifts on every n-th bar line while the player is on stage, and at every phrase
+    // boundary (a breath taken in a rest: the player settles onto the other foot while
+    // breathing in, over one beat); a bar line's shift gives way to a phrase's near it.
     const int every = 1 + static_cast<int>(std::lround(7.0 * (1.0 - v.weight_shift_rate)));
     const float width = static_cast<float>(0.012 + 0.010 * v.sway_amount);
     p.initial_shift_m = unit_from_seed(in.seed, 20) < 0.5 ? width : -width;
+    std::vector<WeightShift> phrases;
+    if (in.breaths != nullptr) {
+      for (const brass::BreathEvent& e : in.breaths->events) {
+        if (e.kind == brass::BreathKind::catch_breath ||
+            e.kind == brass::BreathKind::before_entrance) {
+          continue;
+        }
+        const double beat_s =
+            score.tempo_map.seconds_at_beats(
+                score.tempo_map.beats_at_seconds(e.start_s) +
+                music::beat_length_at(score, score.tempo_map.beats_at_seconds(e.start_s))) -
+            e.start_s;
+        WeightShift shift;
+        shift.start_s = e.start_s;
+        shift.end_s = std::max(e.start_s + 1e-3, std::min(e.end_s, e.start_s + beat_s));
+        phrases.push_back(shift);
+      }
+    }
+    std::vector<WeightShift> shifts = phrases;
     const double end_beats = score.tempo_map.beats_at_seconds(p.active_end_s + 2.0);
     const std::vector<double> bars = bar_lines(score, end_beats);
-    float side = p.initial_shift_m;
     for (std::size_t b = static_cast<std::size_t>(every); b < bars.size();
          b += static_cast<std::size_t>(every)) {
       const double start_beats = bars[b];
@@ -84,6 +104,17 @@ Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs) {
       WeightShift shift;
       shift.start_s = score.tempo_map.seconds_at_beats(start_beats);
       shift.end_s = score.tempo_map.seconds_at_beats(start_beats + beat);
+      const double margin = 0.5 * (shift.end_s - shift.start_s);
+      const bool near_a_phrase =
+          std::any_of(phrases.begin(), phrases.end(), [&](const WeightShift& q) {
+            return shift.start_s < q.end_s + margin && q.start_s < shift.end_s + margin;
+          });
+      if (!near_a_phrase) shifts.push_back(shift);
+    }
+    std::sort(shifts.begin(), shifts.end(),
+              [](const WeightShift& a, const WeightShift& b) { return a.start_s < b.start_s; });
+    float side = p.initial_shift_m;
+    for (WeightShift& shift : shifts) {
       shift.from_m = side;
       shift.to_m = -side;
       side = -side;

@@ -1,7 +1,7 @@
 // The ensemble's body motion (ensemble_variation/ensemble_plan.hpp, evaluate_body_motion.hpp)
 // on a 4/4 score at 120 BPM (a beat is 0.5 s) with hand-made breath plans: cue timing, breath
-// motion on the breath plan's times, weight shifts on bar lines, seeds that move differently,
-// and a pose that depends on t alone.
+// motion on the breath plan's times, weight shifts on bar lines and phrase boundaries, seeds that
+// move differently, and a pose that depends on t alone.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -142,6 +142,38 @@ TEST(BodyMotion, WeightShiftsOnlyAcrossTheBeatAfterABarLine) {
   EXPECT_EQ(p.weight_shifts[0].to_m, -p.weight_shifts[1].to_m);
   EXPECT_NEAR(std::abs(evaluate_body_motion(p, 2.6).hips_shift_m),
               std::abs(evaluate_body_motion(p, 4.6).hips_shift_m), 1e-6);
+}
+
+// A breath in a rest starts a phrase: the weight goes over to the other foot across its first
+// beat, whatever the bar lines say; a catch breath does not, and a bar line's shift near a
+// phrase's gives way to it.
+TEST(BodyMotion, WeightShiftsAtPhraseBoundaries) {
+  const music::Score score = four_four();  // 120 BPM: a beat is 0.5 s, a bar 2 s
+  brass::BreathPlan plan = breaths({{9.0, 9.3, 10.0}, {14.5, 14.5, 14.8}, {21.1, 21.1, 21.6}});
+  plan.events[1].kind = brass::BreathKind::catch_breath;
+  std::vector<PerformerInput> inputs = {player(score, plan, 5, false)};
+  inputs[0].params.weight_shift_rate = 0.0;  // bar shifts every 8 bars (16 s) only
+  auto ensemble = plan_ensemble(inputs);
+  ASSERT_TRUE(ensemble);
+  const auto& shifts = ensemble->performers[0].weight_shifts;
+  auto starts_at = [&](double t) {
+    return std::any_of(shifts.begin(), shifts.end(),
+                       [&](const WeightShift& w) { return std::abs(w.start_s - t) < 1e-9; });
+  };
+  EXPECT_TRUE(starts_at(9.3)) << "the phrase after the rest at 9 s";
+  EXPECT_TRUE(starts_at(21.1));
+  EXPECT_FALSE(starts_at(14.5)) << "a catch breath is not a phrase boundary";
+  EXPECT_TRUE(starts_at(16.0)) << "the 8-bar line";
+  for (std::size_t i = 0; i < shifts.size(); ++i) {
+    EXPECT_LT(shifts[i].start_s, shifts[i].end_s);
+    EXPECT_LE(shifts[i].end_s - shifts[i].start_s, 0.5 + 1e-9) << "one beat at most";
+    if (i > 0) {
+      EXPECT_LE(shifts[i - 1].end_s, shifts[i].start_s) << "not overlapping";
+      EXPECT_EQ(shifts[i].from_m, shifts[i - 1].to_m) << "from one foot to the other";
+    }
+  }
+  const PerformerMotionPlan& p = ensemble->performers[0];
+  EXPECT_NE(evaluate_body_motion(p, 9.2).hips_shift_m, evaluate_body_motion(p, 9.9).hips_shift_m);
 }
 
 // Root mean square over the piece of the difference of two players' sway, twist, head and
