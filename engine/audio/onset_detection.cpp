@@ -183,20 +183,27 @@ Analysis analyse(const AudioBuffer& audio, const OnsetOptions& o) {
     }
   }
   // The rise of each band over its loudest in [k - memory, k - lag]: a tremolo or a beating
-  // chord goes up and down within that span and adds nothing; a new note's partials do.
+  // chord goes up and down within that span and adds nothing; a new note's partials do. The
+  // span's maximum by van Herk / Gil-Werman (block prefix and suffix maxima): three passes per
+  // band whatever the span's length.
   flux.assign(frame_count, 0.0);
-  std::vector<float> reference(bins);
-  for (std::size_t k = lag; k < frame_count; ++k) {
-    const std::size_t from = k > memory ? k - memory : 0;
-    std::copy_n(&widened[(k - lag) * bins], bins, reference.begin());
-    for (std::size_t j = from; j < k - lag; ++j) {
-      const float* row = &widened[j * bins];
-      for (std::size_t b = 0; b < bins; ++b) reference[b] = std::max(reference[b], row[b]);
+  const std::size_t span = memory - lag + 1;
+  std::vector<float> prefix(frame_count), suffix(frame_count);
+  for (std::size_t b = 0; b < bins; ++b) {
+    for (std::size_t j = 0; j < frame_count; ++j) {
+      const float x = widened[j * bins + b];
+      prefix[j] = j % span == 0 ? x : std::max(prefix[j - 1], x);
     }
-    const float* now = &spectra[k * bins];
-    double sum = 0.0;
-    for (std::size_t b = 0; b < bins; ++b) sum += std::max(0.0f, now[b] - reference[b]);
-    flux[k] = sum;
+    for (std::size_t j = frame_count; j-- > 0;) {
+      const float x = widened[j * bins + b];
+      suffix[j] = j % span == span - 1 || j + 1 == frame_count ? x : std::max(suffix[j + 1], x);
+    }
+    for (std::size_t k = lag; k < frame_count; ++k) {
+      const std::size_t last = k - lag;
+      const float reference =
+          last + 1 >= span ? std::max(suffix[last + 1 - span], prefix[last]) : prefix[last];
+      flux[k] += std::max(0.0f, spectra[k * bins + b] - reference);
+    }
   }
   return out;
 }
