@@ -140,6 +140,16 @@ TEST(SyncReport, BadOptionsAreOneLineErrors) {
   EXPECT_EQ(err.str(), "error: --tempo: must be in [0.1, 4]\n");
   err.str("");
   options.tempo = 1.0;
+  options.step_ms = 0.0;
+  EXPECT_EQ(run_sync_report(options, out, err), 2);
+  EXPECT_EQ(err.str(), "error: --step-ms: must be in [0.05, 10]\n");
+  err.str("");
+  options.step_ms = 0.5;
+  options.tolerance_ms = 1e9;
+  EXPECT_EQ(run_sync_report(options, out, err), 2);
+  EXPECT_EQ(err.str(), "error: --tolerance-ms: must be in [1, 500]\n");
+  err.str("");
+  options.tolerance_ms = 50.0;
   options.scene = "/nonexistent/scene.json";
   EXPECT_EQ(run_sync_report(options, out, err), 2);
   const std::string message = err.str();
