@@ -12,6 +12,7 @@
 #include "music/load_score.hpp"
 #include "scene/asset_mapping.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/performance_marks.hpp"
 
 namespace tutti::scene {
 namespace {
@@ -173,7 +174,8 @@ Status SceneParser::parse_performer(const json& object, const std::string& path,
   if (auto ok = reader_.json().check_keys(
           object, path,
           {"name", "instrument", "part", "voice", "music_file", "position_m", "facing_deg",
-           "stance", "music_stand", "lead", "seed", "variation", "character", "instrument_model"});
+           "stance", "music_stand", "lead", "seed", "variation", "character", "instrument_model",
+           "breaths", "expressions"});
       !ok) {
     return ok;
   }
@@ -238,6 +240,7 @@ Status SceneParser::parse_performer(const json& object, const std::string& path,
       !ok) {
     return ok;
   }
+  if (auto ok = parse_performer_marks(reader_, object, path, performer); !ok) return ok;
   return parse_instrument_mapping(object, path, performer.instrument, performer.instrument_mapping);
 }
 
@@ -246,7 +249,7 @@ Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianis
   if (auto ok =
           reader_.json().check_keys(object, path,
                                     {"parts", "music_file", "hand_size", "position_m", "facing_deg",
-                                     "seed", "variation", "character", "hands"});
+                                     "seed", "variation", "character", "hands", "pins"});
       !ok) {
     return ok;
   }
@@ -307,6 +310,7 @@ Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianis
       !ok) {
     return ok;
   }
+  if (auto ok = parse_finger_pins(reader_, object, path, pianist.pins); !ok) return ok;
   return parse_mapping(object, path, "hands", AssetKind::hand, pianist.hands_mapping);
 }
 
@@ -486,7 +490,7 @@ Status SceneParser::parse_output(const json& document, Output& output) const {
 Result<Scene> SceneParser::parse(const json& document) {
   if (auto ok = reader_.json().check_keys(document, "",
                                           {"description", "music", "seed", "performers", "pianist",
-                                           "cameras", "shots", "lights", "output"});
+                                           "cameras", "shots", "lights", "output", "cues"});
       !ok) {
     return ok.error();
   }
@@ -545,6 +549,7 @@ Result<Scene> SceneParser::parse(const json& document) {
   if (auto ok = parse_shots(document, scene); !ok) return ok.error();
   if (auto ok = parse_lights(document, scene.lights); !ok) return ok.error();
   if (auto ok = parse_output(document, scene.output); !ok) return ok.error();
+  if (auto ok = parse_cues(reader_, document, scene.cues_s); !ok) return ok.error();
   return scene;
 }
 

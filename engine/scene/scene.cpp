@@ -37,4 +37,14 @@ std::string_view stance_name(Stance stance) {
   return "standing";
 }
 
+std::string_view expression_name(ExpressionKind kind) {
+  switch (kind) {
+    case ExpressionKind::strain:
+      return "strain";
+    case ExpressionKind::relaxed:
+      return "relaxed";
+  }
+  return "strain";
+}
+
 }  // namespace tutti::scene

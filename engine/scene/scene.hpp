@@ -66,6 +66,35 @@ inline constexpr std::array<VariationField, 7> kVariationFields{{
     {"head_motion", &Variation::head_motion, "how much the head follows the phrase"},
 }};
 
+// Performance marks, as an animator places them in the editor (times: seconds of the music).
+// A breath mark names the boundary before the first note starting at or after its time.
+struct BreathMarks {
+  std::vector<double> add_s;     // breathe here (in the rest, or a catch-breath in a phrase)
+  std::vector<double> remove_s;  // no breath here, whatever the rules say
+  friend bool operator==(const BreathMarks&, const BreathMarks&) = default;
+};
+
+enum class ExpressionKind { strain, relaxed };
+
+// How a player looks over a span: "strain" works hard (shoulders up, less sway, a tense mouth),
+// "relaxed" lets go (shoulders down, easier sway).
+struct Expression {
+  ExpressionKind kind = ExpressionKind::strain;
+  double start_s = 0.0;
+  double end_s = 0.0;   // > start_s
+  double amount = 1.0;  // [0, 1]
+  friend bool operator==(const Expression&, const Expression&) = default;
+};
+
+// The pianist plays the note of `key` starting at `time_s` with `finger` (1 = thumb .. 5); the
+// fingering is planned around it.
+struct FingerPin {
+  double time_s = 0.0;
+  int key = 60;    // MIDI key, [0, 127]
+  int finger = 1;  // [1, 5]
+  friend bool operator==(const FingerPin&, const FingerPin&) = default;
+};
+
 // A brass player.
 struct Performer {
   std::string name;            // unique in the scene, non-empty
@@ -85,6 +114,8 @@ struct Performer {
   // default rig / the generated instrument.
   std::filesystem::path character_mapping;   // kind "character"
   std::filesystem::path instrument_mapping;  // kind "trumpet" or "trombone"
+  BreathMarks breaths;
+  std::vector<Expression> expressions;  // in start order
 };
 
 struct Pianist {
@@ -98,6 +129,7 @@ struct Pianist {
   Variation variation;
   std::filesystem::path character_mapping;  // kind "character"
   std::filesystem::path hands_mapping;      // kind "hand"
+  std::vector<FingerPin> pins;              // in file order (errors name the index)
 };
 
 struct Camera {
@@ -135,7 +167,7 @@ struct Output {
   // lavapipe about a fifth more time per frame at 720p).
   bool soft_shadows = false;
   Color background{0.02, 0.02, 0.03};
-  double start_s = 0.0;          // [-60, 86400]; < 0 = a pre-roll before the music starts
+  double start_s = 0.0;         // [-60, 86400]; < 0 = a pre-roll before the music starts
   std::optional<double> end_s;  // nullopt = the end of the music; else > start_s
 };
 
@@ -150,6 +182,9 @@ struct Scene {
   std::vector<Shot> shots;         // at least one; first at 0 s, start_s strictly increasing
   Lights lights;
   Output output;
+  // The lead's cues: nullopt = one before the first entrance (automatic); else exactly these
+  // entrance times, in order.
+  std::optional<std::vector<double>> cues_s;
 
   // The shot on screen at t_s: the last one starting at or before t_s (the first one before 0).
   // Pure, O(log shots). Precondition: shots is not empty (true for every loaded scene).
@@ -165,5 +200,6 @@ struct Scene {
 std::uint64_t derive_seed(std::uint64_t scene_seed, std::uint64_t stream);
 
 std::string_view stance_name(Stance stance);
+std::string_view expression_name(ExpressionKind kind);
 
 }  // namespace tutti::scene

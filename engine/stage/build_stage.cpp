@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
 #include <optional>
@@ -358,6 +359,33 @@ Status build_brass(Stage& stage, ModelCache& cache) {
   return Status::success();
 }
 
+// The editor's pins become the planner's pins (Note::finger, plan_score's pins_from_marks). A
+// pin names its note by key and onset; one that matches no note is an error, not ignored.
+Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianist,
+                         music::Score& score) {
+  constexpr double kSameOnset_s = 1e-3;
+  for (std::size_t i = 0; i < pianist.pins.size(); ++i) {
+    const scene::FingerPin& pin = pianist.pins[i];
+    music::Note* pinned = nullptr;
+    for (music::Note& note : score.notes) {
+      if (note.pitch == pin.key && std::abs(note.onset_s - pin.time_s) < kSameOnset_s) {
+        pinned = &note;
+        break;
+      }
+    }
+    if (pinned == nullptr) {
+      char time[32];
+      std::snprintf(time, sizeof time, "%.3f", pin.time_s);
+      return Error{scene.source + ": /pianist/pins/" + std::to_string(i) + ": no note of key " +
+                   std::to_string(pin.key) + " starts at " + time +
+                   " s in the pianist's parts of " +
+                   scene.music[pianist.music_file].filename().string()};
+    }
+    pinned->finger = pin.finger;
+  }
+  return Status::success();
+}
+
 Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::path& content_dir) {
   if (!stage.scene.pianist) return Status::success();
   const scene::Pianist& pianist = *stage.scene.pianist;
@@ -382,6 +410,7 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
   for (const music::Note& note : full.notes) {
     if (played[static_cast<std::size_t>(note.part)]) score.notes.push_back(note);
   }
+  if (Status s = apply_finger_pins(stage.scene, pianist, score); !s) return s.error();
   auto model = piano::load_fingering_model("default", pianist.hand_size, content_dir);
   if (!model) return model.error();
   auto performance = performance::plan_performance(score, *model);
@@ -403,6 +432,8 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
   motion->left_path = std::move(performance->left_path);
 
   auto seat = std::make_unique<PianistSeat>();
+  seat->fingering = performance->fingering;
+  seat->score = std::move(score);
   seat->pianist = stage.world.create();
   stage.world.add<components::Performer>(seat->pianist,
                                          components::Performer{"pianist", pianist.seed});

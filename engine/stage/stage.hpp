@@ -20,6 +20,7 @@
 #include "core/result.hpp"
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
+#include "fingering_planner/plan_score.hpp"
 #include "model/model_asset.hpp"
 #include "music/score.hpp"
 #include "render/model_renderer.hpp"
@@ -91,6 +92,10 @@ struct BrassSeat {
 };
 
 struct PianistSeat {
+  // What the pianist plays (their parts, pins applied) and the fingering planned for it: the
+  // editor shows and pins fingers on these notes.
+  music::Score score;
+  piano::ScorePlan fingering;
   ecs::Entity pianist = ecs::Entity::null;
   std::array<ecs::Entity, 2> hands{ecs::Entity::null, ecs::Entity::null};  // right, left
   std::array<std::array<ecs::Entity, 5>, 2> fingers{};

@@ -160,6 +160,42 @@ TEST(Stage, PressedKeysTurnTheirNodes) {
   EXPECT_GT(pressed_frames, 100);
 }
 
+// A finger pinned in the scene (the editor's pin) is the finger that plays the note, and the
+// fingers around it are re-planned to fit.
+TEST(Stage, APinnedFingerPlaysItsNote) {
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto plain = build_stage(*scene, {});
+  ASSERT_TRUE(plain && (*plain)->pianist) << plain.error().message;
+  const PianistSeat& before = *(*plain)->pianist;
+  // The 10th note, pinned to a finger the planner did not choose.
+  const std::size_t i = 9;
+  const music::Note note = before.score.notes[i];
+  const int planned = before.fingering.fingers[i];
+  ASSERT_GE(planned, 1);
+  const int pinned = planned == 1 ? 2 : 1;
+  scene->pianist->pins.push_back(scene::FingerPin{note.onset_s, note.pitch, pinned});
+  auto stage = build_stage(*scene, {});
+  ASSERT_TRUE(stage) << stage.error().message;
+  const PianistSeat& seat = *(*stage)->pianist;
+  EXPECT_EQ(seat.fingering.fingers[i], pinned);
+  // That finger is on the note's key, pressed, just after its onset.
+  const std::size_t side = seat.fingering.hands[i] == music::Hand::left ? 1 : 0;
+  evaluate_stage(**stage, note.onset_s + 0.01);
+  const auto& finger = (*stage)->world.get<components::Finger>(
+      seat.fingers[side][static_cast<std::size_t>(pinned - 1)]);
+  EXPECT_EQ(finger.key, note.pitch);
+  EXPECT_GT(finger.press_depth, 0.9);
+
+  scene->pianist->pins.back().key = note.pitch + 1;  // a note that is not there
+  auto wrong = build_stage(*scene, {});
+  ASSERT_FALSE(wrong);
+  EXPECT_NE(wrong.error().message.find("piano.json: /pianist/pins/0: no note of key " +
+                                       std::to_string(note.pitch + 1) + " starts at"),
+            std::string::npos)
+      << wrong.error().message;
+}
+
 // The generated trumpet with every node renamed, its root scaled to centimetres: a "user's" model.
 std::filesystem::path write_user_trumpet(const std::filesystem::path& dir) {
   tinygltf::TinyGLTF io;
