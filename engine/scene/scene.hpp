@@ -116,6 +116,7 @@ struct Performer {
   std::filesystem::path instrument_mapping;  // kind "trumpet" or "trombone"
   BreathMarks breaths;
   std::vector<Expression> expressions;  // in start order
+  friend bool operator==(const Performer&, const Performer&) = default;
 };
 
 struct Pianist {
@@ -130,6 +131,7 @@ struct Pianist {
   std::filesystem::path character_mapping;  // kind "character"
   std::filesystem::path hands_mapping;      // kind "hand"
   std::vector<FingerPin> pins;              // in file order (errors name the index)
+  friend bool operator==(const Pianist&, const Pianist&) = default;
 };
 
 struct Camera {
