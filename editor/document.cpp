@@ -60,14 +60,31 @@ Result<Document> Document::open(const fs::path& path) {
   return document;
 }
 
-Status Document::apply(Edit edit) {
+Status Document::apply(Edit edit, bool coalesce, const Check& accept) {
   Json next = json_;
   if (Status s = apply_edit(next, edit); !s) return s;
   auto scene = parse(next);
   if (!scene) return scene.error();
+  if (accept) {
+    if (Status s = accept(*scene); !s) return s;
+  }
+  bool merged = false;
+  if (coalesce && !undo_.empty() && undo_.back().label == edit.label &&
+      undo_.back().changes.size() == edit.changes.size()) {
+    Edit& last = undo_.back();
+    merged = true;
+    for (std::size_t i = 0; i < edit.changes.size(); ++i) {
+      merged = merged && last.changes[i].pointer == edit.changes[i].pointer;
+    }
+    if (merged) {
+      for (std::size_t i = 0; i < edit.changes.size(); ++i) {
+        last.changes[i].after = edit.changes[i].after;
+      }
+    }
+  }
   json_ = std::move(next);
   scene_ = std::move(*scene);
-  undo_.push_back(std::move(edit));
+  if (!merged) undo_.push_back(std::move(edit));
   redo_.clear();
   ++revision_;
   return Status::success();
@@ -80,12 +97,15 @@ const std::string& Document::redo_label() const {
   return redo_.empty() ? kNothing : redo_.back().label;
 }
 
-Status Document::undo() {
+Status Document::undo(const Check& accept) {
   if (undo_.empty()) return Error{"nothing to undo"};
   Json previous = json_;
   if (Status s = revert_edit(previous, undo_.back()); !s) return s;
   auto scene = parse(previous);
   if (!scene) return scene.error();
+  if (accept) {
+    if (Status s = accept(*scene); !s) return s;
+  }
   json_ = std::move(previous);
   scene_ = std::move(*scene);
   redo_.push_back(std::move(undo_.back()));
@@ -94,12 +114,15 @@ Status Document::undo() {
   return Status::success();
 }
 
-Status Document::redo() {
+Status Document::redo(const Check& accept) {
   if (redo_.empty()) return Error{"nothing to redo"};
   Json next = json_;
   if (Status s = apply_edit(next, redo_.back()); !s) return s;
   auto scene = parse(next);
   if (!scene) return scene.error();
+  if (accept) {
+    if (Status s = accept(*scene); !s) return s;
+  }
   json_ = std::move(next);
   scene_ = std::move(*scene);
   undo_.push_back(std::move(redo_.back()));

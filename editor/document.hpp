@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,14 +32,17 @@ class Document {
   const Json& json() const { return json_; }
   const scene::Scene& scene() const { return scene_; }
 
-  // Applies `edit` if the result is a valid scene; records it for undo and clears the redo list.
-  Status apply(Edit edit);
+  // Applies `edit` if the result is a valid scene and `accept` (when given) agrees; records it
+  // for undo and clears the redo list. `coalesce`: when the last edit changed the same places
+  // under the same label (a slider being dragged), the two become one undo step.
+  using Check = std::function<Status(const scene::Scene&)>;
+  Status apply(Edit edit, bool coalesce = false, const Check& accept = {});
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
   const std::string& undo_label() const;  // "" when nothing to undo
   const std::string& redo_label() const;
-  Status undo();
-  Status redo();
+  Status undo(const Check& accept = {});
+  Status redo(const Check& accept = {});
   // The edits applied so far (the undo list, oldest first).
   const std::vector<Edit>& history() const { return undo_; }
 

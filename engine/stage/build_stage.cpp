@@ -59,8 +59,13 @@ class ModelCache {
 
   Result<std::uint32_t> load(const std::filesystem::path& path, bool generated) {
     const std::string file = path.string();
-    for (std::size_t i = 0; i < names_.size(); ++i) {
-      if (names_[i] == file) return static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < stage_.model_files.size(); ++i) {
+      if (stage_.model_files[i] == file) return static_cast<std::uint32_t>(i);
+    }
+    if (reuse_ != nullptr) {
+      for (std::size_t i = 0; i < reuse_->model_files.size(); ++i) {
+        if (reuse_->model_files[i] == file) return add(reuse_->models[i], file);
+      }
     }
     Result<model::ModelAsset> loaded = model::load_model(path);
     if (!loaded) {
@@ -69,10 +74,10 @@ class ModelCache {
                    " (the generated assets; build the tutti_content_assets target or set "
                    "TUTTI_ASSET_DIR)"};
     }
-    stage_.models.push_back(std::make_unique<model::ModelAsset>(std::move(*loaded)));
-    names_.push_back(file);
-    return static_cast<std::uint32_t>(names_.size() - 1);
+    return add(std::make_shared<const model::ModelAsset>(std::move(*loaded)), file);
   }
+
+  void reuse(const Stage* previous) { reuse_ = previous; }
 
   const std::filesystem::path& dir() const { return dir_; }
 
@@ -87,8 +92,14 @@ class ModelCache {
 
  private:
   Stage& stage_;
+  std::uint32_t add(std::shared_ptr<const model::ModelAsset> model, const std::string& file) {
+    stage_.models.push_back(std::move(model));
+    stage_.model_files.push_back(file);
+    return static_cast<std::uint32_t>(stage_.models.size() - 1);
+  }
+
   std::filesystem::path dir_;
-  std::vector<std::string> names_;
+  const Stage* reuse_ = nullptr;
 };
 
 // A model and how tutti finds its parts: the generated asset (roles are node names) or a user's
@@ -329,6 +340,9 @@ Status build_brass(Stage& stage, ModelCache& cache) {
     if (seat.seated) {
       cache.place(*chair_model, glm::translate(seat.placement, glm::vec3(0, 0, -0.12f)));
     }
+    for (const brass::LineNote& note : line->notes) {
+      seat.line.push_back(LineNoteTime{note.onset_s, note.offset_s, note.sounding, note.playable});
+    }
     stage.brass.push_back(seat);
 
     ensemble::PerformerInput input;
@@ -543,6 +557,7 @@ Result<std::unique_ptr<Stage>> build_stage(const scene::Scene& scene, const Stag
   }
   stage->sounding = stage->scores;
   ModelCache cache(*stage, options.asset_dir.empty() ? default_asset_dir() : options.asset_dir);
+  cache.reuse(options.reuse_models);
   auto floor = cache.get("stage.glb");
   if (!floor) return floor.error();
   stage->placed[cache.place(*floor, glm::mat4(1.0f))].casts_shadows = false;

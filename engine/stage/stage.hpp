@@ -40,9 +40,15 @@ struct Instrument;
 
 namespace tutti::stage {
 
+struct Stage;
+
 struct StageOptions {
   std::filesystem::path content_dir;  // empty: tutti::content::default_content_dir()
   std::filesystem::path asset_dir;    // the generated .glb files; empty: default_asset_dir()
+  // Models already loaded (the editor re-plans after every edit): files this stage loaded are
+  // shared instead of read again, so a renderer made for its model_list() stays valid when the
+  // scene's cast is unchanged.
+  const Stage* reuse_models = nullptr;
 };
 
 // Where the content generator's .glb files are: $TUTTI_ASSET_DIR, else the build tree's
@@ -69,8 +75,17 @@ struct BodyNodes {
   bool mapped = false;  // a user's rig (mapping file): only IK and morphs, no canned bends
 };
 
+// One note of a brass player's line, as written (BreathEvent::before_note indexes these).
+struct LineNoteTime {
+  double onset_s = 0.0;
+  double offset_s = 0.0;
+  int pitch = 60;  // sounding MIDI key
+  bool playable = true;
+};
+
 struct BrassSeat {
   std::string name;
+  std::vector<LineNoteTime> line;
   ecs::Entity performer = ecs::Entity::null;
   ecs::Entity instrument = ecs::Entity::null;
   bool trombone = false;
@@ -120,7 +135,8 @@ struct Stage {
   // What is heard: `scores` with the notes as the players play them (a brass note shortened to
   // make room for a catch breath ends early here, so the sound stops while the player breathes).
   std::vector<music::Score> sounding;
-  std::vector<std::unique_ptr<model::ModelAsset>> models;
+  std::vector<std::shared_ptr<const model::ModelAsset>> models;
+  std::vector<std::string> model_files;  // the file each of `models` came from
   std::vector<PlacedModel> placed;
   std::vector<BrassSeat> brass;
   // The ensemble's body motion (every brass player, in `brass` order) and the brass plans it

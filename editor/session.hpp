@@ -1,0 +1,57 @@
+#pragma once
+// The editor's model: the open Document and the Stage planned from it. Every edit re-plans the
+// stage (the models are shared with the previous stage, so a renderer stays valid) before it is
+// accepted: an edit the planners refuse (a pin naming no note) changes nothing and returns their
+// message. UI-free; the panels, the --script runner and the tests all drive it.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+
+#include "core/result.hpp"
+#include "editor/document.hpp"
+#include "editor/scene_edits.hpp"
+#include "editor/timeline.hpp"
+#include "stage/stage.hpp"
+
+namespace tutti::editor {
+
+class Session {
+ public:
+  static Result<std::unique_ptr<Session>> open(const std::filesystem::path& scene,
+                                               const stage::StageOptions& options = {});
+
+  const Document& document() const { return document_; }
+  Document& document() { return document_; }
+  stage::Stage& stage() { return *stage_; }
+  const stage::Stage& stage() const { return *stage_; }
+  const Timeline& timeline() const { return timeline_; }
+
+  // `coalesce`: merge with the previous edit of the same thing (one undo step per slider drag).
+  Status apply(Result<Edit> edit, bool coalesce = false);
+  Status undo();
+  Status redo();
+  // Counts re-plans; the stage object is replaced on each (re-read any pointers into it).
+  std::uint64_t stage_revision() const { return stage_revision_; }
+  // The stage's models are not the ones of the stage before the last re-plan (a renderer made
+  // for model_list() must be made again). False while the cast is unchanged.
+  bool models_changed() const { return models_changed_; }
+  double last_replan_ms() const { return last_replan_ms_; }
+
+ private:
+  Session(Document document, stage::StageOptions options)
+      : document_(std::move(document)), options_(std::move(options)) {}
+  Status replan(const scene::Scene& scene);  // plans into next_
+  void adopt();                              // next_ becomes the stage
+
+  Document document_;
+  stage::StageOptions options_;
+  std::unique_ptr<stage::Stage> stage_;
+  std::unique_ptr<stage::Stage> next_;
+  Timeline timeline_;
+  std::uint64_t stage_revision_ = 0;
+  bool models_changed_ = false;
+  double last_replan_ms_ = 0.0;
+};
+
+}  // namespace tutti::editor

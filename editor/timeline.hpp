@@ -1,0 +1,73 @@
+#pragma once
+// What the editor's timeline shows, read from a planned stage: bar lines and beats from the tempo
+// map and time signatures, each performer's notes and planned breaths (marked or by the rules),
+// their expressions, the lead's cues, the camera cuts, and for the pianist each note's finger
+// (pinned or planned) with the hands' allowed areas and paths. Rebuilt after every re-plan.
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "stage/stage.hpp"
+
+namespace tutti::editor {
+
+struct TimelineNote {
+  double start_s = 0.0;
+  double end_s = 0.0;
+  int key = 60;
+  int finger = 0;  // the pianist's: 1..5 planned (0 = none); brass: 0
+  bool pinned = false;
+  bool right_hand = true;
+  bool playable = true;
+};
+
+struct TimelineBreath {
+  double prepare_s = 0.0;  // the preparation's start (= start_s for most)
+  double start_s = 0.0;    // inhaling from start_s to end_s
+  double end_s = 0.0;
+  double boundary_s = 0.0;  // the onset of the note it precedes: how the scene names it
+  bool marked = false;      // there because of a breath mark
+  bool catch_breath = false;
+};
+
+struct TimelineLane {
+  std::string name;
+  bool pianist = false;
+  std::size_t performer = 0;  // into Scene::performers (brass lanes)
+  std::vector<TimelineNote> notes;
+  std::vector<TimelineBreath> breaths;
+  std::vector<scene::Expression> expressions;
+  int lowest_key = 127;
+  int highest_key = 0;
+};
+
+// The allowed hand positions of one event and where the hand actually is (keyboard x, mm).
+struct HandCorridorView {
+  double start_s = 0.0, end_s = 0.0, lo_mm = 0.0, hi_mm = 0.0;
+};
+
+struct Timeline {
+  double start_s = 0.0;
+  double end_s = 0.0;
+  std::vector<double> bars_s;       // bar lines
+  std::vector<double> beats_s;      // every beat (bar lines included)
+  std::vector<TimelineLane> lanes;  // brass players in scene order, then the pianist
+  std::vector<double> cues_s;       // the lead's cues as planned (the entrance times)
+  bool cues_automatic = true;       // the scene lists none
+  struct Shot {
+    double start_s = 0.0;
+    std::string camera;
+  };
+  std::vector<Shot> shots;
+  std::array<std::vector<HandCorridorView>, 2> corridors;  // pianist: right, left
+};
+
+Timeline build_timeline(const stage::Stage& stage);
+
+// The first bar line or beat within `tolerance_s` of t, else t: clicks snap to the grid.
+double snap_to_beat(const Timeline& timeline, double t, double tolerance_s);
+
+}  // namespace tutti::editor

@@ -1,0 +1,102 @@
+// The editor's model: each edit re-plans the stage before it is accepted, the timeline follows,
+// and the models are shared so a renderer survives the re-plan.
+#include "editor/session.hpp"
+
+#include <gtest/gtest.h>
+
+#include "components/body_motion.hpp"
+#include "editor_test_support.hpp"
+
+namespace tutti::editor {
+namespace {
+
+using test::ScratchDir;
+
+components::BodyMotion body_at(Session& session, std::size_t performer, double t) {
+  stage::evaluate_stage(session.stage(), t);
+  return session.stage().world.get<components::BodyMotion>(
+      session.stage().brass[performer].performer);
+}
+
+TEST(Session, AVariationEditReplansThatPlayersMotion) {
+  ScratchDir dir;
+  auto session = Session::open(dir.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  const auto models = s.stage().model_list();
+  const auto before = body_at(s, 1, 6.0);
+  ASSERT_TRUE(s.apply(set_variation(s.document().json(), {false, 1}, "sway_amount", 1.0)));
+  EXPECT_FALSE(s.models_changed()) << "the same cast: the models are shared";
+  EXPECT_EQ(s.stage().model_list(), models);
+  const auto after = body_at(s, 1, 6.0);
+  EXPECT_NE(before.sway_rad, after.sway_rad);
+  EXPECT_GT(s.last_replan_ms(), 0.0);
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(body_at(s, 1, 6.0).sway_rad, before.sway_rad) << "undo re-plans back exactly";
+}
+
+TEST(Session, TheTimelineShowsTheScene) {
+  ScratchDir dir;
+  auto session = Session::open(dir.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  const Timeline& t = (*session)->timeline();
+  ASSERT_EQ(t.lanes.size(), 4u);
+  EXPECT_EQ(t.lanes[0].name, "Trumpet 1");
+  EXPECT_FALSE(t.lanes[0].notes.empty());
+  EXPECT_FALSE(t.lanes[0].breaths.empty());
+  for (const TimelineLane& lane : t.lanes) {
+    for (const TimelineBreath& b : lane.breaths) {
+      EXPECT_LE(b.start_s, b.end_s);
+      EXPECT_LE(b.end_s, b.boundary_s + 1e-9) << lane.name << ": a breath ends by its note";
+    }
+  }
+  ASSERT_GE(t.bars_s.size(), 8u);
+  EXPECT_GT(t.beats_s.size(), t.bars_s.size());
+  EXPECT_EQ(t.shots.size(), (*session)->document().scene().shots.size());
+  ASSERT_EQ(t.cues_s.size(), 1u) << "the automatic cue";
+  EXPECT_TRUE(t.cues_automatic);
+  EXPECT_DOUBLE_EQ(snap_to_beat(t, t.beats_s[3] + 0.01, 0.05), t.beats_s[3]);
+  EXPECT_DOUBLE_EQ(snap_to_beat(t, t.beats_s[3] + 0.2, 0.05), t.beats_s[3] + 0.2);
+}
+
+TEST(Session, PinningAFingerReplansTheFingering) {
+  ScratchDir dir;
+  auto session = Session::open(dir.copy_scene("piano.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  const TimelineLane& lane = s.timeline().lanes.back();
+  ASSERT_TRUE(lane.pianist);
+  const TimelineNote note = lane.notes[12];
+  const int finger = note.finger == 5 ? 4 : 5;
+  ASSERT_TRUE(s.apply(pin_finger(s.document().json(), note.start_s, note.key, finger)));
+  EXPECT_EQ(s.timeline().lanes.back().notes[12].finger, finger);
+  EXPECT_TRUE(s.timeline().lanes.back().notes[12].pinned);
+  EXPECT_FALSE(s.timeline().corridors[0].empty());
+  // A pin on a note that is not there: the planner refuses it, nothing changes.
+  const std::uint64_t revision = s.document().revision();
+  const Status wrong = s.apply(pin_finger(s.document().json(), note.start_s + 0.3333, 20, 1));
+  ASSERT_FALSE(wrong);
+  EXPECT_NE(wrong.error().message.find("/pianist/pins/1: no note of key 20"), std::string::npos)
+      << wrong.error().message;
+  EXPECT_EQ(s.document().revision(), revision);
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.timeline().lanes.back().notes[12].finger, note.finger);
+}
+
+TEST(Session, ASliderDragIsOneUndoStep) {
+  ScratchDir dir;
+  auto session = Session::open(dir.copy_scene("quartet.json"));
+  ASSERT_TRUE(session);
+  Session& s = **session;
+  for (double v : {0.1, 0.2, 0.3, 0.4}) {
+    ASSERT_TRUE(s.apply(set_variation(s.document().json(), {false, 0}, "head_motion", v),
+                        /*coalesce=*/v > 0.1));
+  }
+  EXPECT_EQ(s.document().history().size(), 1u);
+  EXPECT_DOUBLE_EQ(*s.document().scene().performers[0].variation.head_motion, 0.4);
+  ASSERT_TRUE(s.undo());
+  EXPECT_DOUBLE_EQ(*s.document().scene().performers[0].variation.head_motion, 0.5);
+}
+
+}  // namespace
+}  // namespace tutti::editor
