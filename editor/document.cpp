@@ -161,7 +161,7 @@ void Document::discard_autosave() const {
   fs::remove(autosave_path(path_), ec);
 }
 
-Status Document::recover_autosave() {
+Status Document::recover_autosave(const Check& accept) {
   auto autosaved = read_json(autosave_path(path_));
   if (!autosaved) return autosaved.error();
   Edit edit;
@@ -177,7 +177,7 @@ Status Document::recover_autosave() {
       edit.changes.push_back({"/" + key, json_[key], value});
     }
   }
-  if (Status s = apply(std::move(edit)); !s) return s;
+  if (Status s = apply(std::move(edit), false, accept); !s) return s;
   autosave_available_ = false;
   return Status::success();
 }

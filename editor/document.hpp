@@ -60,7 +60,7 @@ class Document {
   // open() found an autosave newer than the scene, with different contents.
   bool autosave_available() const { return autosave_available_; }
   // Loads the autosave's contents as one undoable edit (the document becomes dirty).
-  Status recover_autosave();
+  Status recover_autosave(const Check& accept = {});
 
  private:
   Document() = default;

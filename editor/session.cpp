@@ -58,4 +58,14 @@ Status Session::redo() {
   return Status::success();
 }
 
+Status Session::recover_autosave() {
+  if (Status s =
+          document_.recover_autosave([this](const scene::Scene& scene) { return replan(scene); });
+      !s) {
+    return s;
+  }
+  adopt();
+  return Status::success();
+}
+
 }  // namespace tutti::editor

@@ -31,6 +31,8 @@ class Session {
   Status apply(Result<Edit> edit, bool coalesce = false);
   Status undo();
   Status redo();
+  // Document::recover_autosave, re-planned.
+  Status recover_autosave();
   // Counts re-plans; the stage object is replaced on each (re-read any pointers into it).
   std::uint64_t stage_revision() const { return stage_revision_; }
   // The stage's models are not the ones of the stage before the last re-plan (a renderer made

@@ -1,0 +1,141 @@
+// The editor's panels driven headless: a bare ImGui context (no window, no renderer), the mouse
+// moved and clicked through ImGuiIO for a few frames, and the model checked afterwards.
+#include "editor/editor_ui.hpp"
+
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include "editor_test_support.hpp"
+
+namespace tutti::editor {
+namespace {
+
+using test::ScratchDir;
+
+class EditorUi : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(1280, 720);
+    io.IniFilename = nullptr;
+    io.DeltaTime = 1.0f / 60.0f;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the font atlas
+    for (int key = 0; key < ImGuiKey_COUNT; ++key) io.KeyMap[key] = key;
+  }
+  void TearDown() override { ImGui::DestroyContext(); }
+
+  UiRequests frame(Session& session) {
+    ImGui::NewFrame();
+    UiRequests requests = draw_editor(session, ui_);
+    ImGui::Render();
+    return requests;
+  }
+  // Presses the left button at (x, y) for one frame and releases it the next.
+  void click(Session& session, float x, float y) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(x, y);
+    frame(session);  // hover first, as a real mouse does
+    io.MouseDown[0] = true;
+    frame(session);
+    io.MouseDown[0] = false;
+    frame(session);
+  }
+  const WidgetBox& widget(const std::string& id) {
+    const WidgetBox* box = find_widget(ui_, id);
+    EXPECT_NE(box, nullptr) << id;
+    static const WidgetBox none;
+    return box != nullptr ? *box : none;
+  }
+
+  ScratchDir dir_;
+  UiState ui_;
+};
+
+TEST_F(EditorUi, DraggingASliderSetsTheVariationAsOneUndoStep) {
+  auto session = Session::open(dir_.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  ui_.selected_lane = 2;  // Trombone 1: no variation in the file
+  frame(s);
+  const WidgetBox box = widget("inspector/sway_amount");
+  ASSERT_GT(box.x1, box.x0);
+  ImGuiIO& io = ImGui::GetIO();
+  const float y = (box.y0 + box.y1) / 2;
+  io.MousePos = ImVec2(box.x0 + 0.25f * (box.x1 - box.x0), y);
+  frame(s);
+  io.MouseDown[0] = true;
+  frame(s);
+  for (float f : {0.4f, 0.6f, 0.75f}) {  // drag right, frame by frame
+    io.MousePos = ImVec2(box.x0 + f * (box.x1 - box.x0), y);
+    frame(s);
+  }
+  io.MouseDown[0] = false;
+  frame(s);
+  const auto& value = s.document().scene().performers[2].variation.sway_amount;
+  ASSERT_TRUE(value.has_value());
+  EXPECT_NEAR(*value, 0.75, 0.06);  // the grab's width offsets the mapping a little
+  EXPECT_EQ(s.document().history().size(), 1u) << "one drag, one undo step";
+  EXPECT_EQ(s.document().undo_label(), "set sway_amount of Trombone 1");
+}
+
+TEST_F(EditorUi, ClickingReRollChangesTheSeedAndUndoRestoresIt) {
+  auto session = Session::open(dir_.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  ui_.selected_lane = 1;
+  frame(s);
+  const std::uint64_t seed = s.document().scene().performers[1].seed;
+  const WidgetBox reroll = widget("inspector/reroll");
+  click(s, (reroll.x0 + reroll.x1) / 2, (reroll.y0 + reroll.y1) / 2);
+  EXPECT_EQ(s.document().scene().performers[1].seed, reroll_seed(seed));
+  const WidgetBox undo = widget("transport/undo");
+  click(s, (undo.x0 + undo.x1) / 2, (undo.y0 + undo.y1) / 2);
+  EXPECT_EQ(s.document().scene().performers[1].seed, seed);
+}
+
+TEST_F(EditorUi, ClickingTheRulerSeeks) {
+  auto session = Session::open(dir_.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  ui_.view_start_s = 0.0;
+  ui_.view_length_s = 20.0;
+  frame(s);
+  const WidgetBox ruler = widget("timeline/ruler");
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(ruler.x0 + 0.5f * (ruler.x1 - ruler.x0), (ruler.y0 + ruler.y1) / 2);
+  frame(s);
+  io.MouseDown[0] = true;
+  const UiRequests pressed = frame(s);
+  io.MouseDown[0] = false;
+  frame(s);
+  ASSERT_TRUE(pressed.seek_s.has_value());
+  EXPECT_NEAR(*pressed.seek_s, 10.0, 0.05);
+}
+
+TEST_F(EditorUi, QuittingWithUnsavedChangesAsksFirst) {
+  auto session = Session::open(dir_.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  ui_.quit_requested = true;
+  EXPECT_TRUE(frame(s).quit) << "nothing unsaved: quit at once";
+  ASSERT_TRUE(s.apply(add_breath(s.document().json(), 0, 5.0)));
+  ui_.quit_requested = true;
+  EXPECT_FALSE(frame(s).quit) << "unsaved: a prompt, not a quit";
+  frame(s);
+  const WidgetBox save = widget("prompt/save");
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2((save.x0 + save.x1) / 2, (save.y0 + save.y1) / 2);
+  frame(s);
+  io.MouseDown[0] = true;
+  frame(s);
+  io.MouseDown[0] = false;
+  EXPECT_TRUE(frame(s).quit);
+  EXPECT_FALSE(s.document().dirty()) << "saved before quitting";
+}
+
+}  // namespace
+}  // namespace tutti::editor
