@@ -1,0 +1,109 @@
+// The editor's --script actions, run against a session with a host that records the transport.
+#include "editor/script.hpp"
+
+#include <gtest/gtest.h>
+
+#include "editor_test_support.hpp"
+#include "scene/load_scene.hpp"
+
+namespace tutti::editor {
+namespace {
+
+using test::ScratchDir;
+
+struct RecordingHost : ScriptHost {
+  std::vector<std::string> calls;
+  void seek(double t) override { calls.push_back("seek " + std::to_string(t)); }
+  void set_playing(bool playing) override { calls.push_back(playing ? "play" : "pause"); }
+  Status draw_frames(int count) override {
+    calls.push_back("frames " + std::to_string(count));
+    return Status::success();
+  }
+  Status screenshot(const std::filesystem::path& png) override {
+    calls.push_back("screenshot " + png.string());
+    return Status::success();
+  }
+};
+
+Result<ScriptStep> run_all(const Script& script, Session& session, ScriptHost& host) {
+  for (const ScriptCommand& command : script.commands) {
+    auto step = run_script_command(script, command, session, host);
+    if (!step || *step == ScriptStep::quit) return step;
+  }
+  return ScriptStep::next;
+}
+
+TEST(Script, BadScriptsAreOneLineErrorsBeforeAnythingRuns) {
+  EXPECT_EQ(parse_script("save\nfrobnicate 3\n", "s.txt").error().message,
+            "s.txt:2: unknown command \"frobnicate\"");
+  EXPECT_EQ(parse_script("add-breath \"Trumpet 1\" soon\n", "s.txt").error().message,
+            "s.txt:1: \"soon\" is not a number (usage: add-breath PERFORMER TIME)");
+  EXPECT_EQ(parse_script("seek\n", "s.txt").error().message, "s.txt:1: usage: seek TIME");
+  EXPECT_EQ(parse_script("add-breath \"Trumpet 1 6\n", "s.txt").error().message,
+            "s.txt:1: unclosed quote");
+  EXPECT_EQ(load_script("/no/such/script.txt").error().message,
+            "/no/such/script.txt: no such file");
+  auto ok = parse_script("# edits\n\nseek 2.5   # and a comment\nquit\n", "s.txt");
+  ASSERT_TRUE(ok) << ok.error().message;
+  ASSERT_EQ(ok->commands.size(), 2u);
+  EXPECT_EQ(ok->commands[0].line, 3);
+}
+
+TEST(Script, EditsSaveAndQuit) {
+  ScratchDir dir;
+  const auto file = dir.copy_scene("quartet.json");
+  auto session = Session::open(file);
+  ASSERT_TRUE(session) << session.error().message;
+  RecordingHost host;
+  auto script = parse_script(
+      "set-variation \"Trumpet 2\" sway_amount 0.8\n"
+      "add-breath \"Trombone 1\" 6.0\n"
+      "add-expression \"Trumpet 1\" strain 4 6 0.7\n"
+      "cut close_trumpet 12.5\n"
+      "seek 12\nframes 3\nscreenshot x.png\n"
+      "quit\n",
+      "s.txt");
+  ASSERT_TRUE(script) << script.error().message;
+  auto step = run_all(*script, **session, host);
+  ASSERT_FALSE(step);
+  EXPECT_NE(step.error().message.find("s.txt:4: quartet.json: /shots/"), std::string::npos)
+      << "no camera of that name: " << step.error().message;
+
+  auto fixed = parse_script("cut wide 12.5\nseek 12\nframes 3\nscreenshot x.png\nquit\n", "s.txt");
+  ASSERT_TRUE(fixed);
+  step = run_all(*fixed, **session, host);
+  ASSERT_FALSE(step);
+  EXPECT_EQ(step.error().message, "s.txt:5: unsaved changes (save first, or quit-discarding)");
+  EXPECT_EQ(host.calls,
+            (std::vector<std::string>{"seek 12.000000", "frames 3", "screenshot x.png"}));
+
+  auto finish = parse_script("save\nquit\n", "s.txt");
+  ASSERT_TRUE(finish);
+  step = run_all(*finish, **session, host);
+  ASSERT_TRUE(step) << step.error().message;
+  EXPECT_EQ(*step, ScriptStep::quit);
+  auto saved = scene::load_scene(file);
+  ASSERT_TRUE(saved) << saved.error().message;
+  EXPECT_DOUBLE_EQ(*saved->performers[1].variation.sway_amount, 0.8);
+  EXPECT_EQ(saved->performers[2].breaths.add_s, std::vector<double>{6.0});
+  ASSERT_EQ(saved->performers[0].expressions.size(), 1u);
+  EXPECT_DOUBLE_EQ(saved->performers[0].expressions[0].amount, 0.7);
+  EXPECT_EQ(saved->cameras[saved->shots[saved->shot_at(12.6)].camera].name, "wide");
+}
+
+TEST(Script, UnknownPerformerNamesTheOnesThere) {
+  ScratchDir dir;
+  auto session = Session::open(dir.copy_scene("quartet.json"));
+  ASSERT_TRUE(session);
+  RecordingHost host;
+  auto script = parse_script("reroll-seed Tuba\n", "s.txt");
+  ASSERT_TRUE(script);
+  auto step = run_all(*script, **session, host);
+  ASSERT_FALSE(step);
+  EXPECT_EQ(step.error().message,
+            "s.txt:1: no performer \"Tuba\" (performers: Trumpet 1, Trumpet 2, Trombone 1, "
+            "Trombone 2)");
+}
+
+}  // namespace
+}  // namespace tutti::editor
