@@ -83,7 +83,9 @@ TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
   ASSERT_TRUE(stage->ensemble);
   ASSERT_EQ(stage->ensemble->performers.size(), 4u);
   EXPECT_EQ(stage->ensemble->lead, 0);  // "Trumpet 1 leads"
-  const ensemble::CueMotion& cue = *stage->ensemble->performers[0].cue;
+  // No cue list in the scene: one cue, at the first entrance.
+  ASSERT_EQ(stage->ensemble->performers[0].cues.size(), 1u);
+  const ensemble::CueMotion& cue = stage->ensemble->performers[0].cues.front();
   EXPECT_NEAR(cue.dip_s, stage->ensemble->entrance_s, 1e-9);
   // The lead's bell at the top of the cue, in the rendered pose: the generated trumpet's bell
   // points along its -Z, which rises in the world as the bell lifts.
