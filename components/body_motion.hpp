@@ -16,8 +16,10 @@ struct BodyMotion {
   float shoulder_lift_m = 0.0f;  // the chest and shoulders rise (+), breathing in
   float head_nod_rad = 0.0f;     // the head tips forward (+)
   float bell_lift_rad = 0.0f;    // the instrument's bell rises (+): the cue
-  float strain = 0.0f;           // 0 .. 1: the strain the face shows, Breath::strain as the
-                                 // player's expression (strain / relaxed spans) shapes it
+  // 0 .. 1: the strain the face shows, Breath::strain as the player's expression (strain /
+  // relaxed spans) shapes it; a double like Breath::strain, so without an expression the face
+  // shows exactly the air model's strain.
+  double strain = 0.0;
 };
 
 }  // namespace tutti::components

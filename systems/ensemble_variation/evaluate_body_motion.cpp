@@ -104,7 +104,7 @@ ExpressionLevel expression_at(const PerformerMotionPlan& plan, double t) {
 components::BodyMotion evaluate_body_motion(const PerformerMotionPlan& plan, double t,
                                             double breath_strain) {
   components::BodyMotion m;
-  m.strain = static_cast<float>(std::clamp(breath_strain, 0.0, 1.0));
+  m.strain = std::clamp(breath_strain, 0.0, 1.0);
   if (!std::isfinite(t)) return m;
   const double beats = plan.tempo.beats_at_seconds(t);
   const double cycle = kTwoPi * (beats / plan.sway_period_beats + plan.params.sway_phase);
@@ -131,14 +131,14 @@ components::BodyMotion evaluate_body_motion(const PerformerMotionPlan& plan, dou
     m.lean_back_rad = static_cast<float>(m.lean_back_rad * (1.0 - kStrainChest * s));
     m.shoulder_lift_m = static_cast<float>(m.shoulder_lift_m + kStrainShoulders_m * s);
     m.bell_lift_rad = static_cast<float>(m.bell_lift_rad + kStrainBell_rad * s);
-    m.strain = std::max(m.strain, static_cast<float>(s));
+    m.strain = std::max(m.strain, s);
   } else if (expression.relaxed > 0.0) {
     const double r = expression.relaxed;
     m.sway_rad = static_cast<float>(m.sway_rad * (1.0 + kRelaxedSway * r));
     m.twist_rad = static_cast<float>(m.twist_rad * (1.0 + kRelaxedSway * r));
     m.head_nod_rad = static_cast<float>(m.head_nod_rad * (1.0 + kRelaxedSway * r));
     m.shoulder_lift_m = static_cast<float>(m.shoulder_lift_m - kRelaxedShoulders_m * r);
-    m.strain = static_cast<float>(m.strain * (1.0 - r));
+    m.strain *= 1.0 - r;
   }
   return m;
 }

@@ -188,8 +188,8 @@ TEST(Expressions, StrainRaisesShouldersAndShownStrainAndRelaxedLowersThem) {
     const components::BodyMotion a = evaluate_body_motion(p.with, t, 0.1);
     const components::BodyMotion b = evaluate_body_motion(p.without, t, 0.1);
     EXPECT_GT(a.shoulder_lift_m, b.shoulder_lift_m + 0.009f) << t;
-    EXPECT_GE(a.strain, 0.8f - 1e-6f) << t;
-    EXPECT_FLOAT_EQ(b.strain, 0.1f) << t;
+    EXPECT_GE(a.strain, 0.8 - 1e-12) << t;
+    EXPECT_EQ(b.strain, 0.1) << t;
     EXPECT_LE(std::abs(a.sway_rad), 0.53f * std::abs(b.sway_rad) + 1e-7f) << t;
     EXPECT_GT(a.bell_lift_rad, b.bell_lift_rad + 0.035f) << t;
     EXPECT_LE(a.lean_back_rad, b.lean_back_rad) << t;
@@ -197,18 +197,18 @@ TEST(Expressions, StrainRaisesShouldersAndShownStrainAndRelaxedLowersThem) {
   EXPECT_LT(evaluate_body_motion(p.with, 11.6).lean_back_rad,
             0.7f * evaluate_body_motion(p.without, 11.6).lean_back_rad);
   // A strain above the span's amount stays.
-  EXPECT_FLOAT_EQ(evaluate_body_motion(p.with, 12.0, 0.95).strain, 0.95f);
+  EXPECT_EQ(evaluate_body_motion(p.with, 12.0, 0.95).strain, 0.95);
   // Inside the relaxed span: shoulders down, the strain gone, a wider sway.
   for (double t : {20.5, 21.5, 22.0, 23.5}) {
     const components::BodyMotion a = evaluate_body_motion(p.with, t, 0.5);
     const components::BodyMotion b = evaluate_body_motion(p.without, t, 0.5);
     EXPECT_LT(a.shoulder_lift_m, b.shoulder_lift_m - 0.009f) << t;
-    EXPECT_EQ(a.strain, 0.0f) << t;
+    EXPECT_EQ(a.strain, 0.0) << t;
     EXPECT_GE(std::abs(a.sway_rad), 1.55f * std::abs(b.sway_rad)) << t;
   }
   // Half the amount: half the effect on the shown strain.
   const Pair half = with_and_without({span(ExpressionKind::relaxed, 20.0, 24.0, 0.5)});
-  EXPECT_FLOAT_EQ(evaluate_body_motion(half.with, 22.0, 0.6).strain, 0.3f);
+  EXPECT_DOUBLE_EQ(evaluate_body_motion(half.with, 22.0, 0.6).strain, 0.3);
 }
 
 TEST(Expressions, TheMotionIsContinuousAtTheSpanEdges) {
@@ -217,7 +217,7 @@ TEST(Expressions, TheMotionIsContinuousAtTheSpanEdges) {
                                    span(ExpressionKind::relaxed, 14.0, 18.0, 1.0),
                                    span(ExpressionKind::strain, 20.0, 20.2, 1.0)});
   // At the peak of the short span the full amount shows (its ramps are 0.1 s).
-  EXPECT_FLOAT_EQ(evaluate_body_motion(p.with, 20.1).strain, 1.0f);
+  EXPECT_DOUBLE_EQ(evaluate_body_motion(p.with, 20.1).strain, 1.0);
   // Every millisecond, what the expressions add changes by little: the steepest ramp (the short
   // span's, minimum-jerk over 0.1 s) moves 1.875 / 100 = 0.019 of its full effect per ms.
   const auto diff = [&](double t) {
@@ -294,10 +294,10 @@ TEST(Expressions, TheSystemShowsTheExpressedStrainOfTheBreath) {
   ecs::FrameTime frame;
   frame.t_s = 12.0;
   ensemble_variation_system(world, frame);
-  EXPECT_FLOAT_EQ(world.try_get<components::BodyMotion>(performer)->strain, 0.8f);
+  EXPECT_DOUBLE_EQ(world.try_get<components::BodyMotion>(performer)->strain, 0.8);
   frame.t_s = 5.0;
   ensemble_variation_system(world, frame);
-  EXPECT_FLOAT_EQ(world.try_get<components::BodyMotion>(performer)->strain, 0.3f);
+  EXPECT_EQ(world.try_get<components::BodyMotion>(performer)->strain, 0.3);
 }
 
 }  // namespace
