@@ -341,7 +341,8 @@ std::size_t marked_note(const std::vector<Played>& played, double t) {
 // at least inhale_min_s is breathed in as the rules would for its length (a rest under half a
 // beat as in_rest, a window the rules found too short widened to inhale_min_s inside the rest);
 // a shorter rest, or none, gives a catch-breath that takes the end of the previous note as
-// catch-breaths do (its new end in `cut_off`, as much as catch_max_cut allows).
+// catch-breaths do (as much as catch_max_cut allows): played[k - 1] is shortened in place, so the
+// air model drains only what is played, and cut_previous tells the caller to list it.
 BreathEvent forced_breath(std::vector<Played>& played, std::size_t k, const RuleBreath& rule,
                           const Meter& meter, const music::TempoMap& map, const BreathParams& p,
                           bool& cut_previous) {
