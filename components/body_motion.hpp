@@ -1,7 +1,8 @@
 #pragma once
 // How a performer's body moves away from the instrument's stock pose at the current frame, on the
-// performer entity: sway, weight shifts, the breathing body, the lead's cue. Written every frame
-// by systems/ensemble_variation (Phase::express); the stage turns it into joint rotations.
+// performer entity: sway, weight shifts, the breathing body, the lead's cues, the editor's
+// expressions. Written every frame by systems/ensemble_variation (Phase::express); the stage
+// turns it into joint rotations.
 // Directions are the player's own: + sideways = their left, + lean = back, + nod = forward.
 
 namespace tutti::components {
@@ -15,6 +16,10 @@ struct BodyMotion {
   float shoulder_lift_m = 0.0f;  // the chest and shoulders rise (+), breathing in
   float head_nod_rad = 0.0f;     // the head tips forward (+)
   float bell_lift_rad = 0.0f;    // the instrument's bell rises (+): the cue
+  // 0 .. 1: the strain the face shows, Breath::strain as the player's expression (strain /
+  // relaxed spans) shapes it; a double like Breath::strain, so without an expression the face
+  // shows exactly the air model's strain.
+  double strain = 0.0;
 };
 
 }  // namespace tutti::components

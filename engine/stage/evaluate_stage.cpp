@@ -151,8 +151,11 @@ void pose_brass(Stage& stage, BrassSeat& seat) {
       pose_body_motion(seat.body_nodes, seat.seated, body_asset, *body_motion, body->pose);
     }
     if (mouth != nullptr) {
-      // A phrase that outlasts the air strains the face.
-      const double strain = breath != nullptr ? 0.8 * breath->strain : 0.0;
+      // A phrase that outlasts the air strains the face; with ensemble motion, as the player's
+      // expression shapes it (BodyMotion::strain starts from Breath::strain).
+      const double strain = body_motion != nullptr ? 0.8 * body_motion->strain
+                            : breath != nullptr    ? 0.8 * breath->strain
+                                                   : 0.0;
       set_morph(body->pose, seat.body_nodes.morph_tension, std::max(mouth->tension, strain));
       set_morph(body->pose, seat.body_nodes.morph_open, mouth->open);
     }

@@ -230,10 +230,11 @@ double refilled(double air, double inhale_s, const BreathParams& p) {
 }
 
 // Decides the catch-breaths of phrase [begin, end) (played positions between rule breaths),
-// starting with `air`; returns the air at its end.
+// starting with `air`; returns the air at its end. No catch-breath goes before a played note k
+// with removed[k] (a remove mark).
 double plan_phrase(const std::vector<Played>& played, std::size_t begin, std::size_t end,
                    double air, const Meter& meter, const BreathParams& p,
-                   std::vector<Catch>& catches, int& out_of_air) {
+                   const std::vector<char>& removed, std::vector<Catch>& catches, int& out_of_air) {
   std::size_t cur = begin;
   bool empty = false;  // the air has reached 0 (counted) and no breath since
   std::vector<double> before(end - begin, 0.0);
@@ -261,6 +262,7 @@ double plan_phrase(const std::vector<Played>& played, std::size_t begin, std::si
     std::size_t latest_positive = end;
     std::size_t latest_any = end;
     for (std::size_t j = cur; j <= low && j + 1 < end; ++j) {
+      if (removed[j + 1] != 0) continue;
       const Played& n = played[j];
       const double length = n.off_s - n.on_s;
       const double gap_s = played[j + 1].on_s - n.off_s;
@@ -327,6 +329,58 @@ void add_segment(BreathPlan& plan, double start_s, double end_s, double from, do
   plan.air.push_back({start_s, end_s, from, to, inhale});
 }
 
+// The played position a mark at t refers to (the first onset >= t), or played.size() for none.
+std::size_t marked_note(const std::vector<Played>& played, double t) {
+  if (!std::isfinite(t)) return played.size();
+  const auto it = std::lower_bound(played.begin(), played.end(), t - kTimeTolerance,
+                                   [](const Played& n, double value) { return n.on_s < value; });
+  return static_cast<std::size_t>(it - played.begin());
+}
+
+// The breath an add mark forces before played note k > 0 where the rules give none. A rest of
+// at least inhale_min_s is breathed in as the rules would for its length (a rest under half a
+// beat as in_rest, a window the rules found too short widened to inhale_min_s inside the rest);
+// a shorter rest, or none, gives a catch-breath that takes the end of the previous note as
+// catch-breaths do (as much as catch_max_cut allows): played[k - 1] is shortened in place, so the
+// air model drains only what is played, and cut_previous tells the caller to list it.
+BreathEvent forced_breath(std::vector<Played>& played, std::size_t k, const RuleBreath& rule,
+                          const Meter& meter, const music::TempoMap& map, const BreathParams& p,
+                          bool& cut_previous) {
+  Played& previous = played[k - 1];
+  const Played& next = played[k];
+  const double gap_s = next.on_s - previous.off_s;
+  BreathEvent e = rule.event;
+  e.marked = true;
+  e.before_note = next.note;
+  e.end_s = next.on_s;
+  if (gap_s >= p.inhale_min_s - kTimeTolerance) {
+    if (e.rest_beats < 0.5 - kBeatTolerance) {
+      e.kind = BreathKind::in_rest;
+      e.window_start_s = previous.off_s;
+    }
+    e.window_start_s =
+        std::clamp(std::min(e.window_start_s, e.end_s - p.inhale_min_s), previous.off_s, e.end_s);
+    e.start_s = e.end_s - std::clamp(e.end_s - e.window_start_s, p.inhale_min_s, p.inhale_max_s);
+    e.start_s = std::max(e.start_s, previous.off_s);
+    e.prepare_start_s = e.start_s;
+    if (e.kind == BreathKind::prepared) {
+      e.prepare_start_s = std::max(previous.off_s, e.start_s - p.prepare_s);
+    }
+    return e;
+  }
+  const double cut =
+      std::clamp(p.catch_inhale_s - gap_s, 0.0, p.catch_max_cut * (previous.off_s - previous.on_s));
+  if (cut > 0.0) {
+    previous.off_s -= cut;
+    previous.off_q = std::max(previous.on_q, map.beats_at_seconds(previous.off_s));
+    cut_previous = true;
+  }
+  e.kind = BreathKind::catch_breath;
+  e.prepare_start_s = e.start_s = e.window_start_s = previous.off_s;
+  e.rest_beats = meter.beats_between(std::min(previous.off_q, next.on_q), next.on_q);
+  return e;
+}
+
 }  // namespace
 
 double strain_at_air(double air, double strain_from_air) {
@@ -337,17 +391,60 @@ double strain_at_air(double air, double strain_from_air) {
 
 BreathPlan plan_breaths(const BrassLine& line, const music::Score& score,
                         const BreathParams& params) {
+  return plan_breaths(line, score, params, BreathMarks{});
+}
+
+BreathPlan plan_breaths(const BrassLine& line, const music::Score& score,
+                        const BreathParams& params, const BreathMarks& marks) {
   BreathPlan plan;
   plan.initial_air = std::clamp(params.resting_air, 0.0, 1.0);
   plan.strain_from_air = params.strain_from_air;
   plan.min_air = plan.initial_air;
-  const std::vector<Played> played = played_notes(line, params);
-  if (played.empty()) return plan;
+  std::vector<Played> played = played_notes(line, params);
+  if (played.empty()) {
+    plan.ignored_marks = static_cast<int>(marks.add_s.size() + marks.remove_s.size());
+    return plan;
+  }
   const Meter meter(score);
+
+  // The marks, as flags per played note (the boundary before it).
+  std::vector<char> added(played.size(), 0);
+  std::vector<char> removed(played.size(), 0);
+  for (double t : marks.remove_s) {
+    const std::size_t k = marked_note(played, t);
+    if (k < played.size()) {
+      removed[k] = 1;
+    } else {
+      ++plan.ignored_marks;
+    }
+  }
+  for (double t : marks.add_s) {
+    const std::size_t k = marked_note(played, t);
+    if (k < played.size() && removed[k] == 0) {
+      added[k] = 1;
+    } else {
+      ++plan.ignored_marks;
+    }
+  }
 
   std::vector<RuleBreath> rules(played.size());
   for (std::size_t k = 0; k < played.size(); ++k) {
     rules[k] = rule_breath(played, k, meter, score.tempo_map, params);
+  }
+  // After all rules (they read the unshortened notes): a forced catch-breath shortens note k - 1,
+  // which no rule looks at again.
+  std::vector<char> cut_by_mark(played.size(), 0);
+  for (std::size_t k = 0; k < played.size(); ++k) {
+    if (removed[k] != 0) {
+      rules[k].breathe = false;
+      rules[k].skipped = false;
+    } else if (added[k] != 0 && !rules[k].breathe && k > 0) {  // the first always has one
+      bool cut = false;
+      rules[k].event = forced_breath(played, k, rules[k], meter, score.tempo_map, params, cut);
+      rules[k].breathe = true;
+      rules[k].skipped = false;
+      cut_by_mark[k - 1] = cut ? 1 : 0;
+    }
     plan.skipped_rests += rules[k].skipped ? 1 : 0;
   }
 
@@ -358,8 +455,8 @@ BreathPlan plan_breaths(const BrassLine& line, const music::Score& score,
     std::size_t end = begin + 1;
     while (end < played.size() && !rules[end].breathe) ++end;
     const BreathEvent& e = rules[begin].event;
-    air = refilled(air, e.end_s - e.start_s, params);
-    air = plan_phrase(played, begin, end, air, meter, params, catches, plan.out_of_air);
+    if (rules[begin].breathe) air = refilled(air, e.end_s - e.start_s, params);  // else removed
+    air = plan_phrase(played, begin, end, air, meter, params, removed, catches, plan.out_of_air);
     begin = end;
   }
 
@@ -388,6 +485,9 @@ BreathPlan plan_breaths(const BrassLine& line, const music::Score& score,
       }
     }
     min_air = std::min(min_air, air);
+    if (cut_by_mark[k] != 0) {
+      plan.shortened.push_back({n.note, n.off_s, score.tempo_map.beats_at_seconds(n.off_s)});
+    }
     if (catches[k].taken) {
       const Played& next = played[k + 1];
       BreathEvent e;

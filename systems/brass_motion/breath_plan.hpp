@@ -34,6 +34,11 @@
 //    planning goes on from there (as often as needed). Where none fits, the player plays on
 //    what is left, down to 0 (counted in out_of_air), and breathes at the first boundary that
 //    fits.
+//  - Breath marks (the editor's, BreathMarks) override the rules at one note boundary each: an
+//    add mark makes the player breathe there (in the rest, or as a catch-breath when the rest is
+//    shorter than inhale_min_s or the notes are contiguous), a remove mark forbids any breath
+//    there (rule, catch-breath or before the entrance). Marked breaths are phrase boundaries for
+//    the air model like rule breaths (README: breath marks).
 // Deterministic: the same inputs give the same plan bit for bit.
 
 #include <vector>
@@ -57,6 +62,17 @@ struct BreathEvent {
                                 // two beats; for a catch-breath = start_s); end = end_s
   double rest_beats = 0.0;      // the rest's length in beats of the meter (catch-breath: the
                                 // gap before the next note, usually 0)
+  bool marked = false;          // it exists because of an add mark (the rules gave none there)
+};
+
+// The editor's breath marks, times in seconds. A mark refers to the boundary before note n, n =
+// the first played note whose onset is >= t (1 ns tolerance); a mark after the last onset (or
+// not finite) refers to nothing and is ignored (BreathPlan::ignored_marks). Order and duplicates
+// do not matter. A boundary that is both added and removed keeps no breath: the remove wins and
+// the add counts as ignored.
+struct BreathMarks {
+  std::vector<double> add_s;     // breathe before the first note whose onset is >= t
+  std::vector<double> remove_s;  // no breath before the first note whose onset is >= t
 };
 
 struct ShortenedNote {
@@ -85,15 +101,21 @@ struct BreathPlan {
   // Figures for reports.
   double min_air = 1.0;     // lowest air level after the first breath (initial_air if none)
   double max_strain = 0.0;  // strain at min_air
-  int catch_breaths = 0;
+  int catch_breaths = 0;  // the planner's (a marked catch-breath is not counted)
   int out_of_air = 0;     // stretches where the air reached 0 (no catch-breath fitted before)
-  int skipped_rests = 0;  // rests long enough in beats but shorter than inhale_min_s
+  int skipped_rests = 0;  // rests long enough in beats but shorter than inhale_min_s (and not
+                          // breathed in because of an add mark)
+  int ignored_marks = 0;  // marks that refer to no boundary (after the last note, not finite,
+                          // or an add overruled by a remove at the same boundary)
 };
 
 // Plans the breathing of one line. `score` supplies the tempo map and time signatures the
 // line's notes were timed with. Never fails; an empty line gives an empty plan.
 BreathPlan plan_breaths(const BrassLine& line, const music::Score& score,
                         const BreathParams& params);
+// The same, honouring the editor's breath marks (empty marks = the 3-argument overload).
+BreathPlan plan_breaths(const BrassLine& line, const music::Score& score,
+                        const BreathParams& params, const BreathMarks& marks);
 
 // What evaluate_breath returns (copied into components::Breath and Mouth::open each frame).
 struct BreathState {

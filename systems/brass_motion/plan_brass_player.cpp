@@ -21,9 +21,9 @@ BrassLine as_played(const BrassLine& line, const BreathPlan& breaths) {
 
 BrassPlayerMotion plan_brass_player(const BrassLine& line, const music::Score& score,
                                     const BrassMotionParams& motion, const BreathParams& breath,
-                                    const ChangeWindow& window) {
+                                    const ChangeWindow& window, const BreathMarks& marks) {
   BrassPlayerMotion out;
-  out.breaths = plan_breaths(line, score, breath);
+  out.breaths = plan_breaths(line, score, breath, marks);
   out.motion = plan_brass_motion(as_played(line, out.breaths), motion, window);
   return out;
 }

@@ -14,9 +14,10 @@ namespace tutti::brass {
 // The line with the breath plan's shortened notes applied (offsets moved earlier).
 BrassLine as_played(const BrassLine& line, const BreathPlan& breaths);
 
-// `line` must have its fingerings (plan_line); `window` is the planner's change window.
+// `line` must have its fingerings (plan_line); `window` is the planner's change window; `marks`
+// are the editor's breath marks (plan_breaths).
 BrassPlayerMotion plan_brass_player(const BrassLine& line, const music::Score& score,
                                     const BrassMotionParams& motion, const BreathParams& breath,
-                                    const ChangeWindow& window);
+                                    const ChangeWindow& window, const BreathMarks& marks = {});
 
 }  // namespace tutti::brass

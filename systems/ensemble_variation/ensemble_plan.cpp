@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "music/meter.hpp"
@@ -33,9 +34,33 @@ std::vector<double> bar_lines(const music::Score& score, double end_beats) {
   return bars;
 }
 
+// The spans sorted, cleaned and made disjoint (PerformerInput::expressions).
+std::vector<ExpressionSpan> clean_expressions(const std::vector<ExpressionSpan>& spans) {
+  std::vector<ExpressionSpan> sorted;
+  for (ExpressionSpan span : spans) {
+    if (!std::isfinite(span.start_s) || !std::isfinite(span.end_s) ||
+        !(span.end_s > span.start_s)) {
+      continue;
+    }
+    span.amount = std::isfinite(span.amount) ? std::clamp(span.amount, 0.0, 1.0) : 0.0;
+    sorted.push_back(span);
+  }
+  // Stable on ties, so the editor's order decides between spans starting together.
+  std::stable_sort(
+      sorted.begin(), sorted.end(),
+      [](const ExpressionSpan& a, const ExpressionSpan& b) { return a.start_s < b.start_s; });
+  std::vector<ExpressionSpan> out;
+  for (ExpressionSpan span : sorted) {
+    if (!out.empty()) span.start_s = std::max(span.start_s, out.back().end_s);
+    if (span.end_s > span.start_s) out.push_back(span);
+  }
+  return out;
+}
+
 }  // namespace
 
-Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs) {
+Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs,
+                                   const EnsembleOptions& options) {
   EnsemblePlan plan;
   bool any = false;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
@@ -57,6 +82,7 @@ Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs) {
     p.head_amplitude_rad = static_cast<float>((1.0 + 3.0 * v.head_motion) * kDeg);
     p.active_start_s = in.first_onset_s;
     p.active_end_s = in.last_offset_s;
+    p.expressions = clean_expressions(in.expressions);
 
     if (in.breaths != nullptr) {
       for (const brass::BreathEvent& e : in.breaths->events) {
@@ -126,21 +152,52 @@ Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs) {
   if (plan.lead >= 0) {
     const PerformerInput& lead = inputs[static_cast<std::size_t>(plan.lead)];
     const music::Score& score = *lead.score;
-    const double e = plan.entrance_s;
-    const double e_beats = score.tempo_map.beats_at_seconds(e);
-    const double beat_s =
-        e - score.tempo_map.seconds_at_beats(e_beats - music::beat_length_at(score, e_beats));
+    std::vector<double> entrances;
+    if (!options.cues_s) {
+      if (any) entrances.push_back(plan.entrance_s);
+    } else {
+      for (double e : *options.cues_s) {
+        if (std::isfinite(e)) {
+          entrances.push_back(e);
+        } else {
+          ++plan.dropped_cues;
+        }
+      }
+      std::sort(entrances.begin(), entrances.end());
+    }
+    // One beat of the lead's tempo before each E; a cue whose lift would start before the
+    // previous cue has settled is dropped (two gestures cannot share the bell). Followers'
+    // answers are the same gestures shifted by their delay, so they cannot overlap either.
+    std::vector<double> beats;
+    double settled_s = -std::numeric_limits<double>::infinity();
+    for (double e : entrances) {
+      const double e_beats = score.tempo_map.beats_at_seconds(e);
+      const double beat_s =
+          e - score.tempo_map.seconds_at_beats(e_beats - music::beat_length_at(score, e_beats));
+      if (e - beat_s < settled_s) {
+        ++plan.dropped_cues;
+        continue;
+      }
+      plan.cue_entrances_s.push_back(e);
+      beats.push_back(beat_s);
+      settled_s = e + 0.5 * beat_s;
+    }
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       const VariationParams& v = inputs[i].params;
       const bool is_lead = static_cast<int>(i) == plan.lead;
       const double delay = is_lead ? 0.0 : 0.06 + 0.08 * v.reaction;
-      CueMotion cue;
-      cue.start_s = e - beat_s + delay;
-      cue.lift_s = e - 0.5 * beat_s + delay;
-      cue.dip_s = e + delay;
-      cue.end_s = e + 0.5 * beat_s + delay;
-      cue.strength = static_cast<float>((0.3 + 0.7 * v.cue_strength) * (is_lead ? 1.0 : 1.0 / 3.0));
-      plan.performers[i].cue = cue;
+      for (std::size_t c = 0; c < plan.cue_entrances_s.size(); ++c) {
+        const double e = plan.cue_entrances_s[c];
+        const double beat_s = beats[c];
+        CueMotion cue;
+        cue.start_s = e - beat_s + delay;
+        cue.lift_s = e - 0.5 * beat_s + delay;
+        cue.dip_s = e + delay;
+        cue.end_s = e + 0.5 * beat_s + delay;
+        cue.strength =
+            static_cast<float>((0.3 + 0.7 * v.cue_strength) * (is_lead ? 1.0 : 1.0 / 3.0));
+        plan.performers[i].cues.push_back(cue);
+      }
     }
   }
   return plan;

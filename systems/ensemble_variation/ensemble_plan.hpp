@@ -13,11 +13,15 @@
 //    1.8..4.5 deg by breath_depth, times the event's depth) and the shoulders rise (up to 6..15
 //    mm), rising from the event's preparation (or inhale) start to its end, released over the
 //    following 0.35 s.
-//  - The lead's cue, before the first entrance E (the earliest first note of any player, one
-//    beat b long there): the bell lifts from E - b to E - b/2, dips to its lowest at E as the
-//    knees flex (up to 3 cm), and settles by E + b/2. Size 0.3..1 of the full gesture
-//    (cue_strength: 0.14 rad of bell lift). Followers answer with the same shape at a third of
-//    their cue_strength, 60..140 ms late (reaction).
+//  - The lead's cues, at entrance times E: automatically one, before the first entrance (the
+//    earliest first note of any player); or exactly the editor's list (EnsembleOptions::cues_s).
+//    Each is one beat b long (the lead's beat at E): the bell lifts from E - b to E - b/2, dips
+//    to its lowest at E as the knees flex (up to 3 cm), and settles by E + b/2. Size 0.3..1 of
+//    the full gesture (cue_strength: 0.14 rad of bell lift). Followers answer each with the same
+//    shape at a third of their cue_strength, 60..140 ms late (reaction). Cues never overlap: one
+//    that would start before the previous one has settled is dropped (the earlier cue wins;
+//    EnsemblePlan::dropped_cues). Without a lead there are no cues.
+//  - Expressions (expression.hpp): the editor's strain / relaxed spans per player.
 //  - Head: nods with the sway at half its rate, 1..4 deg (head_motion).
 // Players who breathe in the same rest move together (their breath plans share the rest's
 // window) but not alike: depth, sway and phase are theirs.
@@ -28,6 +32,7 @@
 
 #include "brass_motion/breath_plan.hpp"
 #include "core/result.hpp"
+#include "ensemble_variation/expression.hpp"
 #include "ensemble_variation/variation_params.hpp"
 #include "music/score.hpp"
 
@@ -64,9 +69,11 @@ struct PerformerMotionPlan {
   double active_start_s = 0.0;
   double active_end_s = 0.0;
   float initial_shift_m = 0.0f;
-  std::vector<WeightShift> weight_shifts;  // in time order, not overlapping
-  std::vector<BreathMotion> breaths;       // in time order
-  std::optional<CueMotion> cue;            // the lead's cue, or a follower's answer
+  std::vector<WeightShift> weight_shifts;   // in time order, not overlapping
+  std::vector<BreathMotion> breaths;        // in time order
+  std::vector<CueMotion> cues;              // the lead's cues, or a follower's answers; in time
+                                            // order, [start_s, end_s] not overlapping
+  std::vector<ExpressionSpan> expressions;  // by start_s, not overlapping, amount in [0, 1]
 };
 
 struct PerformerInput {
@@ -77,15 +84,29 @@ struct PerformerInput {
   const brass::BreathPlan* breaths = nullptr;
   double first_onset_s = 0.0;  // first note the player plays
   double last_offset_s = 0.0;
+  // The editor's expression spans, any order. Spans with end_s <= start_s or non-finite times
+  // are dropped, amount is clamped to [0, 1]; where spans overlap, the later-starting one begins
+  // when the earlier ends (and is dropped if nothing is left).
+  std::vector<ExpressionSpan> expressions;
+};
+
+struct EnsembleOptions {
+  // nullopt: automatic, one cue before the first entrance. Else exactly these entrance times E
+  // (seconds, any order; an empty list = no cue; non-finite times are dropped).
+  std::optional<std::vector<double>> cues_s;
 };
 
 struct EnsemblePlan {
   std::vector<PerformerMotionPlan> performers;  // in the order of the inputs
   int lead = -1;                                // index of the lead, -1 = none
-  double entrance_s = 0.0;                      // E: the first entrance of anyone
+  double entrance_s = 0.0;                      // the first entrance of anyone
+  std::vector<double> cue_entrances_s;  // the E of every cue given, in time order (none without
+                                        // a lead)
+  int dropped_cues = 0;  // requested cues dropped: too close to the previous one, or not finite
 };
 
 // Deterministic: the same inputs give the same plan. Inputs without a score are an error.
-Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& performers);
+Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& performers,
+                                   const EnsembleOptions& options = {});
 
 }  // namespace tutti::ensemble

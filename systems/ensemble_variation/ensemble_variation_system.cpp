@@ -1,16 +1,21 @@
 #include "ensemble_variation/ensemble_variation_system.hpp"
 
 #include "components/body_motion.hpp"
+#include "components/breath.hpp"
 #include "ensemble_variation/evaluate_body_motion.hpp"
 
 namespace tutti::ensemble {
 
 void ensemble_variation_system(ecs::World& world, const ecs::FrameTime& frame) {
   const double t_s = frame.t_s;
+  // Breath is written in Phase::evaluate, before this phase: the shown strain starts from it.
   world.view<EnsembleMotionHandle, components::BodyMotion>().each(
-      [t_s](const EnsembleMotionHandle& handle, components::BodyMotion& motion) {
+      [&world, t_s](ecs::Entity performer, const EnsembleMotionHandle& handle,
+                    components::BodyMotion& motion) {
         if (!handle.plan || handle.performer >= handle.plan->performers.size()) return;
-        motion = evaluate_body_motion(handle.plan->performers[handle.performer], t_s);
+        const auto* breath = world.try_get<components::Breath>(performer);
+        motion = evaluate_body_motion(handle.plan->performers[handle.performer], t_s,
+                                      breath != nullptr ? breath->strain : 0.0);
       });
 }
 

@@ -14,6 +14,15 @@ constexpr double kCueBellLift_rad = 0.14;
 constexpr double kCueKnees_m = 0.03;
 constexpr double kLeanBack_rad = 0.0785;  // 4.5 deg at a full-size breath
 constexpr double kShoulderLift_m = 0.015;
+// Expressions at full amount. Strain: shoulders pulled up 12 mm, the breathing chest's lean
+// halved, 60 % less sway, the bell 0.05 rad (3 deg) higher. Relaxed: shoulders 10 mm lower,
+// 60 % more sway and head motion, the shown strain gone.
+constexpr double kStrainShoulders_m = 0.012;
+constexpr double kStrainChest = 0.5;
+constexpr double kStrainSway = 0.6;
+constexpr double kStrainBell_rad = 0.05;
+constexpr double kRelaxedShoulders_m = 0.010;
+constexpr double kRelaxedSway = 0.6;
 
 // Minimum-jerk ease from 0 at a to 1 at b.
 double ease(double t, double a, double b) {
@@ -67,8 +76,35 @@ double cue_knees(const CueMotion& cue, double t) {
   return 1.0 - ease(t, cue.dip_s, cue.end_s);
 }
 
-components::BodyMotion evaluate_body_motion(const PerformerMotionPlan& plan, double t) {
+const CueMotion* cue_at(const PerformerMotionPlan& plan, double t) {
+  const auto& cues = plan.cues;
+  const auto it =
+      std::upper_bound(cues.begin(), cues.end(), t,
+                       [](double time, const CueMotion& c) { return time < c.start_s; });
+  return it == cues.begin() ? nullptr : &*(it - 1);
+}
+
+ExpressionLevel expression_at(const PerformerMotionPlan& plan, double t) {
+  ExpressionLevel level;
+  const auto& spans = plan.expressions;
+  const auto it =
+      std::upper_bound(spans.begin(), spans.end(), t,
+                       [](double time, const ExpressionSpan& s) { return time < s.start_s; });
+  if (it == spans.begin()) return level;
+  const ExpressionSpan& s = *(it - 1);
+  if (!(t < s.end_s)) return level;
+  // Ramps inside the span, so disjoint spans never blend and the edges are 0.
+  const double ramp = std::min(kExpressionRamp_s, 0.5 * (s.end_s - s.start_s));
+  const double weight = s.amount * std::min(ease(t, s.start_s, s.start_s + ramp),
+                                            1.0 - ease(t, s.end_s - ramp, s.end_s));
+  (s.kind == ExpressionKind::strain ? level.strain : level.relaxed) = weight;
+  return level;
+}
+
+components::BodyMotion evaluate_body_motion(const PerformerMotionPlan& plan, double t,
+                                            double breath_strain) {
   components::BodyMotion m;
+  m.strain = std::clamp(breath_strain, 0.0, 1.0);
   if (!std::isfinite(t)) return m;
   const double beats = plan.tempo.beats_at_seconds(t);
   const double cycle = kTwoPi * (beats / plan.sway_period_beats + plan.params.sway_phase);
@@ -82,10 +118,27 @@ components::BodyMotion evaluate_body_motion(const PerformerMotionPlan& plan, dou
   const double breath = breath_envelope(plan, t);
   m.lean_back_rad = static_cast<float>(breath * kLeanBack_rad);
   m.shoulder_lift_m = static_cast<float>(breath * kShoulderLift_m);
-  if (plan.cue) {
-    m.bell_lift_rad =
-        static_cast<float>(plan.cue->strength * kCueBellLift_rad * cue_lift(*plan.cue, t));
-    m.knee_flex_m = static_cast<float>(plan.cue->strength * kCueKnees_m * cue_knees(*plan.cue, t));
+  if (const CueMotion* cue = cue_at(plan, t)) {
+    m.bell_lift_rad = static_cast<float>(cue->strength * kCueBellLift_rad * cue_lift(*cue, t));
+    m.knee_flex_m = static_cast<float>(cue->strength * kCueKnees_m * cue_knees(*cue, t));
+  }
+  // Only inside a span, so everything outside stays bit for bit as without expressions.
+  const ExpressionLevel expression = expression_at(plan, t);
+  if (expression.strain > 0.0) {
+    const double s = expression.strain;
+    m.sway_rad = static_cast<float>(m.sway_rad * (1.0 - kStrainSway * s));
+    m.twist_rad = static_cast<float>(m.twist_rad * (1.0 - kStrainSway * s));
+    m.lean_back_rad = static_cast<float>(m.lean_back_rad * (1.0 - kStrainChest * s));
+    m.shoulder_lift_m = static_cast<float>(m.shoulder_lift_m + kStrainShoulders_m * s);
+    m.bell_lift_rad = static_cast<float>(m.bell_lift_rad + kStrainBell_rad * s);
+    m.strain = std::max(m.strain, s);
+  } else if (expression.relaxed > 0.0) {
+    const double r = expression.relaxed;
+    m.sway_rad = static_cast<float>(m.sway_rad * (1.0 + kRelaxedSway * r));
+    m.twist_rad = static_cast<float>(m.twist_rad * (1.0 + kRelaxedSway * r));
+    m.head_nod_rad = static_cast<float>(m.head_nod_rad * (1.0 + kRelaxedSway * r));
+    m.shoulder_lift_m = static_cast<float>(m.shoulder_lift_m - kRelaxedShoulders_m * r);
+    m.strain *= 1.0 - r;
   }
   return m;
 }

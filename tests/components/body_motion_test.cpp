@@ -13,4 +13,5 @@ TEST(BodyMotionComponent, DefaultsToTheStockPose) {
   EXPECT_EQ(m.shoulder_lift_m, 0.0f);
   EXPECT_EQ(m.head_nod_rad, 0.0f);
   EXPECT_EQ(m.bell_lift_rad, 0.0f);
+  EXPECT_EQ(m.strain, 0.0);
 }

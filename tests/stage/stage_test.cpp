@@ -17,6 +17,7 @@
 #include "components/finger.hpp"
 #include "components/valve.hpp"
 #include "ensemble_variation/ensemble_plan.hpp"
+#include "ensemble_variation/ensemble_variation_system.hpp"
 #include "scene/load_scene.hpp"
 
 namespace tutti::stage {
@@ -83,7 +84,9 @@ TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
   ASSERT_TRUE(stage->ensemble);
   ASSERT_EQ(stage->ensemble->performers.size(), 4u);
   EXPECT_EQ(stage->ensemble->lead, 0);  // "Trumpet 1 leads"
-  const ensemble::CueMotion& cue = *stage->ensemble->performers[0].cue;
+  // No cue list in the scene: one cue, at the first entrance.
+  ASSERT_EQ(stage->ensemble->performers[0].cues.size(), 1u);
+  const ensemble::CueMotion& cue = stage->ensemble->performers[0].cues.front();
   EXPECT_NEAR(cue.dip_s, stage->ensemble->entrance_s, 1e-9);
   // The lead's bell at the top of the cue, in the rendered pose: the generated trumpet's bell
   // points along its -Z, which rises in the world as the bell lifts.
@@ -270,6 +273,47 @@ TEST(Stage, AUsersInstrumentThroughAMappingMovesLikeTheGeneratedOne) {
   EXPECT_EQ(broken.error().message,
             "trumpet.mapping.json: node \"Piston A\" for \"valve_1\" is not in user_trumpet.glb");
   std::filesystem::remove_all(dir);
+}
+
+// An expression from the editor reaches the rendered face: inside a strain span the player's
+// tension morph shows at least 0.8 x its amount (the face's share of the strain) and the bell
+// rises; outside the span the pose is what it was without it.
+TEST(Stage, AStrainExpressionTightensTheFace) {
+  auto stage = build(kSource / "content" / "scenes" / "quartet.json");
+  ASSERT_TRUE(stage);
+  ASSERT_TRUE(stage->ensemble);
+  const BrassSeat& seat = stage->brass[1];
+  ASSERT_TRUE(seat.body);
+  ASSERT_GE(seat.body_nodes.morph_tension, 0);
+  const auto tension = [&](double t) {
+    evaluate_stage(*stage, t);
+    return stage->placed[*seat.body]
+        .pose.morph_weights[static_cast<std::size_t>(seat.body_nodes.morph_tension)];
+  };
+  const auto bell_rise = [&] {  // the generated trumpet's bell points along its -Z
+    return (stage->placed[seat.horn].root * glm::vec4(0, 0, -1, 0)).y;
+  };
+  const float plain = tension(12.0);
+  const float plain_bell = bell_rise();
+  evaluate_stage(*stage, 20.0);
+  const auto outside = poses(*stage);
+
+  ensemble::EnsemblePlan edited = *stage->ensemble;
+  ensemble::ExpressionSpan span;
+  span.kind = ensemble::ExpressionKind::strain;
+  span.start_s = 10.0;
+  span.end_s = 14.0;
+  span.amount = 1.0;
+  edited.performers[1].expressions = {span};
+  auto* handle = stage->world.try_get<ensemble::EnsembleMotionHandle>(seat.performer);
+  ASSERT_NE(handle, nullptr);
+  handle->plan = std::make_shared<const ensemble::EnsemblePlan>(std::move(edited));
+  const float strained = tension(12.0);
+  EXPECT_GE(strained, 0.8f - 1e-6f);
+  EXPECT_GT(strained, plain) << "the face was already at " << plain;
+  EXPECT_GT(bell_rise() - plain_bell, 0.03f);
+  evaluate_stage(*stage, 20.0);
+  EXPECT_TRUE(same(outside, poses(*stage)));
 }
 
 }  // namespace

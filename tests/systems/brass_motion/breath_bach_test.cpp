@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "breath_fixture.hpp"
 #include "music/load_score.hpp"
@@ -149,6 +150,81 @@ TEST(BreathBach, TrumpetPartsOfTheChorales) {
     }
   }
   EXPECT_EQ(trumpet_parts, 9);
+}
+
+// The editor's marks on a real part (bwv69.6, its first trumpet: 26 quarters without a rest,
+// catch-breaths): every breath the rules take in a rest removed, an add mark at every 7th note
+// boundary. The removed boundaries stay without a breath, the added ones get one, the air stays
+// in [0, 1] and continuous, and the plan is deterministic.
+TEST(BreathBach, MarksOnTheFirstTrumpetOfBwv69_6) {
+  TUTTI_REQUIRE_TESTDATA();
+  auto params = load_breath_params(test::content_dir() / "brass" / "breath.json");
+  ASSERT_TRUE(params.ok()) << params.error().message;
+  auto score = music::load_score(tutti::test::testdata("musicxml/music21/bwv69.6.xml"));
+  ASSERT_TRUE(score.ok()) << score.error().message;
+  int part = -1;
+  for (std::size_t p = 0; p < score->parts.size() && part < 0; ++p) {
+    if (score->parts[p].name.find("Trumpet") != std::string::npos) part = static_cast<int>(p);
+  }
+  ASSERT_GE(part, 0);
+  const BrassLine line = trumpet_line(*score, part);
+  const BreathPlan rules = plan_breaths(line, *score, *params);
+
+  BreathMarks marks;
+  std::vector<int> removed;
+  for (const BreathEvent& e : rules.events) {
+    if (e.kind == BreathKind::catch_breath || e.kind == BreathKind::before_entrance) continue;
+    removed.push_back(e.before_note);
+    marks.remove_s.push_back(line.notes[static_cast<std::size_t>(e.before_note)].onset_s);
+  }
+  ASSERT_GE(removed.size(), 5u);
+  std::vector<int> added;
+  for (int n = 3; n < static_cast<int>(line.notes.size()); n += 7) {
+    if (std::find(removed.begin(), removed.end(), n) != removed.end()) continue;
+    added.push_back(n);
+    marks.add_s.push_back(line.notes[static_cast<std::size_t>(n)].onset_s - 0.01);
+  }
+  marks.add_s.push_back(line.notes.back().onset_s + 5.0);  // after the last note
+  const BreathPlan plan = plan_breaths(line, *score, *params, marks);
+  EXPECT_EQ(plan.ignored_marks, 1);
+
+  const auto event_before = [&](int note) -> const BreathEvent* {
+    for (const BreathEvent& e : plan.events) {
+      if (e.before_note == note) return &e;
+    }
+    return nullptr;
+  };
+  for (int n : removed) EXPECT_EQ(event_before(n), nullptr) << "removed, before note " << n;
+  int marked = 0;
+  for (int n : added) {
+    const BreathEvent* e = event_before(n);
+    ASSERT_NE(e, nullptr) << "added, before note " << n;
+    marked += e->marked ? 1 : 0;
+    EXPECT_GE(e->start_s, offset_of(line, plan, n - 1) - 1e-9);
+    EXPECT_LT(e->start_s, e->end_s);
+  }
+  EXPECT_GT(marked, 0);
+  for (std::size_t i = 1; i < plan.events.size(); ++i) {
+    EXPECT_GE(plan.events[i].prepare_start_s, plan.events[i - 1].end_s - 1e-9) << i;
+  }
+  const double end = line.notes.back().offset_s + 1.0;
+  for (double t = -2.0; t <= end; t += 0.005) {
+    const BreathState s = evaluate_breath(plan, t);
+    ASSERT_GE(s.air, 0.0);
+    ASSERT_LE(s.air, 1.0);
+  }
+  test::expect_continuous(plan, -2.0, end);
+  const BreathPlan again = plan_breaths(line, *score, *params, marks);
+  ASSERT_EQ(again.events.size(), plan.events.size());
+  for (std::size_t i = 0; i < plan.events.size(); ++i) {
+    EXPECT_EQ(again.events[i].start_s, plan.events[i].start_s);
+    EXPECT_EQ(again.events[i].depth, plan.events[i].depth);
+  }
+  std::printf(
+      "  bwv69.6 %s: %zu rule breaths removed, %zu marks added (%d new): %zu breaths "
+      "(%d catch), min air %.2f, out of air %d\n",
+      line.part_name.c_str(), removed.size(), added.size(), marked, plan.events.size(),
+      plan.catch_breaths, plan.min_air, plan.out_of_air);
 }
 
 }  // namespace

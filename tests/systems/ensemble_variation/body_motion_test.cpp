@@ -9,47 +9,16 @@
 #include <cstring>
 #include <vector>
 
+#include "ensemble_fixture.hpp"
 #include "ensemble_variation/ensemble_plan.hpp"
 #include "ensemble_variation/evaluate_body_motion.hpp"
 
 namespace tutti::ensemble {
 namespace {
 
-music::Score four_four() {
-  music::Score score;
-  score.source = "four_four";
-  music::TimeSignature ts;
-  ts.numerator = 4;
-  ts.denominator = 4;
-  score.time_signatures.push_back(ts);
-  return score;
-}
-
-brass::BreathPlan breaths(std::vector<std::array<double, 3>> events) {  // prepare, start, end
-  brass::BreathPlan plan;
-  for (const auto& e : events) {
-    brass::BreathEvent b;
-    b.prepare_start_s = e[0];
-    b.start_s = e[1];
-    b.end_s = e[2];
-    b.depth = 1.0;
-    plan.events.push_back(b);
-  }
-  return plan;
-}
-
-PerformerInput player(const music::Score& score, const brass::BreathPlan& plan, std::uint64_t seed,
-                      bool lead) {
-  PerformerInput in;
-  in.seed = seed;
-  in.params = draw_variation(seed);
-  in.lead = lead;
-  in.score = &score;
-  in.breaths = &plan;
-  in.first_onset_s = 2.0;
-  in.last_offset_s = 30.0;
-  return in;
-}
+using test::breaths;
+using test::four_four;
+using test::player;
 
 TEST(BodyMotion, TheLeadCuesOneBeatBeforeTheFirstEntranceAndTheOthersAnswerLate) {
   const music::Score score = four_four();

@@ -1,0 +1,51 @@
+#pragma once
+// Hand-made inputs for the ensemble tests: a 4/4 score at 120 BPM (a beat is 0.5 s), breath
+// plans from (prepare, start, end) triples, and a player on stage from 2 s to 30 s.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "brass_motion/breath_plan.hpp"
+#include "ensemble_variation/ensemble_plan.hpp"
+#include "music/score.hpp"
+
+namespace tutti::ensemble::test {
+
+inline music::Score four_four() {
+  music::Score score;
+  score.source = "four_four";
+  music::TimeSignature ts;
+  ts.numerator = 4;
+  ts.denominator = 4;
+  score.time_signatures.push_back(ts);
+  return score;
+}
+
+inline brass::BreathPlan breaths(std::vector<std::array<double, 3>> events) {
+  brass::BreathPlan plan;
+  for (const auto& e : events) {
+    brass::BreathEvent b;
+    b.prepare_start_s = e[0];
+    b.start_s = e[1];
+    b.end_s = e[2];
+    b.depth = 1.0;
+    plan.events.push_back(b);
+  }
+  return plan;
+}
+
+inline PerformerInput player(const music::Score& score, const brass::BreathPlan& plan,
+                             std::uint64_t seed, bool lead) {
+  PerformerInput in;
+  in.seed = seed;
+  in.params = draw_variation(seed);
+  in.lead = lead;
+  in.score = &score;
+  in.breaths = &plan;
+  in.first_onset_s = 2.0;
+  in.last_offset_s = 30.0;
+  return in;
+}
+
+}  // namespace tutti::ensemble::test
