@@ -472,6 +472,7 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
         ui.drag_kind = kDragBreath;
         ui.drag_index = static_cast<std::size_t>(picked);
         ui.drag_from_s = lane.breaths[static_cast<std::size_t>(picked)].boundary_s;
+        ui.drag_marked = lane.breaths[static_cast<std::size_t>(picked)].marked;
       } else {
         for (std::size_t i = 0; i < lane.expressions.size(); ++i) {
           if (mouse_t >= lane.expressions[i].start_s && mouse_t <= lane.expressions[i].end_s) {
@@ -485,7 +486,9 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
       const double bar =
           timeline.beats_s.size() > 4 ? 4 * (timeline.beats_s[1] - timeline.beats_s[0]) : 2.0;
       if (ImGui::MenuItem("Breathe here")) {
-        apply(session, ui, add_breath(session.document().json(), lane.performer, snapped_t));
+        apply(session, ui,
+              add_breath(session.document().json(), lane.performer,
+                         session.breath_boundary(lane.performer, snapped_t)));
       }
       if (ImGui::MenuItem("Strain from here (one bar)")) {
         apply(session, ui,
@@ -539,7 +542,8 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
       } else if (ui.drag_kind == kDragBreath && ui.selected_lane < timeline.lanes.size()) {
         apply(session, ui,
               move_breath(session.document().json(), timeline.lanes[ui.selected_lane].performer,
-                          ui.drag_from_s, to));
+                          ui.drag_from_s, ui.drag_marked,
+                          session.breath_boundary(timeline.lanes[ui.selected_lane].performer, to)));
       }
       ui.selection = UiState::Selection::none;
     }
@@ -556,7 +560,8 @@ void delete_selection(Session& session, UiState& ui) {
       const TimelineLane& lane = timeline.lanes[ui.selected_lane];
       if (ui.selected_index < lane.breaths.size()) {
         apply(session, ui,
-              delete_breath(json, lane.performer, lane.breaths[ui.selected_index].boundary_s));
+              delete_breath(json, lane.performer, lane.breaths[ui.selected_index].boundary_s,
+                            lane.breaths[ui.selected_index].marked));
       }
       break;
     }

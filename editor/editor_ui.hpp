@@ -42,6 +42,7 @@ struct UiState {
   int drag_kind = -1;
   std::size_t drag_index = 0;
   double drag_from_s = 0.0;
+  bool drag_marked = false;  // a breath there only because of its mark
   std::size_t pin_note = 0;  // the pianist's note whose finger popup is open
 };
 

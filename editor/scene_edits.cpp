@@ -120,8 +120,9 @@ void add_breath_to(BreathLists& lists, double t) {
   if (!erase_time(lists.remove, t)) insert_time(lists.add, t);
 }
 
-void delete_breath_from(BreathLists& lists, double t) {
-  if (!erase_time(lists.add, t)) insert_time(lists.remove, t);
+void delete_breath_from(BreathLists& lists, double t, bool marked_only) {
+  const bool was_marked = erase_time(lists.add, t);
+  if (!(was_marked && marked_only)) insert_time(lists.remove, t);
 }
 
 Result<Edit> cue_edit(const Json& document, std::vector<double> cues, std::string label) {
@@ -243,20 +244,21 @@ Result<Edit> add_breath(const Json& document, std::size_t performer, double t_s)
                          " at " + seconds(t_s));
 }
 
-Result<Edit> delete_breath(const Json& document, std::size_t performer, double boundary_s) {
+Result<Edit> delete_breath(const Json& document, std::size_t performer, double boundary_s,
+                           bool marked_only) {
   auto lists = breath_lists(document, performer);
   if (!lists) return lists.error();
-  delete_breath_from(*lists, boundary_s);
+  delete_breath_from(*lists, boundary_s, marked_only);
   return breath_edit(*lists, performer,
                      "delete the breath of " + player_name(*lists->performer, {false, performer}) +
                          " at " + seconds(boundary_s));
 }
 
 Result<Edit> move_breath(const Json& document, std::size_t performer, double from_boundary_s,
-                         double to_s) {
+                         bool from_marked_only, double to_s) {
   auto lists = breath_lists(document, performer);
   if (!lists) return lists.error();
-  delete_breath_from(*lists, from_boundary_s);
+  delete_breath_from(*lists, from_boundary_s, from_marked_only);
   add_breath_to(*lists, to_s);
   return breath_edit(*lists, performer,
                      "move the breath of " + player_name(*lists->performer, {false, performer}) +

@@ -36,10 +36,13 @@ std::uint64_t reroll_seed(std::uint64_t current);
 
 // Breathe at the boundary before the first note at or after t_s (undoes a "remove" there).
 Result<Edit> add_breath(const Json& document, std::size_t performer, double t_s);
-// No breath at boundary_s: a marked breath loses its mark, a planned one gets a "remove".
-Result<Edit> delete_breath(const Json& document, std::size_t performer, double boundary_s);
+// No breath at boundary_s: its add mark goes, and unless the breath was there only because of
+// that mark (`marked_only`), a "remove" mark keeps the rules from breathing there.
+Result<Edit> delete_breath(const Json& document, std::size_t performer, double boundary_s,
+                           bool marked_only = false);
+// delete_breath(from_boundary_s, from_marked_only) and add_breath(to_s) as one edit.
 Result<Edit> move_breath(const Json& document, std::size_t performer, double from_boundary_s,
-                         double to_s);
+                         bool from_marked_only, double to_s);
 
 // `current` = the cue times the plan has now (the automatic one when the scene lists none).
 Result<Edit> add_cue(const Json& document, std::span<const double> current, double t_s);

@@ -187,10 +187,12 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     auto index = performer(script, command, session, command.words[1]);
     if (!index) return index.error();
     if (action == "add-breath") {
-      return edit_result(session.apply(add_breath(json, *index, number(command, 2))));
+      return edit_result(session.apply(
+          add_breath(json, *index, session.breath_boundary(*index, number(command, 2)))));
     }
     if (action == "delete-breath") {
-      return edit_result(session.apply(delete_breath(json, *index, number(command, 2))));
+      return edit_result(session.apply(
+          delete_breath(json, *index, session.breath_boundary(*index, number(command, 2)))));
     }
     scene::Expression e;
     if (command.words[2] == "strain") {

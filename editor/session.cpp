@@ -58,6 +58,14 @@ Status Session::redo() {
   return Status::success();
 }
 
+double Session::breath_boundary(std::size_t performer, double t) const {
+  if (performer >= stage_->brass.size()) return t;
+  for (const stage::LineNoteTime& note : stage_->brass[performer].line) {
+    if (note.playable && note.onset_s >= t - 1e-9) return note.onset_s;
+  }
+  return t;
+}
+
 Status Session::recover_autosave() {
   if (Status s =
           document_.recover_autosave([this](const scene::Scene& scene) { return replan(scene); });

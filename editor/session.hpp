@@ -39,6 +39,10 @@ class Session {
   // for model_list() must be made again). False while the cast is unchanged.
   bool models_changed() const { return models_changed_; }
   double last_replan_ms() const { return last_replan_ms_; }
+  // The breath boundary a time names for a brass performer: the onset of the first playable note
+  // at or after t (t itself after the last note). Marks are stored there, so a mark and the
+  // breath it makes share one time.
+  double breath_boundary(std::size_t performer, double t) const;
 
  private:
   Session(Document document, stage::StageOptions options)

@@ -47,6 +47,7 @@ TimelineLane brass_lane(const stage::Stage& stage, std::size_t i) {
       b.start_s = event.start_s;
       b.end_s = event.end_s;
       b.catch_breath = event.kind == brass::BreathKind::catch_breath;
+      b.marked = event.marked;
       b.boundary_s =
           event.before_note >= 0 && static_cast<std::size_t>(event.before_note) < seat.line.size()
               ? seat.line[static_cast<std::size_t>(event.before_note)].onset_s
@@ -57,17 +58,6 @@ TimelineLane brass_lane(const stage::Stage& stage, std::size_t i) {
   if (i < stage.scene.performers.size()) {
     const scene::Performer& performer = stage.scene.performers[i];
     lane.expressions = performer.expressions;
-    // A breath is "marked" when an add mark names its boundary.
-    for (TimelineBreath& b : lane.breaths) {
-      for (double t : performer.breaths.add_s) {
-        const auto next = std::find_if(
-            seat.line.begin(), seat.line.end(),
-            [&](const stage::LineNoteTime& n) { return n.playable && n.onset_s >= t - 1e-9; });
-        if (next != seat.line.end() && std::abs(next->onset_s - b.boundary_s) < 1e-6) {
-          b.marked = true;
-        }
-      }
-    }
   }
   return lane;
 }
@@ -118,10 +108,7 @@ Timeline build_timeline(const stage::Stage& stage) {
     }
   }
   out.cues_automatic = !stage.scene.cues_s.has_value();
-  if (stage.ensemble && stage.ensemble->lead >= 0) {
-    const auto& lead = stage.ensemble->performers[static_cast<std::size_t>(stage.ensemble->lead)];
-    if (lead.cue) out.cues_s.push_back(lead.cue->dip_s);
-  }
+  if (stage.ensemble) out.cues_s = stage.ensemble->cue_entrances_s;
   for (const scene::Shot& shot : stage.scene.shots) {
     out.shots.push_back({shot.start_s, stage.scene.cameras[shot.camera].name});
   }

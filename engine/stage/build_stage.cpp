@@ -78,6 +78,7 @@ class ModelCache {
   }
 
   void reuse(const Stage* previous) { reuse_ = previous; }
+  const Stage* reused() const { return reuse_; }
 
   const std::filesystem::path& dir() const { return dir_; }
 
@@ -226,6 +227,35 @@ double extra_number(const model::ModelAsset&, int, const char*, double fallback)
   return fallback;
 }
 
+std::string times_key(const std::vector<double>& times) {
+  std::string out;
+  char text[32];
+  for (double t : times) {
+    std::snprintf(text, sizeof text, "%.17g,", t);
+    out += text;
+  }
+  return out;
+}
+
+// Everything a brass player's own plan (line, fingering, breaths, valves / slide) depends on.
+std::string brass_plan_key(const scene::Scene& scene, const scene::Performer& performer) {
+  return performer.instrument + "|" + performer.part + "|" + std::to_string(performer.voice) + "|" +
+         scene.music[performer.music_file].string() + "|" + times_key(performer.breaths.add_s) +
+         "|" + times_key(performer.breaths.remove_s);
+}
+
+// Everything the pianist's plan depends on.
+std::string pianist_plan_key(const scene::Scene& scene, const scene::Pianist& pianist) {
+  std::string key = scene.music[pianist.music_file].string() + "|" + pianist.hand_size + "|";
+  for (const std::string& part : pianist.parts) key += part + ",";
+  char text[64];
+  for (const scene::FingerPin& pin : pianist.pins) {
+    std::snprintf(text, sizeof text, "|%.17g:%d:%d", pin.time_s, pin.key, pin.finger);
+    key += text;
+  }
+  return key;
+}
+
 Status build_brass(Stage& stage, ModelCache& cache) {
   if (stage.scene.performers.empty()) return Status::success();
   auto weights = brass::load_planner_weights();
@@ -243,29 +273,56 @@ Status build_brass(Stage& stage, ModelCache& cache) {
   if (!chair_model) return chair_model.error();
 
   std::vector<ensemble::PerformerInput> ensemble_inputs;
-  for (const scene::Performer& performer : stage.scene.performers) {
+  for (std::size_t seat_index = 0; seat_index < stage.scene.performers.size(); ++seat_index) {
+    const scene::Performer& performer = stage.scene.performers[seat_index];
     const music::Score& score = stage.scores[performer.music_file];
-    auto instrument = brass::load_instrument_by_id(performer.instrument);
-    if (!instrument) return instrument.error();
-    // The lines point at their instrument: it lives as long as the stage.
-    stage.instruments.push_back(std::make_shared<const brass::Instrument>(std::move(*instrument)));
+    const std::string key = brass_plan_key(stage.scene, performer);
+    const Stage* reuse = cache.reused();
+    const BrassSeat* previous = reuse != nullptr && seat_index < reuse->brass.size() &&
+                                        reuse->brass[seat_index].plan_key == key &&
+                                        reuse->brass[seat_index].planned_line != nullptr
+                                    ? &reuse->brass[seat_index]
+                                    : nullptr;
+    std::shared_ptr<const brass::BrassLine> line;
+    std::shared_ptr<const brass::BrassPlayerMotion> player;
+    std::vector<std::string> plan_notes;
+    if (previous != nullptr) {
+      stage.instruments.push_back(reuse->instruments[seat_index]);
+      line = previous->planned_line;
+      player = reuse->ensemble_players[seat_index];
+      plan_notes = previous->plan_notes;
+    } else {
+      auto instrument = brass::load_instrument_by_id(performer.instrument);
+      if (!instrument) return instrument.error();
+      // The lines point at their instrument: it lives as long as the stage.
+      stage.instruments.push_back(
+          std::make_shared<const brass::Instrument>(std::move(*instrument)));
+      const int part = scene::find_part(score, performer.part);
+      if (part < 0) {
+        return Error{stage.scene.source + ": performer \"" + performer.name + "\": no part \"" +
+                     performer.part + "\" in " +
+                     stage.scene.music[performer.music_file].filename().string()};
+      }
+      auto extracted =
+          brass::extract_line(score, part, performer.voice - 1, *stage.instruments.back());
+      if (!extracted) {
+        return Error{stage.scene.source + ": performer \"" + performer.name +
+                     "\": " + extracted.error().message};
+      }
+      const brass::BrassPlanSummary summary = brass::plan_line(*extracted, *weights, &score);
+      for (const brass::BrassDiagnostic& d : summary.diagnostics) {
+        plan_notes.push_back(performer.name + ": " + d.message);
+      }
+      brass::BreathMarks marks;
+      marks.add_s = performer.breaths.add_s;
+      marks.remove_s = performer.breaths.remove_s;
+      player = std::make_shared<const brass::BrassPlayerMotion>(
+          brass::plan_brass_player(*extracted, score, *motion, *breath, weights->change, marks));
+      line = std::make_shared<const brass::BrassLine>(std::move(*extracted));
+      stage.replanned.push_back(performer.name);
+    }
+    stage.notes.insert(stage.notes.end(), plan_notes.begin(), plan_notes.end());
     const brass::Instrument& played = *stage.instruments.back();
-    const int part = scene::find_part(score, performer.part);
-    if (part < 0) {
-      return Error{stage.scene.source + ": performer \"" + performer.name + "\": no part \"" +
-                   performer.part + "\" in " +
-                   stage.scene.music[performer.music_file].filename().string()};
-    }
-    auto line = brass::extract_line(score, part, performer.voice - 1, played);
-    if (!line)
-      return Error{stage.scene.source + ": performer \"" + performer.name +
-                   "\": " + line.error().message};
-    const brass::BrassPlanSummary summary = brass::plan_line(*line, *weights, &score);
-    for (const brass::BrassDiagnostic& d : summary.diagnostics) {
-      stage.notes.push_back(performer.name + ": " + d.message);
-    }
-    auto player = std::make_shared<brass::BrassPlayerMotion>(
-        brass::plan_brass_player(*line, score, *motion, *breath, weights->change));
     music::Score& heard = stage.sounding[performer.music_file];
     for (const brass::ShortenedNote& shortened : player->breaths.shortened) {
       if (shortened.note < 0 || static_cast<std::size_t>(shortened.note) >= line->notes.size()) {
@@ -343,6 +400,9 @@ Status build_brass(Stage& stage, ModelCache& cache) {
     for (const brass::LineNote& note : line->notes) {
       seat.line.push_back(LineNoteTime{note.onset_s, note.offset_s, note.sounding, note.playable});
     }
+    seat.plan_key = key;
+    seat.planned_line = line;
+    seat.plan_notes = std::move(plan_notes);
     stage.brass.push_back(seat);
 
     ensemble::PerformerInput input;
@@ -351,6 +411,15 @@ Status build_brass(Stage& stage, ModelCache& cache) {
     input.lead = performer.lead;
     input.score = &score;
     input.breaths = &player->breaths;
+    for (const scene::Expression& e : performer.expressions) {
+      ensemble::ExpressionSpan span;
+      span.kind = e.kind == scene::ExpressionKind::strain ? ensemble::ExpressionKind::strain
+                                                          : ensemble::ExpressionKind::relaxed;
+      span.start_s = e.start_s;
+      span.end_s = e.end_s;
+      span.amount = e.amount;
+      input.expressions.push_back(span);
+    }
     if (!player->motion.sounding.empty()) {
       input.first_onset_s = player->motion.sounding.front().onset_s;
       input.last_offset_s = player->motion.sounding.back().offset_s;
@@ -360,7 +429,10 @@ Status build_brass(Stage& stage, ModelCache& cache) {
   }
   brass::register_brass_motion(stage.schedule);
   if (!stage.brass.empty()) {
-    auto ensemble_plan = ensemble::plan_ensemble(ensemble_inputs);
+    ensemble::EnsembleOptions ensemble_options;
+    ensemble_options.cues_s = stage.scene.cues_s;
+    auto ensemble_plan = ensemble::plan_ensemble(ensemble_inputs, ensemble_options);
+    stage.replanned.push_back("ensemble");
     if (!ensemble_plan) return ensemble_plan.error();
     stage.ensemble = std::make_shared<const ensemble::EnsemblePlan>(std::move(*ensemble_plan));
     for (std::size_t i = 0; i < stage.brass.size(); ++i) {
@@ -427,27 +499,49 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
   if (Status s = apply_finger_pins(stage.scene, pianist, score); !s) return s.error();
   auto model = piano::load_fingering_model("default", pianist.hand_size, content_dir);
   if (!model) return model.error();
-  auto performance = performance::plan_performance(score, *model);
-  if (!performance) return performance.error();
-  for (const performance::HandReport* hand :
-       {&performance->report.right, &performance->report.left}) {
-    if (!hand->path_error.empty()) stage.notes.push_back("pianist: " + hand->path_error);
+  const std::string plan_key = pianist_plan_key(stage.scene, pianist);
+  const Stage* reuse = cache.reused();
+  const PianistSeat* previous = reuse != nullptr && reuse->pianist &&
+                                        reuse->pianist->plan_key == plan_key && reuse->pianist->motion
+                                    ? reuse->pianist.get()
+                                    : nullptr;
+  std::shared_ptr<const finger_motion::PianistMotion> motion;
+  piano::ScorePlan fingering;
+  std::vector<std::string> plan_notes;
+  if (previous != nullptr) {
+    motion = previous->motion;
+    fingering = previous->fingering;
+    plan_notes = previous->plan_notes;
+  } else {
+    auto performance = performance::plan_performance(score, *model);
+    if (!performance) return performance.error();
+    for (const performance::HandReport* hand :
+         {&performance->report.right, &performance->report.left}) {
+      if (!hand->path_error.empty()) plan_notes.push_back("pianist: " + hand->path_error);
+    }
+    auto params = finger_motion::load_finger_motion_params(
+        finger_motion::finger_motion_params_path(content_dir));
+    if (!params) return params.error();
+    auto fingers = finger_motion::plan_finger_motion(
+        score, performance->fingering, performance->right_path, performance->left_path,
+        model->keyboard, model->hand, *params);
+    if (!fingers) return fingers.error();
+    auto planned = std::make_shared<finger_motion::PianistMotion>();
+    planned->fingers = std::move(*fingers);
+    planned->right_path = std::move(performance->right_path);
+    planned->left_path = std::move(performance->left_path);
+    motion = std::move(planned);
+    fingering = std::move(performance->fingering);
+    stage.replanned.push_back("pianist");
   }
-  auto params = finger_motion::load_finger_motion_params(
-      finger_motion::finger_motion_params_path(content_dir));
-  if (!params) return params.error();
-  auto fingers = finger_motion::plan_finger_motion(score, performance->fingering,
-                                                   performance->right_path, performance->left_path,
-                                                   model->keyboard, model->hand, *params);
-  if (!fingers) return fingers.error();
-  auto motion = std::make_shared<finger_motion::PianistMotion>();
-  motion->fingers = std::move(*fingers);
-  motion->right_path = std::move(performance->right_path);
-  motion->left_path = std::move(performance->left_path);
+  stage.notes.insert(stage.notes.end(), plan_notes.begin(), plan_notes.end());
 
   auto seat = std::make_unique<PianistSeat>();
-  seat->fingering = performance->fingering;
+  seat->fingering = std::move(fingering);
   seat->score = std::move(score);
+  seat->motion = motion;
+  seat->plan_key = plan_key;
+  seat->plan_notes = std::move(plan_notes);
   seat->pianist = stage.world.create();
   stage.world.add<components::Performer>(seat->pianist,
                                          components::Performer{"pianist", pianist.seed});

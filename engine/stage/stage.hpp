@@ -36,6 +36,10 @@ struct BrassPlayerMotion;
 
 namespace tutti::brass {
 struct Instrument;
+struct BrassLine;
+}  // namespace tutti::brass
+namespace tutti::finger_motion {
+struct PianistMotion;
 }
 
 namespace tutti::stage {
@@ -86,6 +90,11 @@ struct LineNoteTime {
 struct BrassSeat {
   std::string name;
   std::vector<LineNoteTime> line;
+  // What this player's plan was made from (instrument, part, voice, music, breath marks): a
+  // re-plan with the same key shares the plan instead of making it again.
+  std::string plan_key;
+  std::shared_ptr<const brass::BrassLine> planned_line;
+  std::vector<std::string> plan_notes;  // the planner's diagnostics for this player
   ecs::Entity performer = ecs::Entity::null;
   ecs::Entity instrument = ecs::Entity::null;
   bool trombone = false;
@@ -111,6 +120,9 @@ struct PianistSeat {
   // editor shows and pins fingers on these notes.
   music::Score score;
   piano::ScorePlan fingering;
+  std::shared_ptr<const finger_motion::PianistMotion> motion;
+  std::string plan_key;  // parts, music, hand size, pins: as BrassSeat::plan_key
+  std::vector<std::string> plan_notes;
   ecs::Entity pianist = ecs::Entity::null;
   std::array<ecs::Entity, 2> hands{ecs::Entity::null, ecs::Entity::null};  // right, left
   std::array<std::array<ecs::Entity, 5>, 2> fingers{};
@@ -149,8 +161,11 @@ struct Stage {
   double start_s = 0.0;
   double end_s = 0.0;  // output end (scene's end_s, else the end of the music + 1 s)
   std::vector<std::shared_ptr<const brass::Instrument>> instruments;  // the brass players'
-  std::vector<std::string> notes;        // planning diagnostics worth showing (out of range, ...)
-  std::vector<glm::mat4> scratch_world;  // reused by evaluate_stage (instrument / pianist)
+  std::vector<std::string> notes;  // planning diagnostics worth showing (out of range, ...)
+  // What build_stage planned afresh (performer names, "pianist", "ensemble"); with
+  // StageOptions::reuse_models, everything else was shared from that stage unchanged.
+  std::vector<std::string> replanned;
+  std::vector<glm::mat4> scratch_world;       // reused by evaluate_stage (instrument / pianist)
   std::vector<glm::mat4> scratch_body_world;  // reused by evaluate_stage (brass players' bodies)
 
   std::vector<const model::ModelAsset*> model_list() const;

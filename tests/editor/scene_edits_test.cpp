@@ -35,14 +35,14 @@ TEST_F(SceneEdits, BreathMarks) {
   apply(add_breath(doc_->json(), 1, 3.5));
   EXPECT_EQ(scene().performers[1].breaths.add_s, (std::vector<double>{3.5, 7.25}));
   // Deleting a marked breath drops the mark; deleting a planned one adds a "remove".
-  apply(delete_breath(doc_->json(), 1, 7.25));
+  apply(delete_breath(doc_->json(), 1, 7.25, /*marked_only=*/true));
   apply(delete_breath(doc_->json(), 1, 10.0));
   EXPECT_EQ(scene().performers[1].breaths.add_s, (std::vector<double>{3.5}));
   EXPECT_EQ(scene().performers[1].breaths.remove_s, (std::vector<double>{10.0}));
   // Adding where a breath was removed undoes the removal.
   apply(add_breath(doc_->json(), 1, 10.0));
   EXPECT_TRUE(scene().performers[1].breaths.remove_s.empty());
-  apply(move_breath(doc_->json(), 1, 3.5, 4.0));
+  apply(move_breath(doc_->json(), 1, 3.5, /*from_marked_only=*/true, 4.0));
   EXPECT_EQ(scene().performers[1].breaths.add_s, (std::vector<double>{4.0}));
   // Everything undone: no "breaths" key left.
   while (doc_->can_undo()) ASSERT_TRUE(doc_->undo());

@@ -85,7 +85,10 @@ TEST(Script, EditsSaveAndQuit) {
   auto saved = scene::load_scene(file);
   ASSERT_TRUE(saved) << saved.error().message;
   EXPECT_DOUBLE_EQ(*saved->performers[1].variation.sway_amount, 0.8);
-  EXPECT_EQ(saved->performers[2].breaths.add_s, std::vector<double>{6.0});
+  // The mark is stored at the boundary it names: the first note at or after 6 s.
+  const double boundary = (*session)->breath_boundary(2, 6.0);
+  EXPECT_GT(boundary, 6.0);
+  EXPECT_EQ(saved->performers[2].breaths.add_s, std::vector<double>{boundary});
   ASSERT_EQ(saved->performers[0].expressions.size(), 1u);
   EXPECT_DOUBLE_EQ(saved->performers[0].expressions[0].amount, 0.7);
   EXPECT_EQ(saved->cameras[saved->shots[saved->shot_at(12.6)].camera].name, "wide");

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "components/body_motion.hpp"
 #include "editor_test_support.hpp"
 
@@ -81,6 +84,40 @@ TEST(Session, PinningAFingerReplansTheFingering) {
   EXPECT_EQ(s.document().revision(), revision);
   ASSERT_TRUE(s.undo());
   EXPECT_EQ(s.timeline().lanes.back().notes[12].finger, note.finger);
+}
+
+// Only what an edit touches is planned again: a breath mark re-plans that player (and the
+// ensemble's body motion, which reads every player's breaths); a variation only the ensemble.
+TEST(Session, AnEditReplansOnlyWhatItTouches) {
+  ScratchDir dir;
+  auto session = Session::open(dir.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  const TimelineLane& lane = s.timeline().lanes[2];  // Trombone 1
+  // A legato boundary (the note before runs into it) where nobody planned a breath.
+  double boundary = -1.0;
+  for (std::size_t i = 4; i < lane.notes.size() && boundary < 0; ++i) {
+    const bool legato = lane.notes[i - 1].end_s >= lane.notes[i].start_s - 1e-6;
+    const bool breath = std::any_of(lane.breaths.begin(), lane.breaths.end(), [&](const auto& b) {
+      return std::abs(b.boundary_s - lane.notes[i].start_s) < 1e-6;
+    });
+    if (legato && !breath) boundary = lane.notes[i].start_s;
+  }
+  ASSERT_GT(boundary, 0.0);
+  ASSERT_TRUE(s.apply(add_breath(s.document().json(), 2, s.breath_boundary(2, boundary - 0.01))));
+  EXPECT_EQ(s.stage().replanned, (std::vector<std::string>{"Trombone 1", "ensemble"}));
+  const auto& breaths = s.timeline().lanes[2].breaths;
+  const auto marked = std::find_if(breaths.begin(), breaths.end(), [&](const auto& b) {
+    return std::abs(b.boundary_s - boundary) < 1e-6;
+  });
+  ASSERT_NE(marked, breaths.end()) << "the mark made a breath at " << boundary;
+  EXPECT_TRUE(marked->marked);
+  EXPECT_TRUE(marked->catch_breath) << "legato: a catch-breath";
+  ASSERT_TRUE(s.apply(set_variation(s.document().json(), {false, 0}, "sway_amount", 0.1)));
+  EXPECT_EQ(s.stage().replanned, std::vector<std::string>{"ensemble"});
+  // Deleting the marked breath leaves no mark behind.
+  ASSERT_TRUE(s.apply(delete_breath(s.document().json(), 2, boundary, marked->marked)));
+  EXPECT_FALSE(s.document().json()["performers"][2].contains("breaths"));
 }
 
 TEST(Session, ASliderDragIsOneUndoStep) {
