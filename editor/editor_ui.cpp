@@ -38,14 +38,50 @@ void record(UiState& ui, const std::string& id) {
   ui.widgets.push_back({id, a.x, a.y, b.x, b.y});
 }
 
-// Reports a refused edit in the status line instead of failing.
-void apply(Session& session, UiState& ui, Result<Edit> edit, bool coalesce = false) {
-  const std::string label = edit ? edit->label : "";
-  if (Status s = session.apply(std::move(edit), coalesce); !s) {
-    ui.status = s.error().message;
-  } else {
-    ui.status = label;
+// Queues an edit for the end of the frame; a builder's refusal goes to the status line.
+void apply(Session& /*session*/, UiState& ui, Result<Edit> edit, bool coalesce = false) {
+  if (!edit) {
+    ui.status = edit.error().message;
+    return;
   }
+  PendingAction action;
+  action.edit = std::move(*edit);
+  action.coalesce = coalesce;
+  ui.pending.push_back(std::move(action));
+}
+
+void request(UiState& ui, PendingAction::Kind kind) {
+  PendingAction action;
+  action.kind = kind;
+  ui.pending.push_back(std::move(action));
+}
+
+// After drawing: each queued action re-plans; a refused one says why in the status line.
+void run_pending(Session& session, UiState& ui) {
+  for (PendingAction& action : ui.pending) {
+    Status s;
+    std::string done;
+    switch (action.kind) {
+      case PendingAction::Kind::edit:
+        done = action.edit->label;
+        s = session.apply(std::move(*action.edit), action.coalesce);
+        break;
+      case PendingAction::Kind::undo:
+        done = "undid " + session.document().undo_label();
+        s = session.undo();
+        break;
+      case PendingAction::Kind::redo:
+        done = "redid " + session.document().redo_label();
+        s = session.redo();
+        break;
+      case PendingAction::Kind::recover:
+        done = "recovered the autosave";
+        s = session.recover_autosave();
+        break;
+    }
+    ui.status = s ? done : s.error().message;
+  }
+  ui.pending.clear();
 }
 
 std::string clock_text(double t) {
@@ -83,15 +119,11 @@ void draw_transport(Session& session, UiState& ui, UiRequests& out) {
   if (ImGui::SliderFloat("tempo", &tempo, 0.25f, 2.0f, "%.2fx")) out.tempo = tempo;
   ImGui::SameLine();
   const Document& doc = session.document();
-  if (ImGui::Button("Undo")) {
-    if (Status s = session.undo(); !s) ui.status = s.error().message;
-  }
+  if (ImGui::Button("Undo")) request(ui, PendingAction::Kind::undo);
   record(ui, "transport/undo");
   if (ImGui::IsItemHovered() && doc.can_undo()) ImGui::SetTooltip("%s", doc.undo_label().c_str());
   ImGui::SameLine();
-  if (ImGui::Button("Redo")) {
-    if (Status s = session.redo(); !s) ui.status = s.error().message;
-  }
+  if (ImGui::Button("Redo")) request(ui, PendingAction::Kind::redo);
   record(ui, "transport/redo");
   ImGui::SameLine();
   if (ImGui::Button(doc.dirty() ? "Save*" : "Save")) {
@@ -592,11 +624,10 @@ void handle_keys(Session& session, UiState& ui, UiRequests& out) {
     delete_selection(session, ui);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) out.toggle_play = true;
   if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) {
-    Status s = io.KeyShift ? session.redo() : session.undo();
-    if (!s) ui.status = s.error().message;
+    request(ui, io.KeyShift ? PendingAction::Kind::redo : PendingAction::Kind::undo);
   }
   if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) {
-    if (Status s = session.redo(); !s) ui.status = s.error().message;
+    request(ui, PendingAction::Kind::redo);
   }
 }
 
@@ -609,8 +640,7 @@ void draw_prompts(Session& session, UiState& ui, UiRequests& out) {
                              ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::TextUnformatted("The autosave has edits that were never saved.");
     if (ImGui::Button("Recover")) {
-      Status s = session.recover_autosave();
-      ui.status = s ? "recovered the autosave" : s.error().message;
+      request(ui, PendingAction::Kind::recover);
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
@@ -661,6 +691,7 @@ UiRequests draw_editor(Session& session, UiState& ui) {
   draw_timeline(session, ui, out);
   handle_keys(session, ui, out);
   draw_prompts(session, ui, out);
+  run_pending(session, ui);
   return out;
 }
 

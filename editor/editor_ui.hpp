@@ -23,6 +23,15 @@ struct WidgetBox {
   float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
+// An edit asked for while drawing: applied after the frame's panels are drawn, because applying
+// re-plans and replaces the scene and timeline the panels are reading.
+struct PendingAction {
+  enum class Kind { edit, undo, redo, recover };
+  Kind kind = Kind::edit;
+  std::optional<Edit> edit;
+  bool coalesce = false;
+};
+
 struct UiState {
   double time_s = 0.0;   // the playhead (the host's transport sets it each frame)
   bool playing = false;  // ditto
@@ -44,6 +53,7 @@ struct UiState {
   double drag_from_s = 0.0;
   bool drag_marked = false;  // a breath there only because of its mark
   std::size_t pin_note = 0;  // the pianist's note whose finger popup is open
+  std::vector<PendingAction> pending;
 };
 
 struct UiRequests {
