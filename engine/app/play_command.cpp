@@ -1,5 +1,6 @@
 #include "app/play_command.hpp"
 
+#include <dlfcn.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -42,6 +43,20 @@ VkSampleCountFlagBits to_samples(int msaa) {
     default:
       return VK_SAMPLE_COUNT_1_BIT;
   }
+}
+
+// Without a sound card ALSA prints its own errors to stderr while FluidSynth looks for a device
+// ("ALSA lib pcm.c:...: Unknown PCM default"); the one-line notice after it says it better.
+// libasound is loaded with FluidSynth already; found through dlsym, so tutti needs no ALSA
+// headers (and nothing happens without it).
+void ignore_alsa_error(const char*, int, const char*, int, const char*, ...) {}
+
+void quiet_alsa_errors() {
+  using Handler = void (*)(const char*, int, const char*, int, const char*, ...);
+  using SetHandler = int (*)(Handler);
+  void* symbol = dlsym(RTLD_DEFAULT, "snd_lib_error_set_handler");
+  if (symbol == nullptr) return;
+  reinterpret_cast<SetHandler>(symbol)(ignore_alsa_error);
 }
 
 // GLFW's callbacks, turned into actions for the main loop (GLFW calls them from poll_events).
@@ -153,6 +168,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   auto target = render::WindowTarget::create(**context, **window, target_options);
   if (!target) return fail(target.error().message);
 
+  if (o.audio_driver.empty()) quiet_alsa_errors();
   runtime::ScenePlayerOptions player_options;
   player_options.stage.asset_dir = o.assets;
   player_options.tempo = o.tempo;

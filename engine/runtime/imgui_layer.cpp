@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "render/vk_result.hpp"
 
@@ -19,6 +20,18 @@ bool g_layer_exists = false;  // ImGui's backends keep global state: one layer a
 VkResult g_last_failure = VK_SUCCESS;
 void check_vk_result(VkResult result) {
   if (result < 0) g_last_failure = result;
+}
+
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+void linearise(ImGuiStyle& style) {
+  for (ImVec4& color : style.Colors) {
+    color.x = srgb_to_linear(color.x);
+    color.y = srgb_to_linear(color.y);
+    color.z = srgb_to_linear(color.z);
+  }
 }
 
 std::uint32_t overlay_image_count(const render::WindowTarget& target) {
@@ -41,6 +54,7 @@ Result<std::unique_ptr<ImGuiLayer>> ImGuiLayer::create(render::VulkanContext& co
   ImGuiIO& io = ImGui::GetIO();
   if (!options.save_settings) io.IniFilename = nullptr;
   ImGui::StyleColorsDark();
+  if (options.linearise_style) linearise(ImGui::GetStyle());
 
   if (!ImGui_ImplGlfw_InitForVulkan(window.handle(), options.install_callbacks)) {
     return Error{"imgui layer: ImGui_ImplGlfw_InitForVulkan failed"};

@@ -35,6 +35,10 @@ struct ImGuiLayerOptions {
   // GLFW callbacks for ImGui's input (chained to those already installed).
   bool install_callbacks = true;
   bool save_settings = false;  // false: no imgui.ini is read or written
+  // ImGui's style colours are sRGB values for a UNORM target; the swap chain is sRGB (it
+  // encodes on store), so they are decoded to linear light once here and look as designed.
+  // Colours the caller passes to ImGui itself are still taken as linear.
+  bool linearise_style = true;
 };
 
 class ImGuiLayer {

@@ -1,5 +1,6 @@
 #include "runtime/scene_player.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace tutti::runtime {
@@ -75,8 +76,9 @@ render::Camera ScenePlayer::camera(float aspect) const {
 
 Status ScenePlayer::record(const render::RecordingFrame& frame, render::FrameTarget& target) {
   const VkExtent2D extent = target.extent();
-  last_aspect_ = static_cast<float>(extent.width) / static_cast<float>(std::max(1u, extent.height));
-  return renderer_->record(frame, target, instances_, camera(last_aspect_), lighting_, clear_);
+  const float aspect =
+      static_cast<float>(extent.width) / static_cast<float>(std::max(1u, extent.height));
+  return renderer_->record(frame, target, instances_, camera(aspect), lighting_, clear_);
 }
 
 void ScenePlayer::set_director() { mode_ = CameraMode::director; }
@@ -91,8 +93,7 @@ Status ScenePlayer::set_scene_camera(std::size_t index) {
   return Status::success();
 }
 
-void ScenePlayer::set_free_camera(float aspect) {
-  (void)aspect;
+void ScenePlayer::set_free_camera() {
   if (mode_ == CameraMode::free) return;
   const scene::Camera& from = mode_ == CameraMode::scene_camera
                                   ? stage_->scene.cameras[camera_index_]
@@ -122,7 +123,7 @@ bool ScenePlayer::apply(const Action& action, double host_s, float viewport_heig
       (void)set_scene_camera(static_cast<std::size_t>(action.index));  // no such camera: ignored
       break;
     case ActionKind::free_camera:
-      set_free_camera(last_aspect_);
+      set_free_camera();
       break;
     case ActionKind::loop_start:
       t.set_loop_start(host_s, t.time());
@@ -142,15 +143,15 @@ bool ScenePlayer::apply(const Action& action, double host_s, float viewport_heig
     case ActionKind::quit:
       return false;
     case ActionKind::orbit:
-      set_free_camera(last_aspect_);
+      set_free_camera();
       orbit_.orbit(action.dx, action.dy);
       break;
     case ActionKind::pan:
-      set_free_camera(last_aspect_);
+      set_free_camera();
       orbit_.pan(action.dx, action.dy, viewport_height_px);
       break;
     case ActionKind::zoom:
-      set_free_camera(last_aspect_);
+      set_free_camera();
       orbit_.zoom(static_cast<float>(action.amount));
       break;
   }

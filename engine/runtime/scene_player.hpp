@@ -66,7 +66,7 @@ class ScenePlayer {
   void set_director();
   Status set_scene_camera(std::size_t index);
   // The orbit camera starts where the shown camera is.
-  void set_free_camera(float aspect);
+  void set_free_camera();
   CameraMode camera_mode() const { return mode_; }
   std::size_t camera_index() const { return camera_index_; }
   render::Camera camera(float aspect) const;
@@ -94,7 +94,6 @@ class ScenePlayer {
   std::size_t camera_index_ = 0;
   OrbitCamera orbit_;
   double shown_s_ = 0.0;
-  float last_aspect_ = 16.0f / 9.0f;
 };
 
 }  // namespace tutti::runtime
