@@ -142,5 +142,42 @@ TEST_F(ImGuiLayerTest, OverlayWithoutAMainPassStillPresents) {
   }
 }
 
+TEST_F(ImGuiLayerTest, OverlayFollowsAResize) {
+  auto target = render::WindowTarget::create(*context_, *window_,
+                                             {.samples = VK_SAMPLE_COUNT_4_BIT,
+                                              .present_mode = VK_PRESENT_MODE_FIFO_KHR,
+                                              .frames_in_flight = 2});
+  ASSERT_TRUE(target) << target.error().message;
+  target_ = std::move(*target);
+  auto layer = ImGuiLayer::create(*context_, *window_, *target_);
+  ASSERT_TRUE(layer) << layer.error().message;
+  layer_ = std::move(*layer);
+  constexpr int kFrames = 40;
+  for (int frame = 0; frame < kFrames; ++frame) {
+    if (frame == 5) window_->set_size(400, 300);
+    window_->poll_events();
+    layer_->new_frame();
+    ImGui::SetNextWindowPos(ImVec2(20, 20), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(160, 100), ImGuiCond_Always);
+    ImGui::Begin("Resized");
+    ImGui::Text("frame %d", frame);
+    ImGui::End();
+    if (frame + 1 == kFrames) target_->capture_next_frame();
+    auto recording = target_->begin_frame();
+    ASSERT_TRUE(recording) << recording.error().message;
+    target_->begin_main_pass(kClear);
+    layer_->record_overlay(*recording, *target_);  // ends the main pass itself
+    ASSERT_TRUE(target_->end_frame());
+  }
+  EXPECT_GE(target_->recreate_count(), 1u);
+  auto captured = target_->take_capture();
+  ASSERT_TRUE(captured) << captured.error().message;
+  EXPECT_EQ(captured->width, 400u);
+  EXPECT_EQ(captured->height, 300u);
+  const render::test::Rgb clear = srgb(kClear.r, kClear.g, kClear.b);
+  EXPECT_TRUE(pixel_near(captured->rgba, captured->width, 390, 290, clear));
+  EXPECT_FALSE(pixel_near(captured->rgba, captured->width, 100, 70, clear));
+}
+
 }  // namespace
 }  // namespace tutti::runtime
