@@ -9,6 +9,7 @@
 #include "app/fingering_command.hpp"
 #include "app/fit_fingering_command.hpp"
 #include "app/info_command.hpp"
+#include "app/play_command.hpp"
 #include "app/render_command.hpp"
 #include "app/sync_report_command.hpp"
 
@@ -122,6 +123,27 @@ int main(int argc, char** argv) {
                      "every note at its score time, not early by its sample's attack");
   sync_cmd->add_flag("--check", sync.check, "exit 1 unless mean <= 5 ms and max <= 16.67 ms");
 
+  tutti::app::PlayOptions play;
+  CLI::App* play_cmd = app.add_subcommand(
+      "play",
+      "Play a scene live in a window with its sound (keys: Space play/pause, Left/Right seek, "
+      "Home start, 0 director, 1-9 camera, F or drag free camera, [ ] \\ loop, - = tempo, Esc)");
+  play_cmd->add_option("SCENE", play.scene, "scene file")->required();
+  play_cmd->add_option("--tempo", play.tempo, "practice tempo, 0.25..2 (0.5 = half speed)");
+  play_cmd->add_option("--camera", play.camera, "start on this scene camera (not the shot list)");
+  play_cmd->add_option("--start", play.start, "start at this time (seconds of the music)");
+  play_cmd->add_option("--loop", play.loop, "A:B, play seconds [A, B) over and over");
+  play_cmd->add_option("--soundfont", play.soundfont,
+                       "General MIDI .sf2 (default: $TUTTI_SOUNDFONT or the system's)");
+  play_cmd->add_option("--assets", play.assets, "folder of the generated .glb assets");
+  play_cmd->add_option("--audio-driver", play.audio_driver,
+                       "FluidSynth audio driver (pulseaudio, alsa, ...; simulated: none)");
+  play_cmd->add_option("--device", play.device, "Vulkan device: index or part of its name");
+  play_cmd->add_option("--frames", play.frames, "quit after this many frames");
+  play_cmd->add_option("--screenshot", play.screenshot, "write the last frame to this .png");
+  play_cmd->add_flag("--validate", play.validate,
+                     "Vulkan validation layer on; any message is an error");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -139,6 +161,7 @@ int main(int argc, char** argv) {
     sync.compensate_attacks = !no_compensation;
     return tutti::app::run_sync_report(sync, std::cout, std::cerr);
   }
+  if (*play_cmd) return tutti::app::run_play(play, std::cout, std::cerr);
   if (*render_cmd) {
     render.progress = !no_progress;
     render.audio = !no_audio;

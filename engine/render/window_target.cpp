@@ -161,6 +161,7 @@ Result<std::unique_ptr<WindowTarget>> WindowTarget::create(VulkanContext& contex
     }
     slot.image_available = DeviceHandle<VkSemaphore>(device, semaphore, vkDestroySemaphore);
   }
+  if (Status s = target->create_overlay_render_pass(); !s) return s.error();
   if (Status s = target->create_swapchain(); !s) return s.error();
   return target;
 }
@@ -179,10 +180,62 @@ WindowTarget::~WindowTarget() {
 }
 
 void WindowTarget::destroy_swapchain_images() {
+  overlay_framebuffers_.clear();
   image_views_.clear();
   images_.clear();
   msaa_color_ = DeviceImage{};
   depth_ = DeviceImage{};
+}
+
+Status WindowTarget::create_overlay_render_pass() {
+  VkAttachmentDescription color{};
+  color.format = color_format_;
+  color.samples = VK_SAMPLE_COUNT_1_BIT;
+  color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;  // draw over the main pass's picture
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  color.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  color.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;  // end_frame's barrier moves it on
+  VkAttachmentReference reference{};
+  reference.attachment = 0;
+  reference.layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &reference;
+  // The main pass's colour writes (and its resolve) before the overlay loads and blends.
+  VkSubpassDependency after_main{};
+  after_main.srcSubpass = VK_SUBPASS_EXTERNAL;
+  after_main.dstSubpass = 0;
+  after_main.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  after_main.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  after_main.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  after_main.dstAccessMask =
+      VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  // The overlay's writes before end_frame's barrier (which starts at colour output again).
+  VkSubpassDependency before_present{};
+  before_present.srcSubpass = 0;
+  before_present.dstSubpass = VK_SUBPASS_EXTERNAL;
+  before_present.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  before_present.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  before_present.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  before_present.dstAccessMask = 0;
+  const VkSubpassDependency dependencies[2] = {after_main, before_present};
+  VkRenderPassCreateInfo info =
+      vk_struct<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
+  info.attachmentCount = 1;
+  info.pAttachments = &color;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 2;
+  info.pDependencies = dependencies;
+  VkRenderPass pass = VK_NULL_HANDLE;
+  if (VkResult r = vkCreateRenderPass(context_.device(), &info, nullptr, &pass); r != VK_SUCCESS) {
+    return vk_error("vkCreateRenderPass", r);
+  }
+  overlay_pass_ = DeviceHandle<VkRenderPass>(context_.device(), pass, vkDestroyRenderPass);
+  return Status::success();
 }
 
 Status WindowTarget::wait_while_minimised() {
@@ -269,6 +322,20 @@ Status WindowTarget::create_swapchain() {
       return vk_error("vkCreateImageView", r);
     }
     image_views_.emplace_back(device, view, vkDestroyImageView);
+    VkFramebufferCreateInfo framebuffer_info =
+        vk_struct<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
+    framebuffer_info.renderPass = overlay_pass_.get();
+    framebuffer_info.attachmentCount = 1;
+    framebuffer_info.pAttachments = &view;
+    framebuffer_info.width = extent_.width;
+    framebuffer_info.height = extent_.height;
+    framebuffer_info.layers = 1;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    if (VkResult r = vkCreateFramebuffer(device, &framebuffer_info, nullptr, &framebuffer);
+        r != VK_SUCCESS) {
+      return vk_error("vkCreateFramebuffer", r);
+    }
+    overlay_framebuffers_.emplace_back(device, framebuffer, vkDestroyFramebuffer);
   }
   while (render_finished_.size() < images_.size()) {
     VkSemaphoreCreateInfo semaphore_info =
@@ -343,6 +410,8 @@ Result<RecordingFrame> WindowTarget::begin_frame() {
   recording_ = true;
   main_pass_open_ = false;
   main_pass_done_ = false;
+  overlay_open_ = false;
+  overlay_done_ = false;
   return RecordingFrame{slot.commands, next_id_};
 }
 
@@ -418,14 +487,48 @@ void WindowTarget::begin_main_pass(const ClearColor& clear) {
 
 void WindowTarget::end_main_pass() {
   if (!main_pass_open_) return;
+  vkCmdEndRendering(slots_[slot_index_].commands);
+  // The image stays in COLOR_ATTACHMENT_OPTIMAL: an overlay pass may follow; end_frame()
+  // records its final barrier.
+  main_pass_open_ = false;
+  main_pass_done_ = true;
+}
+
+void WindowTarget::begin_overlay_pass() {
+  if (!recording_ || overlay_open_ || overlay_done_) return;  // precondition: record nothing
+  if (!main_pass_done_) begin_main_pass(ClearColor{});
+  end_main_pass();
   const VkCommandBuffer commands = slots_[slot_index_].commands;
-  vkCmdEndRendering(commands);
-  // Colour writes (and the MSAA resolve, which happens in COLOR_ATTACHMENT_OUTPUT) before the
-  // present, or before the capture's copy (end_frame then moves the image on to PRESENT_SRC).
-  // The semaphore signalled at the submission's end makes them visible to the presentation.
-  const bool capture = capture_requested_ && can_copy_from_images_;
+  // The render pass's external dependency orders this after the main pass's colour writes.
+  VkRenderPassBeginInfo begin =
+      vk_struct<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
+  begin.renderPass = overlay_pass_.get();
+  begin.framebuffer = overlay_framebuffers_[image_index_].get();
+  begin.renderArea = {{0, 0}, extent_};
+  vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  const VkViewport viewport{
+      0.0f, 0.0f, static_cast<float>(extent_.width), static_cast<float>(extent_.height),
+      0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, extent_};
+  vkCmdSetViewport(commands, 0, 1, &viewport);
+  vkCmdSetScissor(commands, 0, 1, &scissor);
+  overlay_open_ = true;
+}
+
+void WindowTarget::end_overlay_pass() {
+  if (!overlay_open_) return;
+  vkCmdEndRenderPass(slots_[slot_index_].commands);
+  overlay_open_ = false;
+  overlay_done_ = true;
+}
+
+void WindowTarget::finish_image(bool capture) {
+  // Colour writes (the main pass, its MSAA resolve and the overlay, all in
+  // COLOR_ATTACHMENT_OUTPUT) before the present, or before the capture's copy (end_frame then
+  // moves the image on to PRESENT_SRC). The semaphore signalled at the submission's end makes
+  // them visible to the presentation.
   record_image_barriers(
-      commands,
+      slots_[slot_index_].commands,
       {image_barrier(
           images_[image_index_], VK_IMAGE_ASPECT_COLOR_BIT,
           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
@@ -433,20 +536,20 @@ void WindowTarget::end_main_pass() {
           capture ? VK_ACCESS_2_TRANSFER_READ_BIT : VK_ACCESS_2_NONE,
           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
           capture ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_PRESENT_SRC_KHR)});
-  main_pass_open_ = false;
-  main_pass_done_ = true;
 }
 
 Result<std::uint64_t> WindowTarget::end_frame() {
   if (!recording_) return Error{"window target: end_frame without begin_frame"};
   if (!main_pass_done_) begin_main_pass(ClearColor{});  // present a defined image
   end_main_pass();
+  end_overlay_pass();
   recording_ = false;
   const VkDevice device = context_.device();
   Slot& slot = slots_[slot_index_];
   const VkImage image = images_[image_index_];
 
   const bool capture = capture_requested_ && can_copy_from_images_;
+  finish_image(capture);
   if (capture) {
     const VkDeviceSize size_bytes = VkDeviceSize{extent_.width} * extent_.height * 4;
     if (!capture_buffer_.buffer || capture_buffer_.size_bytes != size_bytes) {
@@ -455,7 +558,7 @@ Result<std::uint64_t> WindowTarget::end_frame() {
       if (!buffer) return buffer.error();
       capture_buffer_ = std::move(*buffer);
     }
-    // end_main_pass left the image in TRANSFER_SRC, its writes visible to the copy.
+    // finish_image left the image in TRANSFER_SRC, its writes visible to the copy.
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent_.width, extent_.height, 1};

@@ -13,6 +13,12 @@
 //     target->end_frame();                      // resolve, present
 //   }
 //
+// Overlay pass (for Dear ImGui, whose Vulkan backend needs a classic VkRenderPass): after the
+// main pass, begin_overlay_pass() .. end_overlay_pass() draws over the resolved swap-chain image
+// (one sample, loadOp LOAD) through overlay_render_pass() and a framebuffer per swap-chain image.
+// The image stays in COLOR_ATTACHMENT_OPTIMAL between the passes; end_frame() moves it on to
+// PRESENT_SRC (or TRANSFER_SRC for a capture, which therefore includes the overlay).
+//
 // Frames in flight: each slot has a command buffer, a fence and an image-available semaphore;
 // each swap-chain image has its own render-finished semaphore (a present may still be waiting on
 // it when the slot comes round again). The depth and MSAA attachments are shared by the slots and
@@ -80,6 +86,14 @@ class WindowTarget final : public FrameTarget {
   Result<RecordingFrame> begin_frame() override;
   void begin_main_pass(const ClearColor& clear) override;
   void end_main_pass() override;
+  // Render pass for drawing over the finished image: one colour attachment of color_format(),
+  // one sample, loaded and stored, COLOR_ATTACHMENT_OPTIMAL before and after. Fixed for the
+  // target's life (the swap chain's format does not change when it is recreated).
+  VkRenderPass overlay_render_pass() const { return overlay_pass_.get(); }
+  // After the main pass (ended here if still open; begun with a black clear if never begun) and
+  // before end_frame(). Viewport and scissor are set to extent(). One overlay pass per frame.
+  void begin_overlay_pass();
+  void end_overlay_pass();
   // One main pass per frame (a second begin_main_pass records nothing).
   // Submits and presents. A frame whose main pass was never begun is cleared to black.
   Result<std::uint64_t> end_frame() override;
@@ -101,6 +115,9 @@ class WindowTarget final : public FrameTarget {
   Status create_swapchain();
   Status wait_while_minimised();
   void destroy_swapchain_images();
+  Status create_overlay_render_pass();
+  // The image's last writes before the present (or the capture's copy): its final barrier.
+  void finish_image(bool capture);
 
   VulkanContext& context_;
   Window& window_;
@@ -120,6 +137,8 @@ class WindowTarget final : public FrameTarget {
   std::vector<DeviceHandle<VkSemaphore>> render_finished_;
   DeviceImage depth_;
   DeviceImage msaa_color_;  // only when samples_ > 1
+  DeviceHandle<VkRenderPass> overlay_pass_;
+  std::vector<DeviceHandle<VkFramebuffer>> overlay_framebuffers_;  // per swap-chain image
 
   std::vector<Slot> slots_;
   std::uint32_t slot_index_ = 0;
@@ -128,6 +147,8 @@ class WindowTarget final : public FrameTarget {
   bool recording_ = false;
   bool main_pass_open_ = false;
   bool main_pass_done_ = false;
+  bool overlay_open_ = false;
+  bool overlay_done_ = false;
   bool needs_recreate_ = false;
   std::uint32_t recreate_count_ = 0;
 

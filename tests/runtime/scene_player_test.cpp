@@ -1,0 +1,127 @@
+// ScenePlayer on the piano scene, headless (an OffscreenTarget), silent (the transport on the
+// host clock): camera modes through the key bindings, the transport through them, and a drawn
+// frame. Skipped without a Vulkan device.
+#include "runtime/scene_player.hpp"
+
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "render/offscreen_target.hpp"
+#include "render/render_test_support.hpp"
+#include "scene/load_scene.hpp"
+
+namespace tutti::runtime {
+namespace {
+
+constexpr float kAspect = 16.0f / 9.0f;
+
+void expect_same_view(const render::Camera& a, const render::Camera& b) {
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) EXPECT_NEAR(a.view[c][r], b.view[c][r], 1e-4f);
+  }
+}
+
+class ScenePlayerTest : public render::test::VulkanTest {
+ protected:
+  void SetUp() override {
+    render::test::VulkanTest::SetUp();
+    if (IsSkipped() || HasFatalFailure()) return;
+    auto target = render::OffscreenTarget::create(*context_, 160, 90, 2, VK_SAMPLE_COUNT_1_BIT);
+    ASSERT_TRUE(target) << target.error().message;
+    target_ = std::move(*target);
+    auto scene = scene::load_scene(std::string(TUTTI_SOURCE_DIR) + "/content/scenes/piano.json");
+    ASSERT_TRUE(scene) << scene.error().message;
+    ScenePlayerOptions options;
+    options.sound = false;
+    options.stage.asset_dir = TUTTI_ASSET_DIR;
+    auto player = ScenePlayer::create(*context_, *target_, *scene, options);
+    ASSERT_TRUE(player) << player.error().message;
+    player_ = std::move(*player);
+  }
+  void TearDown() override {
+    if (context_) {
+      EXPECT_TRUE(context_->wait_idle());
+    }
+    player_.reset();
+    target_.reset();
+    render::test::VulkanTest::TearDown();
+  }
+
+  std::unique_ptr<render::OffscreenTarget> target_;
+  std::unique_ptr<ScenePlayer> player_;
+};
+
+TEST_F(ScenePlayerTest, CameraModesFollowTheKeys) {
+  ScenePlayer& p = *player_;
+  ASSERT_GE(p.stage().scene.cameras.size(), 2u);
+  EXPECT_EQ(p.camera_mode(), CameraMode::director);
+  expect_same_view(p.camera(kAspect), stage::camera_at(p.stage(), p.shown_time(), kAspect));
+
+  EXPECT_TRUE(p.apply(key_action(GLFW_KEY_2, 0), 0.0, 90.0f));
+  EXPECT_EQ(p.camera_mode(), CameraMode::scene_camera);
+  EXPECT_EQ(p.camera_index(), 1u);
+  expect_same_view(p.camera(kAspect), stage::scene_camera(p.stage(), 1, kAspect));
+  EXPECT_NE(p.status_line().find("camera 2"), std::string::npos) << p.status_line();
+
+  // A camera the scene does not have: nothing changes.
+  if (p.stage().scene.cameras.size() < 9) {
+    p.apply(key_action(GLFW_KEY_9, 0), 0.0, 90.0f);
+    EXPECT_EQ(p.camera_index(), 1u);
+  }
+
+  // A drag: the free camera, starting where camera 2 is, then orbiting.
+  p.apply(drag_action(GLFW_MOUSE_BUTTON_LEFT, 0, 0.0f, 0.0f), 0.0, 90.0f);
+  EXPECT_EQ(p.camera_mode(), CameraMode::free);
+  expect_same_view(p.camera(kAspect), stage::scene_camera(p.stage(), 1, kAspect));
+  p.apply(drag_action(GLFW_MOUSE_BUTTON_LEFT, 0, 50.0f, 0.0f), 0.0, 90.0f);
+  EXPECT_NE(p.camera(kAspect).position, stage::scene_camera(p.stage(), 1, kAspect).position);
+
+  p.apply(key_action(GLFW_KEY_0, 0), 0.0, 90.0f);
+  EXPECT_EQ(p.camera_mode(), CameraMode::director);
+  EXPECT_FALSE(p.apply(key_action(GLFW_KEY_ESCAPE, 0), 0.0, 90.0f));
+}
+
+TEST_F(ScenePlayerTest, TransportFollowsTheKeys) {
+  ScenePlayer& p = *player_;
+  const double start = p.stage().start_s;
+  EXPECT_EQ(p.update(0.0), start);
+  p.apply(key_action(GLFW_KEY_SPACE, 0), 0.0, 90.0f);
+  EXPECT_TRUE(p.transport().playing());
+  EXPECT_NEAR(p.update(1.0), start + 1.0, 0.01);
+  EXPECT_DOUBLE_EQ(p.shown_time(), p.transport().time());
+  p.apply(key_action(GLFW_KEY_RIGHT, 0), 1.0, 90.0f);
+  EXPECT_NEAR(p.update(1.0), start + 6.0, 0.01);
+  p.apply(key_action(GLFW_KEY_HOME, 0), 1.0, 90.0f);
+  EXPECT_DOUBLE_EQ(p.update(1.0), start);
+  p.apply(key_action(GLFW_KEY_EQUAL, 0), 1.0, 90.0f);
+  EXPECT_DOUBLE_EQ(p.transport().tempo(), 1.1);
+  p.apply(key_action(GLFW_KEY_MINUS, 0), 1.0, 90.0f);
+  p.apply(key_action(GLFW_KEY_MINUS, 0), 1.0, 90.0f);
+  EXPECT_DOUBLE_EQ(p.transport().tempo(), 0.9);
+  EXPECT_NE(p.status_line().find("tempo 0.90"), std::string::npos) << p.status_line();
+  p.apply(key_action(GLFW_KEY_SPACE, 0), 1.0, 90.0f);
+  EXPECT_FALSE(p.transport().playing());
+  EXPECT_NE(p.status_line().find("paused"), std::string::npos) << p.status_line();
+}
+
+TEST_F(ScenePlayerTest, RecordsAFrame) {
+  ScenePlayer& p = *player_;
+  p.show(p.stage().start_s + 2.0);
+  auto frame = target_->begin_frame();
+  ASSERT_TRUE(frame) << frame.error().message;
+  ASSERT_TRUE(p.record(*frame, *target_));
+  auto id = target_->end_frame();
+  ASSERT_TRUE(id) << id.error().message;
+  std::vector<std::uint8_t> rgba;
+  ASSERT_TRUE(target_->read_pixels(*id, rgba));
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < rgba.size(); i += 4) lit += rgba[i] > 40 || rgba[i + 1] > 40;
+  EXPECT_GT(lit, rgba.size() / 4 / 10);
+  EXPECT_GT(p.renderer().last_stats().main_draws, 0u);
+}
+
+}  // namespace
+}  // namespace tutti::runtime
