@@ -5,7 +5,9 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
+#include <thread>
 
 namespace tutti::editor {
 namespace {
@@ -93,6 +95,9 @@ Status write_file_atomically(const fs::path& path, std::string_view contents,
       ::unlink(temporary.c_str());
       return failure(path, s.error().message);
     }
+  }
+  if (options.pause_before_rename_ms > 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(options.pause_before_rename_ms));
   }
   if (::rename(temporary.c_str(), path.c_str()) != 0) {
     const std::string why = errno_text();

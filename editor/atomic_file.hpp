@@ -15,6 +15,9 @@ namespace tutti::editor {
 
 struct AtomicWriteOptions {
   bool keep_backup = true;  // the replaced version becomes <file>.bak
+  // Tests only: wait this long with the new contents written and flushed but not yet renamed
+  // into place, so a test can kill the process inside a save.
+  int pause_before_rename_ms = 0;
 };
 
 // Errors name the file: "quartet.json: cannot save: Permission denied".

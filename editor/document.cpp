@@ -132,7 +132,9 @@ Status Document::redo(const Check& accept) {
 }
 
 Status Document::save() {
-  if (Status s = write_file_atomically(path_, format_scene_json(json_)); !s) return s;
+  AtomicWriteOptions options;
+  options.pause_before_rename_ms = save_pause_ms_;
+  if (Status s = write_file_atomically(path_, format_scene_json(json_), options); !s) return s;
   saved_json_ = json_;
   autosaved_json_ = json_;
   discard_autosave();

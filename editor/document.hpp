@@ -51,6 +51,8 @@ class Document {
   bool dirty() const { return !same_json(json_, saved_json_); }
 
   Status save();  // to path(), atomically, the previous version kept as <file>.bak
+  // Tests only (AtomicWriteOptions::pause_before_rename_ms).
+  void set_save_pause_ms(int ms) { save_pause_ms_ = ms; }
   // Writes the unsaved state to autosave_path() when it changed since the last autosave (or
   // removes a stale one when there is nothing unsaved).
   Status autosave();
@@ -75,6 +77,7 @@ class Document {
   std::vector<Edit> redo_;
   std::uint64_t revision_ = 0;
   bool autosave_available_ = false;
+  int save_pause_ms_ = 0;
 };
 
 }  // namespace tutti::editor

@@ -32,6 +32,17 @@ constexpr std::array<double ensemble::VariationParams::*, 7> kParamOf{
     &ensemble::VariationParams::breath_depth, &ensemble::VariationParams::cue_strength,
     &ensemble::VariationParams::head_motion};
 
+// The panels are designed in sRGB colours; the swap chain encodes linear light (the layer
+// linearises ImGui's own style the same way), so each colour is decoded once here.
+ImU32 srgb(int r, int g, int b, int a = 255) {
+  auto linear = [](int c) {
+    const float v = static_cast<float>(c) / 255.0f;
+    const float l = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+    return static_cast<int>(std::lround(l * 255.0f));
+  };
+  return IM_COL32(linear(r), linear(g), linear(b), a);
+}
+
 void record(UiState& ui, const std::string& id) {
   const ImVec2 a = ImGui::GetItemRectMin();
   const ImVec2 b = ImGui::GetItemRectMax();
@@ -183,8 +194,7 @@ void draw_hand_area(const Session& session, const UiState& ui) {
   const ImVec2 size(kInspectorWidth - 24, 150);
   ImGui::InvisibleButton("hand_area", size);
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
-                      IM_COL32(20, 22, 28, 255));
+  draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), srgb(20, 22, 28, 255));
   double lo = 1e9, hi = -1e9;
   const double t0 = ui.time_s - 2.0, t1 = ui.time_s + 4.0;
   for (const auto& side : timeline.corridors) {
@@ -204,7 +214,7 @@ void draw_hand_area(const Session& session, const UiState& ui) {
   auto py = [&](double mm) {
     return origin.y + size.y - static_cast<float>((mm - lo) / (hi - lo)) * size.y;
   };
-  const ImU32 colours[2] = {IM_COL32(90, 160, 255, 90), IM_COL32(255, 170, 80, 90)};
+  const ImU32 colours[2] = {srgb(90, 160, 255, 90), srgb(255, 170, 80, 90)};
   for (std::size_t side = 0; side < 2; ++side) {
     for (const HandCorridorView& c : timeline.corridors[side]) {
       if (c.end_s < t0 || c.start_s > t1) continue;
@@ -215,7 +225,7 @@ void draw_hand_area(const Session& session, const UiState& ui) {
   const stage::PianistSeat& seat = *session.stage().pianist;
   (void)seat;
   draw->AddLine(ImVec2(px(ui.time_s), origin.y), ImVec2(px(ui.time_s), origin.y + size.y),
-                IM_COL32(255, 255, 255, 160));
+                srgb(255, 255, 255, 160));
   ImGui::TextUnformatted("hand area: right (blue), left (orange)");
 }
 
@@ -329,25 +339,24 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
   ImGui::InvisibleButton("ruler", ImVec2(axis.x1 - axis.x0, kRulerHeight));
   record(ui, "timeline/ruler");
   if (ImGui::IsItemActive()) out.seek_s = std::clamp(mouse_t, timeline.start_s, timeline.end_s);
-  draw->AddRectFilled(ImVec2(axis.x0, y), ImVec2(axis.x1, y + kRulerHeight),
-                      IM_COL32(40, 42, 50, 255));
+  draw->AddRectFilled(ImVec2(axis.x0, y), ImVec2(axis.x1, y + kRulerHeight), srgb(40, 42, 50, 255));
   for (double t : timeline.beats_s) {
     if (!axis.visible(t, t)) continue;
     draw->AddLine(ImVec2(axis.x(t), y + kRulerHeight - 5), ImVec2(axis.x(t), y + kRulerHeight),
-                  IM_COL32(150, 150, 150, 255));
+                  srgb(150, 150, 150, 255));
   }
   for (std::size_t b = 0; b < timeline.bars_s.size(); ++b) {
     const double t = timeline.bars_s[b];
     if (!axis.visible(t, t)) continue;
     draw->AddLine(ImVec2(axis.x(t), y), ImVec2(axis.x(t), y + kRulerHeight),
-                  IM_COL32(220, 220, 220, 255));
-    draw->AddText(ImVec2(axis.x(t) + 3, y + 2), IM_COL32(220, 220, 220, 255),
+                  srgb(220, 220, 220, 255));
+    draw->AddText(ImVec2(axis.x(t) + 3, y + 2), srgb(220, 220, 220, 255),
                   std::to_string(b + 1).c_str());
   }
   y += kRulerHeight + 2;
 
   // Camera cuts.
-  draw->AddText(ImVec2(origin.x, y + 2), IM_COL32(200, 200, 200, 255), "cameras");
+  draw->AddText(ImVec2(origin.x, y + 2), srgb(200, 200, 200, 255), "cameras");
   ImGui::SetCursorScreenPos(ImVec2(axis.x0, y));
   ImGui::InvisibleButton("cameras", ImVec2(axis.x1 - axis.x0, kRowHeight));
   record(ui, "timeline/cameras");
@@ -359,14 +368,14 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
         i + 1 < timeline.shots.size() ? timeline.shots[i + 1].start_s : timeline.end_s;
     if (!axis.visible(t0, t1)) continue;
     const bool selected = ui.selection == UiState::Selection::shot && ui.selected_index == i;
-    const ImU32 fill = IM_COL32(60 + static_cast<int>(i % 4) * 30, 70, 110, 255);
+    const ImU32 fill = srgb(60 + static_cast<int>(i % 4) * 30, 70, 110, 255);
     draw->AddRectFilled(ImVec2(std::max(axis.x0, axis.x(t0)), y),
                         ImVec2(std::min(axis.x1, axis.x(t1)), y + kRowHeight), fill);
     if (selected) {
       draw->AddRect(ImVec2(axis.x(t0), y), ImVec2(axis.x(t1), y + kRowHeight),
-                    IM_COL32(255, 230, 0, 255));
+                    srgb(255, 230, 0, 255));
     }
-    draw->AddText(ImVec2(std::max(axis.x0, axis.x(t0)) + 3, y + 3), IM_COL32(255, 255, 255, 255),
+    draw->AddText(ImVec2(std::max(axis.x0, axis.x(t0)) + 3, y + 3), srgb(255, 255, 255, 255),
                   timeline.shots[i].camera.c_str());
   }
   if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
@@ -393,7 +402,7 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
   y += kRowHeight + 2;
 
   // The lead's cues.
-  draw->AddText(ImVec2(origin.x, y + 2), IM_COL32(200, 200, 200, 255),
+  draw->AddText(ImVec2(origin.x, y + 2), srgb(200, 200, 200, 255),
                 timeline.cues_automatic ? "cues (auto)" : "cues");
   ImGui::SetCursorScreenPos(ImVec2(axis.x0, y));
   ImGui::InvisibleButton("cues", ImVec2(axis.x1 - axis.x0, kRowHeight));
@@ -405,7 +414,7 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
     const bool selected = ui.selection == UiState::Selection::cue && ui.selected_index == i;
     draw->AddTriangleFilled(ImVec2(x, y + 2), ImVec2(x - 6, y + kRowHeight - 2),
                             ImVec2(x + 6, y + kRowHeight - 2),
-                            selected ? IM_COL32(255, 230, 0, 255) : IM_COL32(230, 120, 60, 255));
+                            selected ? srgb(255, 230, 0, 255) : srgb(230, 120, 60, 255));
   }
   if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
     const int i = grab(axis, timeline.cues_s, io.MousePos.x);
@@ -431,17 +440,17 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
     ImGui::PushID(static_cast<int>(l));
     const bool selected_lane = ui.selected_lane == l;
     draw->AddText(ImVec2(origin.x, y + 2),
-                  selected_lane ? IM_COL32(255, 230, 0, 255) : IM_COL32(200, 200, 200, 255),
+                  selected_lane ? srgb(255, 230, 0, 255) : srgb(200, 200, 200, 255),
                   lane.name.c_str());
     ImGui::SetCursorScreenPos(ImVec2(axis.x0, y));
     ImGui::InvisibleButton("lane", ImVec2(axis.x1 - axis.x0, kLaneHeight));
     record(ui, "timeline/lane/" + lane.name);
     draw->AddRectFilled(ImVec2(axis.x0, y), ImVec2(axis.x1, y + kLaneHeight),
-                        selected_lane ? IM_COL32(34, 36, 44, 255) : IM_COL32(26, 27, 32, 255));
+                        selected_lane ? srgb(34, 36, 44, 255) : srgb(26, 27, 32, 255));
     for (const scene::Expression& e : lane.expressions) {
       if (!axis.visible(e.start_s, e.end_s)) continue;
-      const ImU32 colour = e.kind == scene::ExpressionKind::strain ? IM_COL32(200, 60, 60, 90)
-                                                                   : IM_COL32(60, 180, 90, 90);
+      const ImU32 colour =
+          e.kind == scene::ExpressionKind::strain ? srgb(200, 60, 60, 90) : srgb(60, 180, 90, 90);
       draw->AddRectFilled(ImVec2(std::max(axis.x0, axis.x(e.start_s)), y),
                           ImVec2(std::min(axis.x1, axis.x(e.end_s)), y + kLaneHeight), colour);
     }
@@ -455,13 +464,13 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
                            (kLaneHeight - 10);
       const ImVec2 a(std::max(axis.x0, axis.x(note.start_s)), ny - 3);
       const ImVec2 b(std::min(axis.x1, std::max(axis.x(note.end_s), a.x + 2)), ny + 2);
-      ImU32 colour = note.playable ? IM_COL32(200, 200, 210, 255) : IM_COL32(200, 80, 80, 255);
+      ImU32 colour = note.playable ? srgb(200, 200, 210, 255) : srgb(200, 80, 80, 255);
       if (lane.pianist)
-        colour = note.right_hand ? IM_COL32(120, 180, 255, 255) : IM_COL32(255, 180, 100, 255);
-      if (note.pinned) colour = IM_COL32(255, 230, 0, 255);
+        colour = note.right_hand ? srgb(120, 180, 255, 255) : srgb(255, 180, 100, 255);
+      if (note.pinned) colour = srgb(255, 230, 0, 255);
       draw->AddRectFilled(a, b, colour);
       if (lane.pianist && b.x - a.x > 9 && note.finger > 0) {
-        draw->AddText(ImVec2(a.x + 1, ny - 14), IM_COL32(255, 255, 255, 220),
+        draw->AddText(ImVec2(a.x + 1, ny - 14), srgb(255, 255, 255, 220),
                       std::to_string(note.finger).c_str());
       }
       if (io.MousePos.x >= a.x && io.MousePos.x <= b.x && io.MousePos.y >= a.y - 4 &&
@@ -478,10 +487,10 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
           selected_lane && ui.selection == UiState::Selection::breath && ui.selected_index == b;
       const ImVec2 a(axis.x(breath.start_s), y + 1);
       const ImVec2 c(std::max(axis.x(breath.end_s), a.x + 3), y + kLaneHeight - 1);
-      draw->AddRectFilled(
-          a, c, breath.catch_breath ? IM_COL32(80, 140, 255, 110) : IM_COL32(80, 200, 255, 90));
+      draw->AddRectFilled(a, c,
+                          breath.catch_breath ? srgb(80, 140, 255, 110) : srgb(80, 200, 255, 90));
       if (breath.marked || selected) {
-        draw->AddRect(a, c, selected ? IM_COL32(255, 230, 0, 255) : IM_COL32(150, 230, 255, 255));
+        draw->AddRect(a, c, selected ? srgb(255, 230, 0, 255) : srgb(150, 230, 255, 255));
       }
     }
     if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
@@ -560,7 +569,7 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
   // The playhead.
   if (axis.visible(ui.time_s, ui.time_s)) {
     draw->AddLine(ImVec2(axis.x(ui.time_s), origin.y), ImVec2(axis.x(ui.time_s), y),
-                  IM_COL32(255, 80, 80, 255), 2.0f);
+                  srgb(255, 80, 80, 255), 2.0f);
   }
 
   // A drag ends: move what was grabbed to where it was let go (snapped to the beat).

@@ -12,17 +12,42 @@ Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& 
   std::unique_ptr<ScenePlayer> player(new ScenePlayer());
   auto stage = stage::build_stage(scene, options.stage);
   if (!stage) return Error{scene.source + ": " + stage.error().message};
-  player->stage_ = std::move(*stage);
-  stage::Stage& st = *player->stage_;
+  player->owned_stage_ = std::move(*stage);
+  player->stage_ = player->owned_stage_.get();
+  if (Status s = player->init(context, target, options); !s) return s.error();
+  return player;
+}
 
-  const std::vector<const model::ModelAsset*> models = st.model_list();
-  render::ModelRendererOptions renderer_options = options.renderer;
-  if (renderer_options.shadow_taps == 0) {
-    renderer_options.shadow_taps = scene.output.soft_shadows ? 4 : 1;
-  }
-  auto renderer = render::ModelRenderer::create(context, target, models, renderer_options);
+Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& context,
+                                                         const render::FrameTarget& target,
+                                                         stage::Stage& stage,
+                                                         const ScenePlayerOptions& options) {
+  std::unique_ptr<ScenePlayer> player(new ScenePlayer());
+  player->stage_ = &stage;
+  if (Status s = player->init(context, target, options); !s) return s.error();
+  return player;
+}
+
+Status ScenePlayer::make_renderer(render::VulkanContext& context,
+                                  const render::FrameTarget& target) {
+  const std::vector<const model::ModelAsset*> models = stage_->model_list();
+  if (renderer_) vkDeviceWaitIdle(context.device());  // frames in flight still read its buffers
+  renderer_.reset();
+  auto renderer = render::ModelRenderer::create(context, target, models, renderer_options_);
   if (!renderer) return renderer.error();
-  player->renderer_ = std::move(*renderer);
+  renderer_ = std::move(*renderer);
+  return Status::success();
+}
+
+Status ScenePlayer::init(render::VulkanContext& context, const render::FrameTarget& target,
+                         const ScenePlayerOptions& options) {
+  stage::Stage& st = *stage_;
+  const scene::Scene& scene = st.scene;
+  renderer_options_ = options.renderer;
+  if (renderer_options_.shadow_taps == 0) {
+    renderer_options_.shadow_taps = scene.output.soft_shadows ? 4 : 1;
+  }
+  if (Status s = make_renderer(context, target); !s) return s;
 
   TransportOptions transport_options;
   transport_options.start_s = st.start_s;
@@ -31,23 +56,62 @@ Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& 
   transport_options.sample_rate = options.sound_options.sample_rate;
   OpenAudio open_audio;
   if (options.sound) {
-    const stage::Stage* staged = player->stage_.get();
+    // The stage playing when the sound is opened (use_stage may switch it).
     const SceneSoundOptions sound_options = options.sound_options;
-    open_audio = [staged, sound_options](double tempo) {
-      return open_scene_sound(*staged, tempo, sound_options);
+    open_audio = [this, sound_options](double tempo) {
+      return open_scene_sound(*stage_, tempo, sound_options);
     };
   }
   auto transport = Transport::create(transport_options, std::move(open_audio));
   if (!transport) return transport.error();
-  player->transport_ = std::move(*transport);
+  transport_ = std::move(*transport);
 
-  player->lighting_ = stage::lighting_of(st);
+  lighting_ = stage::lighting_of(st);
   const scene::Color& bg = scene.output.background;
-  player->clear_ = {static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b),
-                    1.0f};
-  player->orbit_ = OrbitCamera::from(scene.camera_at(st.start_s));
-  player->show(st.start_s);
-  return player;
+  clear_ = {static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f};
+  orbit_ = OrbitCamera::from(scene.camera_at(st.start_s));
+  show(st.start_s);
+  return Status::success();
+}
+
+namespace {
+
+// The notes heard, as (onset, offset, key) of every score: what the sound is made from.
+bool same_sound(const stage::Stage& a, const stage::Stage& b) {
+  if (a.sounding.size() != b.sounding.size()) return false;
+  for (std::size_t s = 0; s < a.sounding.size(); ++s) {
+    const auto& x = a.sounding[s].notes;
+    const auto& y = b.sounding[s].notes;
+    if (x.size() != y.size()) return false;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (x[i].onset_s != y[i].onset_s || x[i].offset_s != y[i].offset_s ||
+          x[i].pitch != y[i].pitch || x[i].velocity != y[i].velocity) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+Status ScenePlayer::use_stage(render::VulkanContext& context, const render::FrameTarget& target,
+                              stage::Stage& stage, bool models_changed, double host_s) {
+  const bool sound_changed = !same_sound(*stage_, stage);
+  stage_ = &stage;
+  if (owned_stage_.get() != &stage) owned_stage_.reset();
+  if (models_changed) {
+    if (Status s = make_renderer(context, target); !s) return s;
+  }
+  lighting_ = stage::lighting_of(stage);
+  const scene::Color& bg = stage.scene.output.background;
+  clear_ = {static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f};
+  if (camera_index_ >= stage.scene.cameras.size()) mode_ = CameraMode::director;
+  if (sound_changed) {
+    if (Status s = transport_->reopen_sound(host_s); !s) return s;
+  }
+  show(shown_s_);
+  return Status::success();
 }
 
 double ScenePlayer::update(double host_s) {

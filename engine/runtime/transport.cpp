@@ -169,6 +169,12 @@ std::optional<LoopRange> Transport::loop() const {
 Status Transport::set_tempo(double host_s, double tempo) {
   if (Status s = check_tempo(tempo); !s) return s;
   if (tempo == options_.tempo) return Status::success();
+  return reopen(host_s, tempo);
+}
+
+Status Transport::reopen_sound(double host_s) { return reopen(host_s, options_.tempo); }
+
+Status Transport::reopen(double host_s, double tempo) {
   const bool was_playing = clock_.playing();
   const double t = clock_.time();
   std::unique_ptr<audio::LiveOutput> output;

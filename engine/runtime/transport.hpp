@@ -63,6 +63,8 @@ class Transport {
 
   // Reopens the sound at `tempo` and goes on from the same music time.
   Status set_tempo(double host_s, double tempo);
+  // Opens the sound again at the same tempo (the music it plays changed: an edit in the editor).
+  Status reopen_sound(double host_s);
 
   bool playing() const { return clock_.playing(); }
   double time() const { return clock_.time(); }
@@ -78,6 +80,7 @@ class Transport {
   std::int64_t frame_of(double score_s) const;
   void restart_device(double host_s, double score_s);
   void apply_loop();
+  Status reopen(double host_s, double tempo);
 
   TransportOptions options_;
   OpenAudio open_audio_;
