@@ -76,6 +76,10 @@ class Editor final : public ScriptHost {
       player_->transport().pause(now());
     }
   }
+  void select(PlayerRef player) override {
+    // Lanes: the brass players in scene order, then the pianist.
+    ui_.selected_lane = player.pianist ? session_->timeline().lanes.size() - 1 : player.performer;
+  }
   Status draw_frames(int count) override {
     for (int i = 0; i < count; ++i) {
       if (Status s = frame(); !s) return s;

@@ -26,6 +26,7 @@ const std::map<std::string, Action>& actions() {
       {"add-expression", {4, 5, "add-expression PERFORMER strain|relaxed START END [AMOUNT]"}},
       {"cut", {2, 2, "cut CAMERA TIME"}},
       {"pin", {3, 3, "pin TIME KEY FINGER"}},
+      {"select", {1, 1, "select PERFORMER|pianist"}},
       {"undo", {0, 0, "undo"}},
       {"redo", {0, 0, "redo"}},
       {"seek", {1, 1, "seek TIME"}},
@@ -217,6 +218,12 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     return edit_result(
         session.apply(pin_finger(json, number(command, 1), static_cast<int>(number(command, 2)),
                                  static_cast<int>(number(command, 3)))));
+  }
+  if (action == "select") {
+    auto player = who(1);
+    if (!player) return player.error();
+    host.select(*player);
+    return ScriptStep::next;
   }
   if (action == "undo") return edit_result(session.undo());
   if (action == "redo") return edit_result(session.redo());

@@ -12,6 +12,7 @@
 //   cut close 12.5                                a camera cut to camera "close" at 12.5 s
 //   pin 1.5 64 3                                  the pianist plays key 64 at 1.5 s with finger 3
 //   undo | redo
+//   select "Trombone 1"                           show that player in the inspector (or pianist)
 //   seek 12.0 | play | pause | frames 30          the transport; draw 30 frames
 //   screenshot out.png
 //   save
@@ -49,6 +50,7 @@ class ScriptHost {
   virtual ~ScriptHost() = default;
   virtual void seek(double t_s) = 0;
   virtual void set_playing(bool playing) = 0;
+  virtual void select(PlayerRef player) = 0;
   virtual Status draw_frames(int count) = 0;
   virtual Status screenshot(const std::filesystem::path& png) = 0;
 };

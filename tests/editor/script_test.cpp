@@ -15,6 +15,9 @@ struct RecordingHost : ScriptHost {
   std::vector<std::string> calls;
   void seek(double t) override { calls.push_back("seek " + std::to_string(t)); }
   void set_playing(bool playing) override { calls.push_back(playing ? "play" : "pause"); }
+  void select(PlayerRef player) override {
+    calls.push_back("select " + std::to_string(player.pianist ? -1 : int(player.performer)));
+  }
   Status draw_frames(int count) override {
     calls.push_back("frames " + std::to_string(count));
     return Status::success();
@@ -69,13 +72,14 @@ TEST(Script, EditsSaveAndQuit) {
   EXPECT_NE(step.error().message.find("s.txt:4: quartet.json: /shots/"), std::string::npos)
       << "no camera of that name: " << step.error().message;
 
-  auto fixed = parse_script("cut wide 12.5\nseek 12\nframes 3\nscreenshot x.png\nquit\n", "s.txt");
+  auto fixed = parse_script(
+      "cut wide 12.5\nselect \"Trombone 2\"\nseek 12\nframes 3\nscreenshot x.png\nquit\n", "s.txt");
   ASSERT_TRUE(fixed);
   step = run_all(*fixed, **session, host);
   ASSERT_FALSE(step);
-  EXPECT_EQ(step.error().message, "s.txt:5: unsaved changes (save first, or quit-discarding)");
-  EXPECT_EQ(host.calls,
-            (std::vector<std::string>{"seek 12.000000", "frames 3", "screenshot x.png"}));
+  EXPECT_EQ(step.error().message, "s.txt:6: unsaved changes (save first, or quit-discarding)");
+  EXPECT_EQ(host.calls, (std::vector<std::string>{"select 3", "seek 12.000000", "frames 3",
+                                                  "screenshot x.png"}));
 
   auto finish = parse_script("save\nquit\n", "s.txt");
   ASSERT_TRUE(finish);
