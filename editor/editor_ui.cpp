@@ -222,11 +222,20 @@ void draw_hand_area(const Session& session, const UiState& ui) {
                           colours[side]);
     }
   }
-  const stage::PianistSeat& seat = *session.stage().pianist;
-  (void)seat;
+  const ImU32 path_colours[2] = {srgb(150, 200, 255), srgb(255, 200, 140)};
+  for (std::size_t side = 0; side < 2; ++side) {
+    const auto& path = timeline.hand_path[side];
+    const auto first =
+        std::lower_bound(path.begin(), path.end(), t0,
+                         [](const std::array<double, 2>& p, double t) { return p[0] < t; });
+    for (auto it = first; it != path.end() && it + 1 != path.end() && (*it)[0] < t1; ++it) {
+      draw->AddLine(ImVec2(px((*it)[0]), py((*it)[1])),
+                    ImVec2(px((*(it + 1))[0]), py((*(it + 1))[1])), path_colours[side], 2.0f);
+    }
+  }
   draw->AddLine(ImVec2(px(ui.time_s), origin.y), ImVec2(px(ui.time_s), origin.y + size.y),
                 srgb(255, 255, 255, 160));
-  ImGui::TextUnformatted("hand area: right (blue), left (orange)");
+  ImGui::TextUnformatted("allowed hand positions and the path: right blue, left orange");
 }
 
 void draw_inspector(Session& session, UiState& ui) {
@@ -299,7 +308,7 @@ int grab(const TimeAxis& axis, const std::vector<double>& times, float px) {
   return best;
 }
 
-enum DragKind { kDragShot = 0, kDragCue = 1, kDragBreath = 2 };
+enum DragKind { kDragShot = 0, kDragCue = 1, kDragBreath = 2, kDragExpression = 3 };
 
 void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -519,6 +528,9 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
           if (mouse_t >= lane.expressions[i].start_s && mouse_t <= lane.expressions[i].end_s) {
             ui.selection = UiState::Selection::expression;
             ui.selected_index = i;
+            ui.drag_kind = kDragExpression;
+            ui.drag_index = i;
+            ui.drag_from_s = mouse_t;
           }
         }
       }
@@ -580,6 +592,14 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
         apply(session, ui, move_shot(session.document().json(), ui.drag_index, to));
       } else if (ui.drag_kind == kDragCue) {
         apply(session, ui, move_cue(session.document().json(), timeline.cues_s, ui.drag_index, to));
+      } else if (ui.drag_kind == kDragExpression && ui.selected_lane < timeline.lanes.size() &&
+                 ui.drag_index < timeline.lanes[ui.selected_lane].expressions.size()) {
+        // The span moves with the pointer; its start lands on a beat when near one.
+        const TimelineLane& lane = timeline.lanes[ui.selected_lane];
+        const scene::Expression& e = lane.expressions[ui.drag_index];
+        const double start =
+            snap_to_beat(timeline, e.start_s + (mouse_t - ui.drag_from_s), axis.length_s / 150.0);
+        apply(session, ui, move_expression(session.document().json(), lane.performer, e, start));
       } else if (ui.drag_kind == kDragBreath && ui.selected_lane < timeline.lanes.size()) {
         apply(session, ui,
               move_breath(session.document().json(), timeline.lanes[ui.selected_lane].performer,

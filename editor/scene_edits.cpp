@@ -318,6 +318,26 @@ Result<Edit> delete_expression(const Json& document, std::size_t performer,
   return edit;
 }
 
+Result<Edit> move_expression(const Json& document, std::size_t performer,
+                             const scene::Expression& expression, double new_start_s) {
+  auto object = player_json(document, {false, performer});
+  if (!object) return object.error();
+  Json list = (*object)->contains("expressions") ? (**object)["expressions"] : Json::array();
+  const auto it = std::find_if(list.begin(), list.end(),
+                               [&](const Json& item) { return same_expression(item, expression); });
+  if (it == list.end()) return Error{"no such expression"};
+  scene::Expression moved = expression;
+  moved.start_s = new_start_s;
+  moved.end_s = new_start_s + (expression.end_s - expression.start_s);
+  *it = expression_json(moved);
+  Edit edit;
+  edit.label = "move \"" + std::string(scene::expression_name(expression.kind)) + "\" of " +
+               player_name(**object, {false, performer}) + " to " + seconds(new_start_s);
+  edit.changes.push_back(
+      replace(**object, player_pointer({false, performer}), "expressions", std::move(list)));
+  return edit;
+}
+
 Result<Edit> add_shot(const Json& document, std::string_view camera, double start_s) {
   auto shots = shot_list(document);
   if (!shots) return shots.error();

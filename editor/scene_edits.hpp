@@ -56,6 +56,10 @@ Result<Edit> add_expression(const Json& document, std::size_t performer,
 Result<Edit> delete_expression(const Json& document, std::size_t performer,
                                const scene::Expression& expression);
 
+// The same span, starting at new_start_s instead (its length kept).
+Result<Edit> move_expression(const Json& document, std::size_t performer,
+                             const scene::Expression& expression, double new_start_s);
+
 // Camera cuts: a shot of `camera` from start_s (a scene without "shots" gets the implicit first
 // one written out).
 Result<Edit> add_shot(const Json& document, std::string_view camera, double start_s);

@@ -5,6 +5,7 @@
 
 #include "brass_motion/plan_brass_player.hpp"
 #include "ensemble_variation/ensemble_plan.hpp"
+#include "finger_motion/finger_pose_system.hpp"
 #include "music/meter.hpp"
 
 namespace tutti::editor {
@@ -104,6 +105,16 @@ Timeline build_timeline(const stage::Stage& stage) {
     for (std::size_t side = 0; side < 2; ++side) {
       for (const piano::HandCorridor& c : hands[side]->corridors) {
         out.corridors[side].push_back({c.start_s, c.end_s, c.lo_mm, c.hi_mm});
+      }
+    }
+    if (const auto& motion = stage.pianist->motion) {
+      const motion::HandPath* paths[2] = {&motion->right_path, &motion->left_path};
+      for (std::size_t side = 0; side < 2; ++side) {
+        if (paths[side]->empty()) continue;
+        for (double t = paths[side]->start_s(); t <= paths[side]->end_s() + 1e-9;
+             t += kHandPathStep_s) {
+          out.hand_path[side].push_back({t, motion::evaluate(*paths[side], t).x_mm});
+        }
       }
     }
   }

@@ -63,7 +63,11 @@ struct Timeline {
   };
   std::vector<Shot> shots;
   std::array<std::vector<HandCorridorView>, 2> corridors;  // pianist: right, left
+  // The planned hand path through them, sampled every kHandPathStep_s: (time, keyboard x mm).
+  std::array<std::vector<std::array<double, 2>>, 2> hand_path;
 };
+
+inline constexpr double kHandPathStep_s = 0.02;
 
 Timeline build_timeline(const stage::Stage& stage);
 

@@ -71,6 +71,10 @@ TEST_F(SceneEdits, Expressions) {
   ASSERT_EQ(scene().performers[0].expressions.size(), 2u);
   EXPECT_EQ(scene().performers[0].expressions[0], relaxed);  // in start order
   EXPECT_EQ(scene().performers[0].expressions[1], strain);
+  apply(move_expression(doc_->json(), 0, strain, 5.0));
+  const scene::Expression moved{scene::ExpressionKind::strain, 5.0, 7.0, 0.8};
+  EXPECT_EQ(scene().performers[0].expressions[1], moved) << "the same length, later";
+  ASSERT_TRUE(doc_->undo());
   apply(delete_expression(doc_->json(), 0, strain));
   EXPECT_EQ(scene().performers[0].expressions, std::vector<scene::Expression>{relaxed});
   EXPECT_FALSE(delete_expression(doc_->json(), 0, strain));

@@ -75,6 +75,17 @@ TEST(Session, PinningAFingerReplansTheFingering) {
   EXPECT_EQ(s.timeline().lanes.back().notes[12].finger, finger);
   EXPECT_TRUE(s.timeline().lanes.back().notes[12].pinned);
   EXPECT_FALSE(s.timeline().corridors[0].empty());
+  // The hand's path, as the panel draws it, keeps to the allowed areas.
+  int inside = 0, samples = 0;
+  for (const auto& [t, x] : s.timeline().hand_path[0]) {
+    for (const HandCorridorView& c : s.timeline().corridors[0]) {
+      if (t < c.start_s || t > c.end_s) continue;
+      ++samples;
+      inside += x >= c.lo_mm - 1.0 && x <= c.hi_mm + 1.0 ? 1 : 0;
+    }
+  }
+  ASSERT_GT(samples, 100);
+  EXPECT_GE(inside, samples * 95 / 100) << inside << " of " << samples;
   // A pin on a note that is not there: the planner refuses it, nothing changes.
   const std::uint64_t revision = s.document().revision();
   const Status wrong = s.apply(pin_finger(s.document().json(), note.start_s + 0.3333, 20, 1));
