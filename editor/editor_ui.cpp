@@ -400,10 +400,11 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
       ui.selected_index = scene.shot_at(mouse_t);
     }
   }
+  if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) ui.context_s = snapped_t;
   if (ImGui::BeginPopupContextItem("cut_popup")) {
     for (const scene::Camera& camera : scene.cameras) {
       if (ImGui::MenuItem(("Cut to " + camera.name + " here").c_str())) {
-        apply(session, ui, add_shot(session.document().json(), camera.name, snapped_t));
+        apply(session, ui, add_shot(session.document().json(), camera.name, ui.context_s));
       }
     }
     ImGui::EndPopup();
@@ -435,9 +436,10 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
       ui.drag_from_s = timeline.cues_s[static_cast<std::size_t>(i)];
     }
   }
+  if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) ui.context_s = snapped_t;
   if (ImGui::BeginPopupContextItem("cue_popup")) {
     if (ImGui::MenuItem("Cue here")) {
-      apply(session, ui, add_cue(session.document().json(), timeline.cues_s, snapped_t));
+      apply(session, ui, add_cue(session.document().json(), timeline.cues_s, ui.context_s));
     }
     ImGui::EndPopup();
   }
@@ -535,23 +537,28 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
         }
       }
     }
+    if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) ui.context_s = snapped_t;
     if (!lane.pianist && ImGui::BeginPopupContextItem("lane_popup")) {
       const double bar =
           timeline.beats_s.size() > 4 ? 4 * (timeline.beats_s[1] - timeline.beats_s[0]) : 2.0;
-      if (ImGui::MenuItem("Breathe here")) {
+      const bool breathe = ImGui::MenuItem("Breathe here");
+      record(ui, "lane_popup/breathe");
+      if (breathe) {
         apply(session, ui,
               add_breath(session.document().json(), lane.performer,
-                         session.breath_boundary(lane.performer, snapped_t)));
+                         session.breath_boundary(lane.performer, ui.context_s)));
       }
       if (ImGui::MenuItem("Strain from here (one bar)")) {
-        apply(session, ui,
-              add_expression(session.document().json(), lane.performer,
-                             {scene::ExpressionKind::strain, snapped_t, snapped_t + bar, 1.0}));
+        apply(
+            session, ui,
+            add_expression(session.document().json(), lane.performer,
+                           {scene::ExpressionKind::strain, ui.context_s, ui.context_s + bar, 1.0}));
       }
       if (ImGui::MenuItem("Relaxed from here (one bar)")) {
         apply(session, ui,
-              add_expression(session.document().json(), lane.performer,
-                             {scene::ExpressionKind::relaxed, snapped_t, snapped_t + bar, 1.0}));
+              add_expression(
+                  session.document().json(), lane.performer,
+                  {scene::ExpressionKind::relaxed, ui.context_s, ui.context_s + bar, 1.0}));
       }
       ImGui::EndPopup();
     }

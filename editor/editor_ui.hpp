@@ -53,6 +53,7 @@ struct UiState {
   double drag_from_s = 0.0;
   bool drag_marked = false;  // a breath there only because of its mark
   std::size_t pin_note = 0;  // the pianist's note whose finger popup is open
+  double context_s = 0.0;    // where the open context menu was asked for (snapped)
   std::vector<PendingAction> pending;
 };
 

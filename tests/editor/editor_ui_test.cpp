@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <cmath>
+
 #include "editor_test_support.hpp"
 
 namespace tutti::editor {
@@ -114,6 +116,53 @@ TEST_F(EditorUi, ClickingTheRulerSeeks) {
   frame(s);
   ASSERT_TRUE(pressed.seek_s.has_value());
   EXPECT_NEAR(*pressed.seek_s, 10.0, 0.05);
+}
+
+// Right-click a lane where the music is legato, choose "Breathe here": a breath mark at the next
+// note; click the new breath, press Delete: gone again.
+TEST_F(EditorUi, ALanesMenuAddsABreathAndDeleteRemovesIt) {
+  auto session = Session::open(dir_.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  ui_.view_start_s = 0.0;
+  ui_.view_length_s = 20.0;
+  frame(s);
+  const WidgetBox lane = widget("timeline/lane/Trombone 1");
+  const auto x_of = [&](double t) {
+    return lane.x0 + static_cast<float>(t / 20.0) * (lane.x1 - lane.x0);
+  };
+  const float y = (lane.y0 + lane.y1) / 2;
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(x_of(6.3), y);  // inside a note, 0.37 s before the next (legato) one
+  frame(s);
+  io.MouseDown[1] = true;
+  frame(s);
+  io.MouseDown[1] = false;
+  frame(s);
+  frame(s);
+  const WidgetBox item = widget("lane_popup/breathe");
+  click(s, (item.x0 + item.x1) / 2, (item.y0 + item.y1) / 2);
+  const auto& marks = s.document().scene().performers[2].breaths.add_s;
+  ASSERT_EQ(marks.size(), 1u) << ui_.status;
+  const double boundary = s.breath_boundary(2, 6.3);
+  EXPECT_DOUBLE_EQ(marks[0], boundary) << "the mark names the next note, where it was asked for";
+  const TimelineBreath* added = nullptr;
+  for (const TimelineBreath& b : s.timeline().lanes[2].breaths) {
+    if (std::abs(b.boundary_s - boundary) < 1e-6) added = &b;
+  }
+  ASSERT_NE(added, nullptr);
+  EXPECT_TRUE(added->marked);
+
+  click(s, x_of(added->boundary_s), y);  // select it
+  EXPECT_EQ(ui_.selection, UiState::Selection::breath);
+  io.KeysDown[ImGuiKey_Delete] = true;
+  frame(s);
+  io.KeysDown[ImGuiKey_Delete] = false;
+  frame(s);
+  EXPECT_TRUE(s.document().scene().performers[2].breaths.add_s.empty()) << ui_.status;
+  EXPECT_TRUE(s.document().scene().performers[2].breaths.remove_s.empty())
+      << "a marked breath leaves no remove mark behind";
+  EXPECT_EQ(s.document().history().size(), 2u);
 }
 
 TEST_F(EditorUi, QuittingWithUnsavedChangesAsksFirst) {
