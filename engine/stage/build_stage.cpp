@@ -244,10 +244,16 @@ std::string brass_plan_key(const scene::Scene& scene, const scene::Performer& pe
          "|" + times_key(performer.breaths.remove_s);
 }
 
-// Everything the pianist's plan depends on.
-std::string pianist_plan_key(const scene::Scene& scene, const scene::Pianist& pianist) {
+// What the pianist's fingering without the scene's pins depends on.
+std::string pianist_base_key(const scene::Scene& scene, const scene::Pianist& pianist) {
   std::string key = scene.music[pianist.music_file].string() + "|" + pianist.hand_size + "|";
   for (const std::string& part : pianist.parts) key += part + ",";
+  return key;
+}
+
+// Everything the pianist's plan depends on.
+std::string pianist_plan_key(const scene::Scene& scene, const scene::Pianist& pianist) {
+  std::string key = pianist_base_key(scene, pianist);
   char text[64];
   for (const scene::FingerPin& pin : pianist.pins) {
     std::snprintf(text, sizeof text, "|%.17g:%d:%d", pin.time_s, pin.key, pin.finger);
@@ -496,43 +502,69 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
   for (const music::Note& note : full.notes) {
     if (played[static_cast<std::size_t>(note.part)]) score.notes.push_back(note);
   }
+  // The editor's pins act locally: the fingering without them (the file's own marks are pins
+  // there too) is planned once, then only the span around the pinned notes is searched again
+  // (piano::replan_score_locally). A pure function of the score and the pins, so the editor and
+  // `tutti render` get the same fingering whatever order the pins were placed in.
+  const music::Score unpinned = score;
   if (Status s = apply_finger_pins(stage.scene, pianist, score); !s) return s.error();
+  std::vector<int> pinned_notes;
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    if (score.notes[i].finger != unpinned.notes[i].finger)
+      pinned_notes.push_back(static_cast<int>(i));
+  }
   auto model = piano::load_fingering_model("default", pianist.hand_size, content_dir);
   if (!model) return model.error();
+  const std::string base_key = pianist_base_key(stage.scene, pianist);
   const std::string plan_key = pianist_plan_key(stage.scene, pianist);
   const Stage* reuse = cache.reused();
-  const PianistSeat* previous = reuse != nullptr && reuse->pianist &&
-                                        reuse->pianist->plan_key == plan_key && reuse->pianist->motion
-                                    ? reuse->pianist.get()
-                                    : nullptr;
+  const PianistSeat* previous = reuse != nullptr && reuse->pianist ? reuse->pianist.get() : nullptr;
   std::shared_ptr<const finger_motion::PianistMotion> motion;
   piano::ScorePlan fingering;
+  piano::ScorePlan base;
   std::vector<std::string> plan_notes;
-  if (previous != nullptr) {
+  if (previous != nullptr && previous->plan_key == plan_key && previous->motion) {
     motion = previous->motion;
     fingering = previous->fingering;
+    base = previous->base_fingering;
     plan_notes = previous->plan_notes;
   } else {
-    auto performance = performance::plan_performance(score, *model);
-    if (!performance) return performance.error();
+    if (previous != nullptr && previous->base_key == base_key) {
+      base = previous->base_fingering;
+    } else {
+      auto planned = piano::plan_score(unpinned, *model);
+      if (!planned) return planned.error();
+      base = std::move(*planned);
+      stage.replanned.push_back("pianist fingering");
+    }
+    fingering = base;
+    if (!pinned_notes.empty()) {
+      piano::ScoreReplanSpan span;
+      auto replanned = piano::replan_score_locally(score, *model, {}, base, pinned_notes, &span);
+      if (!replanned) return replanned.error();
+      fingering = std::move(*replanned);
+      stage.replanned.push_back("pianist fingering around the pins (" +
+                                std::to_string(span.searched_events) + " of " +
+                                std::to_string(span.event_count) + " events)");
+    }
+    performance::PianoPerformancePlan performance = performance::plan_performance_paths(fingering);
     for (const performance::HandReport* hand :
-         {&performance->report.right, &performance->report.left}) {
+         {&performance.report.right, &performance.report.left}) {
       if (!hand->path_error.empty()) plan_notes.push_back("pianist: " + hand->path_error);
     }
     auto params = finger_motion::load_finger_motion_params(
         finger_motion::finger_motion_params_path(content_dir));
     if (!params) return params.error();
-    auto fingers = finger_motion::plan_finger_motion(
-        score, performance->fingering, performance->right_path, performance->left_path,
-        model->keyboard, model->hand, *params);
+    auto fingers = finger_motion::plan_finger_motion(score, performance.fingering,
+                                                     performance.right_path, performance.left_path,
+                                                     model->keyboard, model->hand, *params);
     if (!fingers) return fingers.error();
-    auto planned = std::make_shared<finger_motion::PianistMotion>();
-    planned->fingers = std::move(*fingers);
-    planned->right_path = std::move(performance->right_path);
-    planned->left_path = std::move(performance->left_path);
-    motion = std::move(planned);
-    fingering = std::move(performance->fingering);
-    stage.replanned.push_back("pianist");
+    auto planned_motion = std::make_shared<finger_motion::PianistMotion>();
+    planned_motion->fingers = std::move(*fingers);
+    planned_motion->right_path = std::move(performance.right_path);
+    planned_motion->left_path = std::move(performance.left_path);
+    motion = std::move(planned_motion);
+    stage.replanned.push_back("pianist motion");
   }
   stage.notes.insert(stage.notes.end(), plan_notes.begin(), plan_notes.end());
 
@@ -541,6 +573,8 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
   seat->score = std::move(score);
   seat->motion = motion;
   seat->plan_key = plan_key;
+  seat->base_key = base_key;
+  seat->base_fingering = std::move(base);
   seat->plan_notes = std::move(plan_notes);
   seat->pianist = stage.world.create();
   stage.world.add<components::Performer>(seat->pianist,

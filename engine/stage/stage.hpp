@@ -122,6 +122,10 @@ struct PianistSeat {
   piano::ScorePlan fingering;
   std::shared_ptr<const finger_motion::PianistMotion> motion;
   std::string plan_key;  // parts, music, hand size, pins: as BrassSeat::plan_key
+  // The fingering before the scene's pins (the file's own marks pinned) and what it depends on:
+  // pins re-plan only the span around them from it.
+  piano::ScorePlan base_fingering;
+  std::string base_key;
   std::vector<std::string> plan_notes;
   ecs::Entity pianist = ecs::Entity::null;
   std::array<ecs::Entity, 2> hands{ecs::Entity::null, ecs::Entity::null};  // right, left

@@ -45,15 +45,10 @@ motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
   return result;
 }
 
-Result<PianoPerformancePlan> plan_performance(const music::Score& score,
-                                              const piano::FingeringModel& model,
-                                              const PerformanceOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  auto fingering = piano::plan_score(score, model, options.fingering);
-  if (!fingering) return fingering.error();
+PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
+                                            const PerformanceOptions& options) {
   PianoPerformancePlan plan;
-  plan.fingering = std::move(*fingering);
-  plan.report.fingering_ms = ms_since(start);
+  plan.fingering = std::move(fingering);
   plan.report.smoothing = options.path.smoothing;
 
   HandReport& right = plan.report.right;
@@ -67,6 +62,18 @@ Result<PianoPerformancePlan> plan_performance(const music::Score& score,
   left.notes = plan.fingering.left_notes.size();
   left.diagnostics = plan.fingering.left.diagnostics.size();
   plan.left_path = plan_hand_motion(plan.fingering.left.corridors, options, left);
+  return plan;
+}
+
+Result<PianoPerformancePlan> plan_performance(const music::Score& score,
+                                              const piano::FingeringModel& model,
+                                              const PerformanceOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto fingering = piano::plan_score(score, model, options.fingering);
+  if (!fingering) return fingering.error();
+  const double fingering_ms = ms_since(start);
+  PianoPerformancePlan plan = plan_performance_paths(std::move(*fingering), options);
+  plan.report.fingering_ms = fingering_ms;
   return plan;
 }
 

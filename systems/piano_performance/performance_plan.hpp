@@ -59,6 +59,11 @@ Result<PianoPerformancePlan> plan_performance(const music::Score& score,
                                               const piano::FingeringModel& model,
                                               const PerformanceOptions& options = {});
 
+// The hands' paths (repair + path + reports) for a fingering planned already, e.g. by
+// piano::replan_score_locally after a pin. report.fingering_ms is 0.
+PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
+                                            const PerformanceOptions& options = {});
+
 // One hand's repair + path + reports, from its corridors (exposed for tests and tools).
 motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
                                   const PerformanceOptions& options, HandReport& report);

@@ -74,6 +74,11 @@ TEST(Session, PinningAFingerReplansTheFingering) {
   ASSERT_TRUE(s.apply(pin_finger(s.document().json(), note.start_s, note.key, finger)));
   EXPECT_EQ(s.timeline().lanes.back().notes[12].finger, finger);
   EXPECT_TRUE(s.timeline().lanes.back().notes[12].pinned);
+  // Only the span around the pin was searched again; the unpinned fingering was shared.
+  ASSERT_EQ(s.stage().replanned.size(), 2u);
+  EXPECT_EQ(s.stage().replanned[0].rfind("pianist fingering around the pins (", 0), 0u)
+      << s.stage().replanned[0];
+  EXPECT_EQ(s.stage().replanned[1], "pianist motion");
   EXPECT_FALSE(s.timeline().corridors[0].empty());
   // The hand's path, as the panel draws it, keeps to the allowed areas.
   int inside = 0, samples = 0;
