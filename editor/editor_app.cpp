@@ -130,7 +130,7 @@ class Editor final : public ScriptHost {
 void Editor::follow_replans() {
   if (session_->stage_revision() == shown_revision_) return;
   shown_revision_ = session_->stage_revision();
-  if (Status s = player_->use_stage(*context_, *target_, session_->stage(),
+  if (Status s = player_->use_stage(*context_, *target_, session_->shared_stage(),
                                     session_->models_changed(), now());
       !s) {
     ui_.status = s.error().message;
@@ -247,7 +247,7 @@ int Editor::run() {
   player_options.sound_options.sound_font = options_.soundfont;
   player_options.sound_options.driver = options_.audio_driver;
   auto player =
-      runtime::ScenePlayer::create(*context_, *target_, session_->stage(), player_options);
+      runtime::ScenePlayer::create(*context_, *target_, session_->shared_stage(), player_options);
   if (!player) return fail(player.error().message);
   player_ = std::move(*player);
   shown_revision_ = session_->stage_revision();

@@ -25,6 +25,8 @@ class Session {
   Document& document() { return document_; }
   stage::Stage& stage() { return *stage_; }
   const stage::Stage& stage() const { return *stage_; }
+  // The same stage, shared: a player keeps the one it shows alive while the session re-plans.
+  std::shared_ptr<stage::Stage> shared_stage() const { return stage_; }
   const Timeline& timeline() const { return timeline_; }
 
   // `coalesce`: merge with the previous edit of the same thing (one undo step per slider drag).
@@ -52,7 +54,7 @@ class Session {
 
   Document document_;
   stage::StageOptions options_;
-  std::unique_ptr<stage::Stage> stage_;
+  std::shared_ptr<stage::Stage> stage_;
   std::unique_ptr<stage::Stage> next_;
   Timeline timeline_;
   std::uint64_t stage_revision_ = 0;

@@ -20,10 +20,11 @@ Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& 
 
 Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& context,
                                                          const render::FrameTarget& target,
-                                                         stage::Stage& stage,
+                                                         std::shared_ptr<stage::Stage> stage,
                                                          const ScenePlayerOptions& options) {
   std::unique_ptr<ScenePlayer> player(new ScenePlayer());
-  player->stage_ = &stage;
+  player->stage_ = stage.get();
+  player->owned_stage_ = std::move(stage);
   if (Status s = player->init(context, target, options); !s) return s.error();
   return player;
 }
@@ -96,10 +97,12 @@ bool same_sound(const stage::Stage& a, const stage::Stage& b) {
 }  // namespace
 
 Status ScenePlayer::use_stage(render::VulkanContext& context, const render::FrameTarget& target,
-                              stage::Stage& stage, bool models_changed, double host_s) {
+                              std::shared_ptr<stage::Stage> next, bool models_changed,
+                              double host_s) {
+  stage::Stage& stage = *next;
   const bool sound_changed = !same_sound(*stage_, stage);
   stage_ = &stage;
-  if (owned_stage_.get() != &stage) owned_stage_.reset();
+  owned_stage_ = std::move(next);  // the previous stage may go now
   if (models_changed) {
     if (Status s = make_renderer(context, target); !s) return s;
   }

@@ -49,17 +49,17 @@ class ScenePlayer {
                                                      const render::FrameTarget& target,
                                                      const scene::Scene& scene,
                                                      const ScenePlayerOptions& options = {});
-  // Plays a stage planned and owned elsewhere (the editor's session); `options.stage` unused.
-  // The stage must outlive the player, or be replaced first with use_stage().
+  // Plays a stage planned elsewhere (the editor's session); `options.stage` unused. The player
+  // shares it, so it lives until the player has moved on to another (use_stage).
   static Result<std::unique_ptr<ScenePlayer>> create(render::VulkanContext& context,
                                                      const render::FrameTarget& target,
-                                                     stage::Stage& stage,
+                                                     std::shared_ptr<stage::Stage> stage,
                                                      const ScenePlayerOptions& options = {});
   // Switches to another stage of the same scene (re-planned after an edit), keeping the time,
   // the camera and the transport. `models_changed`: its models are not the ones the renderer
   // was made for (it is made again). The sound is opened again when what is heard changed.
   Status use_stage(render::VulkanContext& context, const render::FrameTarget& target,
-                   stage::Stage& stage, bool models_changed, double host_s);
+                   std::shared_ptr<stage::Stage> stage, bool models_changed, double host_s);
 
   // The transport's time at host_s, and the stage posed there. Returns the music time.
   double update(double host_s);
@@ -99,7 +99,7 @@ class ScenePlayer {
               const ScenePlayerOptions& options);
   Status make_renderer(render::VulkanContext& context, const render::FrameTarget& target);
 
-  std::unique_ptr<stage::Stage> owned_stage_;  // null when the stage is someone else's
+  std::shared_ptr<stage::Stage> owned_stage_;  // what stage_ points into, kept alive
   stage::Stage* stage_ = nullptr;
   render::ModelRendererOptions renderer_options_;
   std::unique_ptr<render::ModelRenderer> renderer_;

@@ -129,10 +129,11 @@ TEST(Session, AnEditReplansOnlyWhatItTouches) {
   ASSERT_NE(marked, breaths.end()) << "the mark made a breath at " << boundary;
   EXPECT_TRUE(marked->marked);
   EXPECT_TRUE(marked->catch_breath) << "legato: a catch-breath";
+  const bool marked_only = marked->marked;  // the timeline is replaced by the next edit
   ASSERT_TRUE(s.apply(set_variation(s.document().json(), {false, 0}, "sway_amount", 0.1)));
   EXPECT_EQ(s.stage().replanned, std::vector<std::string>{"ensemble"});
   // Deleting the marked breath leaves no mark behind.
-  ASSERT_TRUE(s.apply(delete_breath(s.document().json(), 2, boundary, marked->marked)));
+  ASSERT_TRUE(s.apply(delete_breath(s.document().json(), 2, boundary, marked_only)));
   EXPECT_FALSE(s.document().json()["performers"][2].contains("breaths"));
 }
 
