@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "editor_test_support.hpp"
@@ -163,6 +164,40 @@ TEST_F(EditorUi, ALanesMenuAddsABreathAndDeleteRemovesIt) {
   EXPECT_TRUE(s.document().scene().performers[2].breaths.remove_s.empty())
       << "a marked breath leaves no remove mark behind";
   EXPECT_EQ(s.document().history().size(), 2u);
+}
+
+// Drag a camera cut along the cameras row and drop it on a beat: the shot starts there.
+TEST_F(EditorUi, DraggingACutMovesIt) {
+  auto session = Session::open(dir_.copy_scene("quartet.json"));
+  ASSERT_TRUE(session) << session.error().message;
+  Session& s = **session;
+  ui_.view_start_s = 0.0;
+  ui_.view_length_s = 20.0;
+  frame(s);
+  const WidgetBox row = widget("timeline/cameras");
+  const auto x_of = [&](double t) {
+    return row.x0 + static_cast<float>(t / 20.0) * (row.x1 - row.x0);
+  };
+  const float y = (row.y0 + row.y1) / 2;
+  const double from = s.document().scene().shots[1].start_s;  // 3.5 s
+  const auto beat = std::find_if(s.timeline().beats_s.begin(), s.timeline().beats_s.end(),
+                                 [](double t) { return t > 5.0; });
+  ASSERT_NE(beat, s.timeline().beats_s.end());
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(x_of(from), y);
+  frame(s);
+  io.MouseDown[0] = true;
+  frame(s);
+  for (double t = from; t < *beat; t += 0.25) {
+    io.MousePos = ImVec2(x_of(t), y);
+    frame(s);
+  }
+  io.MousePos = ImVec2(x_of(*beat) + 1.0f, y);  // a pixel off: it snaps onto the beat
+  frame(s);
+  io.MouseDown[0] = false;
+  frame(s);
+  EXPECT_DOUBLE_EQ(s.document().scene().shots[1].start_s, *beat) << ui_.status;
+  EXPECT_EQ(s.document().history().size(), 1u);
 }
 
 TEST_F(EditorUi, QuittingWithUnsavedChangesAsksFirst) {
