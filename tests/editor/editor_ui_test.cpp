@@ -180,23 +180,24 @@ TEST_F(EditorUi, DraggingACutMovesIt) {
   };
   const float y = (row.y0 + row.y1) / 2;
   const double from = s.document().scene().shots[1].start_s;  // 3.5 s
-  const auto beat = std::find_if(s.timeline().beats_s.begin(), s.timeline().beats_s.end(),
-                                 [](double t) { return t > 5.0; });
-  ASSERT_NE(beat, s.timeline().beats_s.end());
+  const auto found = std::find_if(s.timeline().beats_s.begin(), s.timeline().beats_s.end(),
+                                  [](double t) { return t > 5.0; });
+  ASSERT_NE(found, s.timeline().beats_s.end());
+  const double target = *found;  // a copy: the drop re-plans and replaces the timeline
   ImGuiIO& io = ImGui::GetIO();
   io.MousePos = ImVec2(x_of(from), y);
   frame(s);
   io.MouseDown[0] = true;
   frame(s);
-  for (double t = from; t < *beat; t += 0.25) {
+  for (double t = from; t < target; t += 0.25) {
     io.MousePos = ImVec2(x_of(t), y);
     frame(s);
   }
-  io.MousePos = ImVec2(x_of(*beat) + 1.0f, y);  // a pixel off: it snaps onto the beat
+  io.MousePos = ImVec2(x_of(target) + 1.0f, y);  // a pixel off: it snaps onto the beat
   frame(s);
   io.MouseDown[0] = false;
   frame(s);
-  EXPECT_DOUBLE_EQ(s.document().scene().shots[1].start_s, *beat) << ui_.status;
+  EXPECT_DOUBLE_EQ(s.document().scene().shots[1].start_s, target) << ui_.status;
   EXPECT_EQ(s.document().history().size(), 1u);
 }
 
