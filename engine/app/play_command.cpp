@@ -14,6 +14,7 @@
 
 #include "app/exit_codes.hpp"
 #include "image/png.hpp"
+#include "render/frame_target.hpp"
 #include "render/vulkan_context.hpp"
 #include "render/window.hpp"
 #include "render/window_target.hpp"
@@ -30,19 +31,6 @@ std::optional<double> parse_seconds(const std::string& text) {
   const double value = std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
   return value;
-}
-
-VkSampleCountFlagBits to_samples(int msaa) {
-  switch (msaa) {
-    case 2:
-      return VK_SAMPLE_COUNT_2_BIT;
-    case 4:
-      return VK_SAMPLE_COUNT_4_BIT;
-    case 8:
-      return VK_SAMPLE_COUNT_8_BIT;
-    default:
-      return VK_SAMPLE_COUNT_1_BIT;
-  }
 }
 
 // Without a sound card ALSA prints its own errors to stderr while FluidSynth looks for a device
@@ -163,7 +151,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   auto context = render::VulkanContext::create(context_options);
   if (!context) return fail(context.error().message);
   render::WindowTargetOptions target_options;
-  target_options.samples = to_samples(scene->output.msaa);
+  target_options.samples = render::sample_count_flag(scene->output.msaa);
   target_options.present_mode = VK_PRESENT_MODE_MAILBOX_KHR;  // never wait for a vertical blank
   auto target = render::WindowTarget::create(**context, **window, target_options);
   if (!target) return fail(target.error().message);

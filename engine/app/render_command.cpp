@@ -14,6 +14,7 @@
 #include "app/video_pipe.hpp"
 #include "audio/wav_file.hpp"
 #include "image/png.hpp"
+#include "render/frame_target.hpp"
 #include "render/model_renderer.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/vulkan_context.hpp"
@@ -49,19 +50,6 @@ Status parse_size(const std::string& text, int& width, int& height) {
   width = w;
   height = h;
   return Status::success();
-}
-
-VkSampleCountFlagBits to_samples(int msaa) {
-  switch (msaa) {
-    case 2:
-      return VK_SAMPLE_COUNT_2_BIT;
-    case 4:
-      return VK_SAMPLE_COUNT_4_BIT;
-    case 8:
-      return VK_SAMPLE_COUNT_8_BIT;
-    default:
-      return VK_SAMPLE_COUNT_1_BIT;
-  }
 }
 
 // "[=====>     ] 120/900 frames  34.2 fps  ETA 0:23" on a terminal (redrawn in place), else a
@@ -176,9 +164,9 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   context_options.device = o.device;
   auto context = render::VulkanContext::create(context_options);
   if (!context) return fail(context.error().message);
-  auto target =
-      render::OffscreenTarget::create(**context, static_cast<std::uint32_t>(width),
-                                      static_cast<std::uint32_t>(height), 2, to_samples(msaa));
+  auto target = render::OffscreenTarget::create(**context, static_cast<std::uint32_t>(width),
+                                                static_cast<std::uint32_t>(height), 2,
+                                                render::sample_count_flag(msaa));
   if (!target) return fail(target.error().message);
   const std::vector<const model::ModelAsset*> models = st.model_list();
   render::ModelRendererOptions renderer_options;

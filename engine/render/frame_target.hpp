@@ -24,6 +24,21 @@
 
 namespace tutti::render {
 
+// A sample count (1, 2, 4 or 8, as scene files and --msaa give it) as Vulkan's flag; anything
+// else is 1 sample.
+inline VkSampleCountFlagBits sample_count_flag(int samples) {
+  switch (samples) {
+    case 2:
+      return VK_SAMPLE_COUNT_2_BIT;
+    case 4:
+      return VK_SAMPLE_COUNT_4_BIT;
+    case 8:
+      return VK_SAMPLE_COUNT_8_BIT;
+    default:
+      return VK_SAMPLE_COUNT_1_BIT;
+  }
+}
+
 // Linear-light RGBA in [0, 1]; the sRGB attachment encodes it on store.
 struct ClearColor {
   float r = 0.0f, g = 0.0f, b = 0.0f, a = 1.0f;

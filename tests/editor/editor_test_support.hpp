@@ -2,13 +2,12 @@
 // Shared by the editor tests: a scratch folder per test with copies of the shipped scenes (their
 // music paths point back into content/, so the copies load the real music).
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "scratch_dir.hpp"
 
 namespace tutti::editor::test {
 
@@ -21,29 +20,10 @@ inline std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-class ScratchDir {
+class ScratchDir : public tutti::test::ScratchDir {
  public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("tutti_editor_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" +
-             info->name());
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
+  ScratchDir() : tutti::test::ScratchDir("tutti_editor_") {}
 
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path write(const std::string& name, const std::string& text) const {
-    const std::filesystem::path file = path_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
-  }
   // A copy of content/scenes/<name> whose "music" is made absolute.
   std::filesystem::path copy_scene(const std::string& name) const {
     std::string text = read_text(source_dir() / "content" / "scenes" / name);
@@ -55,9 +35,6 @@ class ScratchDir {
     }
     return write(name, text);
   }
-
- private:
-  std::filesystem::path path_;
 };
 
 }  // namespace tutti::editor::test

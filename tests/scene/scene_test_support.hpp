@@ -1,45 +1,19 @@
 #pragma once
 // Shared by the scene tests: paths into the source tree and a scratch folder per test.
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <filesystem>
-#include <fstream>
-#include <string>
+
+#include "scratch_dir.hpp"
 
 namespace tutti::scene::test {
 
 inline std::filesystem::path source_dir() { return TUTTI_SOURCE_DIR; }
 inline std::filesystem::path scenes_dir() { return source_dir() / "content" / "scenes"; }
 
-// A fresh folder under the system temp dir, named after the running test; removed afterwards.
-class ScratchDir {
+// The scene tests' scratch folders (tests/scratch_dir.hpp).
+class ScratchDir : public tutti::test::ScratchDir {
  public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("tutti_scene_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" +
-             info->name());
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path write(const std::string& name, const std::string& text) const {
-    const std::filesystem::path file = path_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
-  }
-
- private:
-  std::filesystem::path path_;
+  ScratchDir() : tutti::test::ScratchDir("tutti_scene_") {}
 };
 
 }  // namespace tutti::scene::test
