@@ -9,6 +9,7 @@
 #include "app/fingering_command.hpp"
 #include "app/fit_fingering_command.hpp"
 #include "app/info_command.hpp"
+#include "app/perform_command.hpp"
 #include "app/play_command.hpp"
 #include "app/render_command.hpp"
 #include "app/sync_report_command.hpp"
@@ -24,6 +25,21 @@ int main(int argc, char** argv) {
                                           "MIDI, MusicXML (.xml/.musicxml/.mxl) or PIG file");
   info_cmd->add_option("FILE", info.file, "score file")->required();
   info_cmd->add_flag("--json", info.json, "print JSON instead of text");
+
+  tutti::app::PerformOptions perform;
+  CLI::App* perform_cmd = app.add_subcommand(
+      "perform",
+      "Play a MIDI or MusicXML file on the simulated piano in a performance style: the notes as "
+      "the keys sound them (escapement time, velocity from key speed), written as MIDI, and a "
+      "report of onset deviation, velocity spread and missed notes");
+  perform_cmd->add_option("IN", perform.input, "score file")->required();
+  perform_cmd->add_option("-o,--output", perform.output, "write the performed notes (.mid)");
+  perform_cmd->add_option("--style", perform.style,
+                          "precise (default), gentle, beginner, or all (report only)");
+  perform_cmd->add_option("--seed", perform.seed, "motor-noise seed (default 1)");
+  perform_cmd->add_option("--hand-size", perform.hand_size, "small, medium or large");
+  perform_cmd->add_option("--report-json", perform.report_json,
+                          "write the report and every note's outcome as JSON");
 
   tutti::app::FingeringOptions fingering;
   CLI::App* fingering_cmd = app.add_subcommand(
@@ -154,6 +170,7 @@ int main(int argc, char** argv) {
   }
 
   if (*info_cmd) return tutti::app::run_info(info, std::cout, std::cerr);
+  if (*perform_cmd) return tutti::app::run_perform(perform, std::cout, std::cerr);
   if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
   if (*fit_cmd) return tutti::app::run_fit_fingering(fit, std::cout, std::cerr);
   if (*brass_cmd) return tutti::app::run_brass(brass, std::cout, std::cerr);

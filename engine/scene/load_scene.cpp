@@ -52,6 +52,7 @@ class SceneParser {
   Status parse_performer(const json& object, const std::string& path, const Scene& scene,
                          Performer& performer);
   Status parse_pianist(const json& object, const Scene& scene, Pianist& pianist) const;
+  Status parse_pianist_style(const json& object, Pianist& pianist) const;
   Status parse_variation(const json& object, const std::string& path, Variation& variation) const;
   Status parse_mapping(const json& object, const std::string& path, const char* key,
                        AssetKind expected, fs::path& out) const;
@@ -246,10 +247,10 @@ Status SceneParser::parse_performer(const json& object, const std::string& path,
 
 Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianist& pianist) const {
   const std::string path = "/pianist";
-  if (auto ok =
-          reader_.json().check_keys(object, path,
-                                    {"parts", "music_file", "hand_size", "position_m", "facing_deg",
-                                     "seed", "variation", "character", "hands", "pins"});
+  if (auto ok = reader_.json().check_keys(
+          object, path,
+          {"parts", "music_file", "hand_size", "position_m", "facing_deg", "seed", "variation",
+           "character", "hands", "pins", "style", "sound"});
       !ok) {
     return ok;
   }
@@ -311,7 +312,37 @@ Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianis
     return ok;
   }
   if (auto ok = parse_finger_pins(reader_, object, path, pianist.pins); !ok) return ok;
+  if (auto ok = parse_pianist_style(object, pianist); !ok) return ok;
   return parse_mapping(object, path, "hands", AssetKind::hand, pianist.hands_mapping);
+}
+
+// "style": a style of content/piano/styles.json; "sound": "score" (as written) or "keys" (as
+// the simulated keys sound it).
+Status SceneParser::parse_pianist_style(const json& object, Pianist& pianist) const {
+  const std::string path = "/pianist";
+  auto sound = reader_.string_or(object, path, "sound", "score");
+  if (!sound) return sound.error();
+  if (*sound != "score" && *sound != "keys") {
+    return reader_.error("/pianist/sound",
+                         "expected \"score\" or \"keys\", not \"" + *sound + "\"");
+  }
+  pianist.sound_from_keys = *sound == "keys";
+  if (!object.contains("style")) return Status::success();
+  auto style = reader_.string_or(object, path, "style", "");
+  if (!style) return style.error();
+  const fs::path styles_file = content_dir_ / "piano" / "styles.json";
+  auto styles = read_scene_json(styles_file);
+  if (!styles) return styles.error();
+  std::vector<std::string> names;
+  if (styles->contains("styles") && styles->at("styles").is_object()) {
+    for (const auto& item : styles->at("styles").items()) names.push_back(item.key());
+  }
+  if (std::find(names.begin(), names.end(), *style) == names.end()) {
+    return reader_.error("/pianist/style", "unknown performance style \"" + *style +
+                                               "\" (styles.json has: " + join(names) + ")");
+  }
+  pianist.style = *style;
+  return Status::success();
 }
 
 Status SceneParser::parse_cameras(const json& document, Scene& scene) const {

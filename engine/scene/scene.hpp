@@ -131,6 +131,13 @@ struct Pianist {
   std::filesystem::path character_mapping;  // kind "character"
   std::filesystem::path hands_mapping;      // kind "hand"
   std::vector<FingerPin> pins;              // in file order (errors name the index)
+  // A performance style of content/piano/styles.json: how the fingers strike (empty = the
+  // stroke timing of finger_motion.json, every note struck exactly on time).
+  std::string style;
+  // The pianist's notes are heard as the simulated keys sound them (escapement times,
+  // velocities from key speed, missed notes left out) instead of as written. Implies a style
+  // ("precise" when none is given).
+  bool sound_from_keys = false;
   friend bool operator==(const Pianist&, const Pianist&) = default;
 };
 

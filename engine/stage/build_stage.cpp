@@ -28,6 +28,7 @@
 #include "fingering_planner/brass_lines.hpp"
 #include "fingering_planner/brass_planner.hpp"
 #include "fingering_planner/fingering_model.hpp"
+#include "key_action/humane_performance.hpp"
 #include "music/load_score.hpp"
 #include "piano_performance/performance_plan.hpp"
 #include "scene/asset_mapping.hpp"
@@ -254,6 +255,10 @@ std::string pianist_base_key(const scene::Scene& scene, const scene::Pianist& pi
 // Everything the pianist's plan depends on.
 std::string pianist_plan_key(const scene::Scene& scene, const scene::Pianist& pianist) {
   std::string key = pianist_base_key(scene, pianist);
+  if (!pianist.style.empty() || pianist.sound_from_keys) {
+    key += "|style " + pianist.style + (pianist.sound_from_keys ? " keys " : " score ") +
+           std::to_string(pianist.seed);
+  }
   char text[64];
   for (const scene::FingerPin& pin : pianist.pins) {
     std::snprintf(text, sizeof text, "|%.17g:%d:%d", pin.time_s, pin.key, pin.finger);
@@ -478,6 +483,55 @@ Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianis
   return Status::success();
 }
 
+// The pianist's motion in the scene's performance style, and what the keys make of it.
+Result<key_action::HumanePerformance> perform_in_style(
+    const scene::Scene& scene, const scene::Pianist& pianist, const music::Score& score,
+    const performance::PianoPerformancePlan& paths, const piano::FingeringModel& model,
+    const finger_motion::FingerMotionParams& params, const std::filesystem::path& content_dir) {
+  auto styles = key_action::load_styles(key_action::styles_path(content_dir));
+  if (!styles) return styles.error();
+  auto style = styles->find(pianist.style.empty() ? "precise" : pianist.style);
+  if (!style) return Error{scene.source + ": /pianist/style: " + style.error().message};
+  auto action = key_action::load_key_action(key_action::key_action_path(content_dir));
+  if (!action) return action.error();
+  key_action::HumaneInputs in;
+  in.score = &score;
+  in.fingering = &paths.fingering;
+  in.right_path = &paths.right_path;
+  in.left_path = &paths.left_path;
+  in.keyboard = &model.keyboard;
+  in.hand_model = &model.hand;
+  in.params = &params;
+  in.action = &*action;
+  in.style = &*style;
+  in.seed = pianist.seed;
+  return key_action::perform(in);
+}
+
+// The piano notes of `heard` as the keys sounded them; notes that did not sound are removed.
+void hear_the_keys(const std::vector<key_action::PlayedNote>& played,
+                   const std::vector<std::size_t>& full_index, music::Score& heard) {
+  std::vector<char> silent(heard.notes.size(), 0);
+  for (std::size_t i = 0; i < played.size() && i < full_index.size(); ++i) {
+    const key_action::PlayedNote& p = played[i];
+    if (p.outcome == key_action::KeyOutcome::not_played) continue;
+    if (full_index[i] >= heard.notes.size()) continue;
+    if (p.outcome != key_action::KeyOutcome::sounded) {
+      silent[full_index[i]] = 1;
+      continue;
+    }
+    music::Note& note = heard.notes[full_index[i]];
+    note.onset_s = p.onset_s;
+    note.offset_s = std::max(p.onset_s, p.offset_s);
+    note.velocity = p.velocity;
+  }
+  std::size_t kept = 0;
+  for (std::size_t j = 0; j < heard.notes.size(); ++j) {
+    if (!silent[j]) heard.notes[kept++] = heard.notes[j];
+  }
+  heard.notes.resize(kept);
+}
+
 Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::path& content_dir) {
   if (!stage.scene.pianist) return Status::success();
   const scene::Pianist& pianist = *stage.scene.pianist;
@@ -499,8 +553,12 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
     played[static_cast<std::size_t>(part)] = true;
   }
   score.notes.clear();
-  for (const music::Note& note : full.notes) {
-    if (played[static_cast<std::size_t>(note.part)]) score.notes.push_back(note);
+  std::vector<std::size_t> full_index;  // seat score note -> stage score note
+  for (std::size_t i = 0; i < full.notes.size(); ++i) {
+    if (played[static_cast<std::size_t>(full.notes[i].part)]) {
+      score.notes.push_back(full.notes[i]);
+      full_index.push_back(i);
+    }
   }
   // The editor's pins act locally: the fingering without them (the file's own marks are pins
   // there too) is planned once, then only the span around the pinned notes is searched again
@@ -523,11 +581,15 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
   piano::ScorePlan fingering;
   piano::ScorePlan base;
   std::vector<std::string> plan_notes;
+  std::shared_ptr<const std::vector<key_action::PlayedNote>> played_notes;
+  key_action::PerformanceReport performance_report;
   if (previous != nullptr && previous->plan_key == plan_key && previous->motion) {
     motion = previous->motion;
     fingering = previous->fingering;
     base = previous->base_fingering;
     plan_notes = previous->plan_notes;
+    played_notes = previous->played;
+    performance_report = previous->performance;
   } else {
     if (previous != nullptr && previous->base_key == base_key) {
       base = previous->base_fingering;
@@ -555,15 +617,25 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
     auto params = finger_motion::load_finger_motion_params(
         finger_motion::finger_motion_params_path(content_dir));
     if (!params) return params.error();
-    auto fingers = finger_motion::plan_finger_motion(score, performance.fingering,
-                                                     performance.right_path, performance.left_path,
-                                                     model->keyboard, model->hand, *params);
-    if (!fingers) return fingers.error();
-    auto planned_motion = std::make_shared<finger_motion::PianistMotion>();
-    planned_motion->fingers = std::move(*fingers);
-    planned_motion->right_path = std::move(performance.right_path);
-    planned_motion->left_path = std::move(performance.left_path);
-    motion = std::move(planned_motion);
+    if (!pianist.style.empty() || pianist.sound_from_keys) {
+      auto humane =
+          perform_in_style(stage.scene, pianist, score, performance, *model, *params, content_dir);
+      if (!humane) return humane.error();
+      motion = std::move(humane->motion);
+      performance_report = humane->report;
+      played_notes =
+          std::make_shared<const std::vector<key_action::PlayedNote>>(std::move(humane->played));
+    } else {
+      auto fingers = finger_motion::plan_finger_motion(
+          score, performance.fingering, performance.right_path, performance.left_path,
+          model->keyboard, model->hand, *params);
+      if (!fingers) return fingers.error();
+      auto planned_motion = std::make_shared<finger_motion::PianistMotion>();
+      planned_motion->fingers = std::move(*fingers);
+      planned_motion->right_path = std::move(performance.right_path);
+      planned_motion->left_path = std::move(performance.left_path);
+      motion = std::move(planned_motion);
+    }
     stage.replanned.push_back("pianist motion");
   }
   stage.notes.insert(stage.notes.end(), plan_notes.begin(), plan_notes.end());
@@ -576,6 +648,11 @@ Status build_pianist(Stage& stage, ModelCache& cache, const std::filesystem::pat
   seat->base_key = base_key;
   seat->base_fingering = std::move(base);
   seat->plan_notes = std::move(plan_notes);
+  if (pianist.sound_from_keys && played_notes) {
+    hear_the_keys(*played_notes, full_index, stage.sounding[pianist.music_file]);
+  }
+  seat->played = std::move(played_notes);
+  seat->performance = performance_report;
   seat->pianist = stage.world.create();
   stage.world.add<components::Performer>(seat->pianist,
                                          components::Performer{"pianist", pianist.seed});

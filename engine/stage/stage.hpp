@@ -21,6 +21,8 @@
 #include "ecs/schedule.hpp"
 #include "ecs/world.hpp"
 #include "fingering_planner/plan_score.hpp"
+#include "key_action/key_simulation.hpp"
+#include "key_action/performance_report.hpp"
 #include "model/model_asset.hpp"
 #include "music/score.hpp"
 #include "render/model_renderer.hpp"
@@ -127,6 +129,10 @@ struct PianistSeat {
   piano::ScorePlan base_fingering;
   std::string base_key;
   std::vector<std::string> plan_notes;
+  // With a performance style (scene pianist "style" / "sound": "keys"): what the simulated keys
+  // did with each note of `score` (systems/key_action), and its summary. Empty without a style.
+  std::shared_ptr<const std::vector<key_action::PlayedNote>> played;
+  key_action::PerformanceReport performance;
   ecs::Entity pianist = ecs::Entity::null;
   std::array<ecs::Entity, 2> hands{ecs::Entity::null, ecs::Entity::null};  // right, left
   std::array<std::array<ecs::Entity, 5>, 2> fingers{};
@@ -149,7 +155,9 @@ struct Stage {
   scene::Scene scene;
   std::vector<music::Score> scores;  // one per scene music file
   // What is heard: `scores` with the notes as the players play them (a brass note shortened to
-  // make room for a catch breath ends early here, so the sound stops while the player breathes).
+  // make room for a catch breath ends early here, so the sound stops while the player breathes;
+  // with the pianist's "sound": "keys", the piano notes as the keys sounded them, missed ones
+  // left out).
   std::vector<music::Score> sounding;
   std::vector<std::shared_ptr<const model::ModelAsset>> models;
   std::vector<std::string> model_files;  // the file each of `models` came from

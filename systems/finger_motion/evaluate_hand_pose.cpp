@@ -35,7 +35,7 @@ Baseline baseline(const FingerMotionPlan& plan, const FingerGeometry& g, const K
   if (prev == nullptr) return {rest_x_mm, g.neutral_bend_rad, neutral_z, nullptr};
   const double top = key_top(keys, prev->black);
   const double bend = bend_for(g, prev->black);
-  if (t_s <= prev->offset_s) return {prev->x_mm, bend, top - keys.dip_mm, prev};
+  if (t_s <= prev->offset_s) return {prev->x_mm, bend, prev->bottom_z_mm, prev};
   const double decay = std::exp(-(t_s - prev->offset_s) * plan.relax_rate_per_s);
   Baseline b;
   b.x_mm = rest_x_mm + prev->release_offset_mm * decay;
@@ -43,7 +43,7 @@ Baseline baseline(const FingerMotionPlan& plan, const FingerGeometry& g, const K
   b.touching = prev;
   if (t_s < prev->release_end_s) {
     const double u = (t_s - prev->offset_s) * prev->inv_release_s;
-    b.z_mm = (top - keys.dip_mm) + (keys.dip_mm + keys.hover_lift_mm) * min_jerk(u);
+    b.z_mm = prev->bottom_z_mm + (top + keys.hover_lift_mm - prev->bottom_z_mm) * min_jerk(u);
   } else {
     const double hover = top + keys.hover_lift_mm;
     b.z_mm = neutral_z + (hover - neutral_z) * (decay * prev->release_decay_scale);
@@ -93,7 +93,8 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   const KeyContact* touching = b.touching;
   double depth = 0.0;
   if (touching != nullptr) {
-    depth = std::clamp((key_top(keys, touching->black) - z) * plan.inv_dip_per_mm, 0.0, 1.0);
+    depth =
+        std::clamp((key_top(keys, touching->black) - z) * touching->inv_travel_per_mm, 0.0, 1.0);
     if (t_s <= touching->offset_s) depth = 1.0;
   }
 
@@ -114,11 +115,12 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
       z = blend(z, top + keys.hover_lift_mm, u);
       if (t_s >= next->stroke_start_s) {
         const double w = (t_s - next->stroke_start_s) * next->inv_stroke_s;
-        z = blend(z, top - keys.dip_mm, w * w);
+        z = blend(z, next->bottom_z_mm, w * w);
         touching = next;
-        depth = std::clamp((top - z) * plan.inv_dip_per_mm, 0.0, 1.0);
+        depth = std::clamp((top - z) * next->inv_travel_per_mm, 0.0, 1.0);
       } else if (touching != nullptr) {
-        depth = std::clamp((key_top(keys, touching->black) - z) * plan.inv_dip_per_mm, 0.0, 1.0);
+        depth = std::clamp((key_top(keys, touching->black) - z) * touching->inv_travel_per_mm, 0.0,
+                           1.0);
       }
     }
   }

@@ -35,6 +35,11 @@ struct KeyContact {
   // the relax time constant after the release.
   double release_offset_mm = 0.0;
   int note = -1;  // Score::notes index
+  // Tip height at the key bed where this finger presses (the key's top minus its travel there:
+  // keyboard dip_mm by default; less when a key lever is modelled and the tip presses further
+  // in, nearer the pivot; see systems/key_action).
+  double bottom_z_mm = -10.0;
+  double inv_travel_per_mm = 0.1;  // 1 / (key top - bottom_z_mm): press depth per mm
 
   // Precomputed by plan_finger_motion from the fields above, so evaluate multiplies instead of
   // dividing and takes one exponential per finger (see README.md, "Precomputed at plan time").
@@ -70,7 +75,6 @@ struct FingerMotionPlan {
   StrokeTiming timing;
   // Derived from keys and timing by plan_finger_motion.
   double relax_rate_per_s = 5.0;  // 1 / timing.relax_time_constant_s
-  double inv_dip_per_mm = 0.1;    // 1 / keys.dip_mm
   double neutral_z_mm = 8.0;      // keys.white_top_z_mm + keys.hover_lift_mm: tip height at rest
 
   const HandFingerPlan& hand(components::HandSide side) const {

@@ -28,8 +28,10 @@ void precompute_for_evaluate(KeyContact& c, const StrokeTiming& timing) {
 }
 
 // Sorts, merges same-onset contacts, trims offsets and fills the timing fields.
+// `preset_strokes`: each contact's stroke_start_s is already the one wanted (a NoteStroke's).
 void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
-                       const motion::HandPath& path, const StrokeTiming& timing) {
+                       const motion::HandPath& path, const StrokeTiming& timing,
+                       bool preset_strokes) {
   std::sort(contacts.begin(), contacts.end(), [](const KeyContact& a, const KeyContact& b) {
     return a.onset_s != b.onset_s ? a.onset_s < b.onset_s : a.key < b.key;
   });
@@ -45,7 +47,7 @@ void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
   // Pass 1: stroke starts, and offsets trimmed to the next stroke of the same finger.
   for (std::size_t j = 0; j < merged.size(); ++j) {
     KeyContact& c = merged[j];
-    c.stroke_start_s = c.onset_s - timing.press_lead_s;
+    if (!preset_strokes) c.stroke_start_s = c.onset_s - timing.press_lead_s;
     if (j > 0) {
       KeyContact& prev = merged[j - 1];
       c.stroke_start_s = std::max(c.stroke_start_s, prev.onset_s);
@@ -87,14 +89,17 @@ void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
 
 }  // namespace
 
-Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
-                                            const piano::ScorePlan& score_plan,
-                                            const motion::HandPath& right_path,
-                                            const motion::HandPath& left_path,
-                                            const piano::Keyboard& keyboard,
-                                            const piano::HandModel& hand_model,
-                                            const FingerMotionParams& params) {
+Result<FingerMotionPlan> plan_finger_motion(
+    const music::Score& score, const piano::ScorePlan& score_plan,
+    const motion::HandPath& right_path, const motion::HandPath& left_path,
+    const piano::Keyboard& keyboard, const piano::HandModel& hand_model,
+    const FingerMotionParams& params, std::span<const NoteStroke> strokes) {
   const std::size_t count = score.notes.size();
+  if (!strokes.empty() && strokes.size() != count) {
+    return Error{(score.source.empty() ? std::string("score") : score.source) + ": " +
+                 std::to_string(strokes.size()) + " note strokes for " + std::to_string(count) +
+                 " notes"};
+  }
   if (score_plan.fingers.size() != count || score_plan.hands.size() != count) {
     return Error{(score.source.empty() ? std::string("score") : score.source) +
                  ": fingering plan has " + std::to_string(score_plan.fingers.size()) +
@@ -105,15 +110,10 @@ Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
   plan.keys = params.keys;
   plan.timing = params.timing;
   plan.relax_rate_per_s = 1.0 / params.timing.relax_time_constant_s;
-  plan.inv_dip_per_mm = 1.0 / params.keys.dip_mm;
   plan.neutral_z_mm = params.keys.white_top_z_mm + params.keys.hover_lift_mm;
-  const double scale = hand_model.scale();
+  plan.geometry = scaled_geometry(params, hand_model);
   for (std::size_t f = 0; f < 5; ++f) {
-    FingerGeometry g = params.fingers[f];
-    for (double& length : g.phalanges_mm) length *= scale;
-    g.root_y_mm *= scale;
-    g.root_z_mm *= scale;
-    plan.geometry[f] = g;
+    const FingerGeometry& g = plan.geometry[f];
     plan.neutral_shape[f] = chain_shape(g, g.neutral_bend_rad);
     plan.white_shape[f] = chain_shape(g, g.white_bend_rad);
     plan.black_shape[f] = chain_shape(g, g.black_bend_rad);
@@ -140,6 +140,22 @@ Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
     c.black = keyboard.is_black(c.key);
     c.onset_s = note.onset_s;
     c.offset_s = note.offset_s;
+    double travel = params.keys.dip_mm;
+    if (!strokes.empty()) {
+      const NoteStroke& stroke = strokes[i];
+      if (!std::isfinite(stroke.stroke_start_s) || !std::isfinite(stroke.bottom_s) ||
+          !std::isfinite(stroke.release_s) || !(stroke.stroke_start_s < stroke.bottom_s) ||
+          !(stroke.travel_mm > 0.0)) {
+        return note_error(score, i, "invalid stroke (start before bottom, travel > 0)");
+      }
+      c.onset_s = stroke.bottom_s;
+      c.stroke_start_s = stroke.stroke_start_s;
+      c.offset_s = std::max(stroke.release_s, stroke.bottom_s);
+      travel = stroke.travel_mm;
+    }
+    const double top = c.black ? params.keys.black_top_z_mm : params.keys.white_top_z_mm;
+    c.bottom_z_mm = top - travel;
+    c.inv_travel_per_mm = 1.0 / travel;
     c.note = static_cast<int>(i);
     HandFingerPlan& side = hand == music::Hand::left ? plan.left : plan.right;
     side.fingers[static_cast<std::size_t>(finger - 1)].push_back(c);
@@ -147,12 +163,25 @@ Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
   for (HandFingerPlan* side : {&plan.right, &plan.left}) {
     const motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
     for (std::size_t f = 0; f < 5; ++f) {
-      schedule_contacts(side->fingers[f], side->rest_offset_mm[f], path, plan.timing);
+      schedule_contacts(side->fingers[f], side->rest_offset_mm[f], path, plan.timing,
+                        !strokes.empty());
       side->onsets_s[f].reserve(side->fingers[f].size());
       for (const KeyContact& c : side->fingers[f]) side->onsets_s[f].push_back(c.onset_s);
     }
   }
   return plan;
+}
+
+std::array<FingerGeometry, 5> scaled_geometry(const FingerMotionParams& params,
+                                              const piano::HandModel& hand_model) {
+  const double scale = hand_model.scale();
+  std::array<FingerGeometry, 5> geometry = params.fingers;
+  for (FingerGeometry& g : geometry) {
+    for (double& length : g.phalanges_mm) length *= scale;
+    g.root_y_mm *= scale;
+    g.root_z_mm *= scale;
+  }
+  return geometry;
 }
 
 }  // namespace tutti::finger_motion

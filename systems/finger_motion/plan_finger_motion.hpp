@@ -14,8 +14,14 @@
 //    ending at the onset and starting no earlier than the previous offset (late and quick);
 //  - bend and hover height adapt over shape_s before the stroke (not before the previous offset).
 //
-// Errors (one line, naming the note index): plan sizes that do not match the score, a finger
-// outside 0..5, a non-finite time, offset < onset.
+// With `strokes` (one per Score note), each contact's onset is the stroke's bottom_s, its stroke
+// start, offset and key travel the stroke's (the same clamps to the finger's previous contact
+// apply).
+//
+// Errors (one line, naming the note index): plan or stroke sizes that do not match the score, a
+// finger outside 0..5, a non-finite time, offset < onset.
+
+#include <span>
 
 #include "core/result.hpp"
 #include "finger_motion/finger_motion_params.hpp"
@@ -28,14 +34,29 @@
 
 namespace tutti::finger_motion {
 
+// How one note is struck when a performance style decides it (systems/key_action): the stroke
+// leaves hover height at stroke_start_s and reaches the key bed, travel_mm below the key's top,
+// at bottom_s; the finger lets the key go at release_s. Without strokes, every note is struck
+// with the StrokeTiming defaults: bottom at the written onset, press_lead_s before it, released
+// at the written offset, travel = keys.dip_mm.
+struct NoteStroke {
+  double stroke_start_s = 0.0;  // < bottom_s
+  double bottom_s = 0.0;
+  double release_s = 0.0;   // clamped to >= bottom_s
+  double travel_mm = 10.0;  // > 0
+};
+
 // `right_path` / `left_path`: the hands' planned paths (used for each release's lateral offset).
 // Phalanx lengths and root heights are scaled by hand_model.scale().
-Result<FingerMotionPlan> plan_finger_motion(const music::Score& score,
-                                            const piano::ScorePlan& score_plan,
-                                            const motion::HandPath& right_path,
-                                            const motion::HandPath& left_path,
-                                            const piano::Keyboard& keyboard,
-                                            const piano::HandModel& hand_model,
-                                            const FingerMotionParams& params);
+Result<FingerMotionPlan> plan_finger_motion(
+    const music::Score& score, const piano::ScorePlan& score_plan,
+    const motion::HandPath& right_path, const motion::HandPath& left_path,
+    const piano::Keyboard& keyboard, const piano::HandModel& hand_model,
+    const FingerMotionParams& params, std::span<const NoteStroke> strokes = {});
+
+// The finger geometry plan_finger_motion uses: params' lengths and root heights scaled by the
+// hand model.
+std::array<FingerGeometry, 5> scaled_geometry(const FingerMotionParams& params,
+                                              const piano::HandModel& hand_model);
 
 }  // namespace tutti::finger_motion

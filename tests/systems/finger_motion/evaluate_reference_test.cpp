@@ -52,20 +52,20 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
     if (t <= prev->offset_s) {
       x = prev->x_mm;
       bend = bend_of(prev->black);
-      z = top - keys.dip_mm;
+      z = prev->bottom_z_mm;
     } else {
       const double decay = std::exp(-(t - prev->offset_s) / tau);
       x = rest_x + prev->release_offset_mm * decay;
       bend = g.neutral_bend_rad + (bend_of(prev->black) - g.neutral_bend_rad) * decay;
       if (t < prev->release_end_s) {
         const double u = (t - prev->offset_s) / (prev->release_end_s - prev->offset_s);
-        z = (top - keys.dip_mm) + (keys.dip_mm + keys.hover_lift_mm) * min_jerk(u);
+        z = prev->bottom_z_mm + (top + keys.hover_lift_mm - prev->bottom_z_mm) * min_jerk(u);
       } else {
         const double hover = top + keys.hover_lift_mm;
         z = neutral_z + (hover - neutral_z) * std::exp(-(t - prev->release_end_s) / tau);
       }
     }
-    depth = t <= prev->offset_s ? 1.0 : std::clamp((top - z) / keys.dip_mm, 0.0, 1.0);
+    depth = t <= prev->offset_s ? 1.0 : std::clamp((top - z) / (top - prev->bottom_z_mm), 0.0, 1.0);
   }
   if (next != nullptr) {
     if (t >= next->move_start_s) {
@@ -80,11 +80,12 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
       z = blend(z, top + keys.hover_lift_mm, u);
       if (t >= next->stroke_start_s) {
         const double w = (t - next->stroke_start_s) / (next->onset_s - next->stroke_start_s);
-        z = blend(z, top - keys.dip_mm, w * w);
+        z = blend(z, next->bottom_z_mm, w * w);
         touching = next;
-        depth = std::clamp((top - z) / keys.dip_mm, 0.0, 1.0);
+        depth = std::clamp((top - z) / (top - next->bottom_z_mm), 0.0, 1.0);
       } else if (touching != nullptr) {
-        depth = std::clamp((top_of(touching->black) - z) / keys.dip_mm, 0.0, 1.0);
+        const double top_touching = top_of(touching->black);
+        depth = std::clamp((top_touching - z) / (top_touching - touching->bottom_z_mm), 0.0, 1.0);
       }
     }
   }
