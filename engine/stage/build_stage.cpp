@@ -521,8 +521,9 @@ void hear_the_keys(const std::vector<key_action::PlayedNote>& played,
       continue;
     }
     music::Note& note = heard.notes[full_index[i]];
-    note.onset_s = p.onset_s;
-    note.offset_s = std::max(p.onset_s, p.offset_s);
+    // As key_action::performed_score: nothing sounds before the music's time 0.
+    note.onset_s = std::max(p.onset_s, 0.0);
+    note.offset_s = std::max(note.onset_s, p.offset_s);
     note.velocity = p.velocity;
   }
   std::size_t kept = 0;

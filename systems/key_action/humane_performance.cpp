@@ -43,8 +43,10 @@ music::Score performed_score(const music::Score& score, std::span<const PlayedNo
     if (i < played.size() && played[i].outcome != KeyOutcome::not_played) {
       const PlayedNote& p = played[i];
       if (p.outcome != KeyOutcome::sounded) continue;
-      note.onset_s = p.onset_s;
-      note.offset_s = std::max(p.offset_s, p.onset_s);
+      // Motor noise can sound a first note a little before the music starts; nothing is written
+      // (or heard) before time 0.
+      note.onset_s = std::max(p.onset_s, 0.0);
+      note.offset_s = std::max(p.offset_s, note.onset_s);
       note.onset_ticks = std::max<std::int64_t>(0, ticks_at(note.onset_s));
       note.offset_ticks = std::max(note.onset_ticks, ticks_at(note.offset_s));
       note.onset_beats = tempo.beats_at_seconds(note.onset_s);

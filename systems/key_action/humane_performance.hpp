@@ -50,7 +50,8 @@ Result<HumanePerformance> perform(const HumaneInputs& in, const KeySimulationOpt
 
 // The score as heard: every note with a PlayedNote that sounded gets its played onset, offset and
 // velocity (seconds exact, ticks rounded through the tempo map), notes that did not sound are
-// left out, notes nobody played (other parts) are kept as written. Note order is kept.
+// left out, notes nobody played (other parts) are kept as written. Note order is kept. A note
+// sounded before time 0 (motor noise on a first note) starts at 0.
 music::Score performed_score(const music::Score& score, std::span<const PlayedNote> played);
 
 }  // namespace tutti::key_action

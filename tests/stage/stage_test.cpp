@@ -199,6 +199,62 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
       << wrong.error().message;
 }
 
+// "sound": "keys": the piano is heard as the simulated keys sound it, in the scene's style.
+TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto written = build_stage(*scene, {});
+  ASSERT_TRUE(written) << written.error().message;
+  EXPECT_FALSE((*written)->pianist->played) << "no style: no key simulation";
+  ASSERT_EQ((*written)->sounding[0].notes.size(), (*written)->scores[0].notes.size());
+
+  scene->pianist->style = "beginner";
+  scene->pianist->sound_from_keys = true;
+  auto stage = build_stage(*scene, {});
+  ASSERT_TRUE(stage) << stage.error().message;
+  const PianistSeat& seat = *(*stage)->pianist;
+  ASSERT_TRUE(seat.played);
+  ASSERT_EQ(seat.played->size(), seat.score.notes.size());
+  const music::Score& heard = (*stage)->sounding[0];
+  EXPECT_EQ(heard.notes.size(), seat.performance.sounded);
+  // Every heard piano note is one the keys sounded, at the time and velocity they sounded it.
+  std::size_t moved = 0;
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < seat.score.notes.size(); ++i) {
+    const key_action::PlayedNote& p = (*seat.played)[i];
+    if (p.outcome != key_action::KeyOutcome::sounded) continue;
+    ASSERT_LT(j, heard.notes.size());
+    EXPECT_EQ(heard.notes[j].onset_s, std::max(p.onset_s, 0.0));
+    EXPECT_EQ(heard.notes[j].velocity, p.velocity);
+    moved += std::abs(p.onset_s - seat.score.notes[i].onset_s) > 0.005;
+    ++j;
+  }
+  EXPECT_GT(moved, seat.score.notes.size() / 3);
+  // The key the finger holds down at the note's sounded time is that note's key.
+  for (std::size_t i = 0; i < seat.score.notes.size(); i += 7) {
+    const key_action::PlayedNote& p = (*seat.played)[i];
+    if (p.outcome != key_action::KeyOutcome::sounded) continue;
+    evaluate_stage(**stage, p.onset_s);
+    const std::size_t side = seat.fingering.hands[i] == music::Hand::left ? 1 : 0;
+    const auto& finger = (*stage)->world.get<components::Finger>(
+        seat.fingers[side][static_cast<std::size_t>(seat.fingering.fingers[i] - 1)]);
+    EXPECT_EQ(finger.key, seat.score.notes[i].pitch) << "note " << i;
+    EXPECT_GT(finger.press_depth, 0.6) << "note " << i;  // past escapement, short of the bed
+    EXPECT_LT(finger.press_depth, 1.0) << "note " << i;
+  }
+  // Re-planning the same scene shares the performance; another seed plays it anew.
+  StageOptions again;
+  again.reuse_models = stage->get();
+  auto same = build_stage(*scene, again);
+  ASSERT_TRUE(same) << same.error().message;
+  EXPECT_EQ((*same)->pianist->played, seat.played);
+  scene->pianist->seed += 1;
+  again.reuse_models = same->get();
+  auto reseeded = build_stage(*scene, again);
+  ASSERT_TRUE(reseeded) << reseeded.error().message;
+  EXPECT_NE((*reseeded)->pianist->played, seat.played);
+}
+
 // The generated trumpet with every node renamed, its root scaled to centimetres: a "user's" model.
 std::filesystem::path write_user_trumpet(const std::filesystem::path& dir) {
   tinygltf::TinyGLTF io;

@@ -1,0 +1,55 @@
+// The pianist's performance style and where the piano's sound comes from, in a scene file.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "scene/load_scene.hpp"
+#include "scene_test_support.hpp"
+
+namespace tutti::scene {
+namespace {
+
+using nlohmann::json;
+using test::scenes_dir;
+
+json piano_scene(const json& pianist_extra) {
+  json document = json::parse(R"({
+    "music": "../music/ode_to_joy.musicxml",
+    "pianist": {"parts": ["Piano"]},
+    "cameras": [{"name": "wide", "position_m": [0, 1.6, 6], "target_m": [0, 1.1, 0]}]
+  })");
+  document["pianist"].update(pianist_extra);
+  return document;
+}
+
+std::string error_of(const json& document) {
+  auto scene = parse_scene(document, "s.json", scenes_dir());
+  return scene.ok() ? "(loaded)" : scene.error().message;
+}
+
+TEST(PianistStyle, AbsentMeansTheWrittenSoundAndNoStyle) {
+  auto scene = parse_scene(piano_scene(json::object()), "s.json", scenes_dir());
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_EQ(scene->pianist->style, "");
+  EXPECT_FALSE(scene->pianist->sound_from_keys);
+}
+
+TEST(PianistStyle, AStyleAndTheKeysSound) {
+  auto scene =
+      parse_scene(piano_scene({{"style", "beginner"}, {"sound", "keys"}}), "s.json", scenes_dir());
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_EQ(scene->pianist->style, "beginner");
+  EXPECT_TRUE(scene->pianist->sound_from_keys);
+}
+
+TEST(PianistStyle, BadValuesAreOneLineErrors) {
+  EXPECT_EQ(error_of(piano_scene({{"style", "virtuoso"}})),
+            "s.json: /pianist/style: unknown performance style \"virtuoso\" (styles.json has: "
+            "beginner, gentle, precise)");
+  EXPECT_EQ(error_of(piano_scene({{"sound", "loud"}})),
+            "s.json: /pianist/sound: expected \"score\" or \"keys\", not \"loud\"");
+  EXPECT_NE(error_of(piano_scene({{"style", 3}})).find("/pianist/style"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tutti::scene
