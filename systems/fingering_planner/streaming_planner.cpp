@@ -155,13 +155,29 @@ void StreamingHandPlanner::decide(std::int64_t event, double now_s,
   }
   auto plan = plan_hand_exact(scratch_notes_, side_, *model_);
   const int future = static_cast<int>(std::min(newest_event_, last_future) - event);
+  // Fingers already given in this event (a chord's first notes, struck already) stay theirs:
+  // when the pins could not all hold, a late note takes the nearest free finger instead.
+  unsigned used = 0;
+  for (const WindowNote& n : window_) {
+    if (n.event == event && n.finger != 0) used |= 1u << (n.finger - 1);
+  }
   for (std::size_t j = 0; j < scratch_index_.size(); ++j) {
     WindowNote& n = window_[scratch_index_[j]];
     if (n.event != event || n.finger != 0) continue;
     // Every note was validated by push, so planning cannot fail; finger 1 keeps the
     // contract (every note gets a finger) should it ever.
-    n.finger = plan ? plan->fingers[j] : 1;
-    if (n.finger < 1 || n.finger > 5) n.finger = 1;
+    int finger = plan ? plan->fingers[j] : 1;
+    if (finger < 1 || finger > 5) finger = 1;
+    for (int step = 1; (used >> (finger - 1)) & 1u && step < 5; ++step) {
+      for (int candidate : {finger - step, finger + step}) {
+        if (candidate >= 1 && candidate <= 5 && !((used >> (candidate - 1)) & 1u)) {
+          finger = candidate;
+          break;
+        }
+      }
+    }
+    used |= 1u << (finger - 1);
+    n.finger = finger;
     out.push_back({n.id, side_, n.note.key, n.note.onset_s, n.finger, now_s, future});
   }
   prune();
