@@ -156,11 +156,14 @@ void StreamingHandPlanner::decide(std::int64_t event, double now_s,
   auto plan = plan_hand_exact(scratch_notes_, side_, *model_);
   const int future = static_cast<int>(std::min(newest_event_, last_future) - event);
   // Fingers already given in this event (a chord's first notes, struck already) stay theirs:
-  // when the pins could not all hold, a late note takes the nearest free finger instead.
+  // when the pins could not all hold, a late note takes the nearest free finger instead. (The
+  // notes of an event decided all at once may share a finger, as the planner shares one for
+  // more than five keys.)
   unsigned used = 0;
   for (const WindowNote& n : window_) {
     if (n.event == event && n.finger != 0) used |= 1u << (n.finger - 1);
   }
+  const bool late = used != 0;
   for (std::size_t j = 0; j < scratch_index_.size(); ++j) {
     WindowNote& n = window_[scratch_index_[j]];
     if (n.event != event || n.finger != 0) continue;
@@ -176,7 +179,8 @@ void StreamingHandPlanner::decide(std::int64_t event, double now_s,
         }
       }
     }
-    used |= 1u << (finger - 1);
+    // Late notes also keep apart from each other (the first notes are down already).
+    if (late) used |= 1u << (finger - 1);
     n.finger = finger;
     out.push_back({n.id, side_, n.note.key, n.note.onset_s, n.finger, now_s, future});
   }
