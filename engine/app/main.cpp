@@ -157,6 +157,12 @@ int main(int argc, char** argv) {
   play_cmd->add_option("--device", play.device, "Vulkan device: index or part of its name");
   play_cmd->add_option("--frames", play.frames, "quit after this many frames");
   play_cmd->add_option("--screenshot", play.screenshot, "write the last frame to this .png");
+  play_cmd->add_option("--midi-in", play.midi_in,
+                       "live MIDI (ALSA sequencer): auto, none, CLIENT:PORT or a client name; the "
+                       "pianist plays it");
+  play_cmd->add_flag(
+      "--keyboard-piano", play.keyboard_piano,
+      "the computer keyboard as a piano (A S D ... white, W E T ... black, Z/X octave)");
   play_cmd->add_flag("--validate", play.validate,
                      "Vulkan validation layer on; any message is an error");
 

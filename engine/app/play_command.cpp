@@ -8,11 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <vector>
 
 #include "app/exit_codes.hpp"
+#include "app/play_live.hpp"
 #include "image/png.hpp"
 #include "render/frame_target.hpp"
 #include "render/vulkan_context.hpp"
@@ -50,6 +52,8 @@ void quiet_alsa_errors() {
 // GLFW's callbacks, turned into actions for the main loop (GLFW calls them from poll_events).
 struct InputQueue {
   std::vector<runtime::Action> actions;
+  live::KeyboardPiano* piano = nullptr;  // --keyboard-piano: its keys go to it first
+  std::function<double()> clock;
   bool dragging = false;
   int button = -1;
   int mods = 0;
@@ -61,6 +65,12 @@ struct InputQueue {
   void install(GLFWwindow* window) {
     glfwSetWindowUserPointer(window, this);
     glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int key_mods) {
+      InputQueue& q = of(w);
+      if (q.piano != nullptr && action != GLFW_REPEAT) {
+        const bool taken = action == GLFW_PRESS ? q.piano->press(key, q.clock())
+                                                : q.piano->release(key, q.clock());
+        if (taken) return;
+      }
       if (action == GLFW_PRESS ||
           (action == GLFW_REPEAT && (key == GLFW_KEY_LEFT || key == GLFW_KEY_RIGHT))) {
         const runtime::Action a = runtime::key_action(key, key_mods);
@@ -130,6 +140,10 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   }
   auto scene = scene::load_scene(o.scene);
   if (!scene) return fail(scene.error().message);
+  auto live_play =
+      LivePlay::open({o.midi_in, o.keyboard_piano, o.soundfont, o.audio_driver}, *scene);
+  if (!live_play) return fail(live_play.error().message);
+  LivePlay& live = **live_play;
   int fixed_camera = -1;
   if (!o.camera.empty()) {
     fixed_camera = scene->find_camera(o.camera);
@@ -162,11 +176,18 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   player_options.tempo = o.tempo;
   player_options.sound_options.sound_font = o.soundfont;
   player_options.sound_options.driver = o.audio_driver;
+  player_options.sound = !live.enabled();  // live: the notes that come in sound, not the score
   auto created = runtime::ScenePlayer::create(**context, **target, *scene, player_options);
   if (!created) return fail(created.error().message);
   runtime::ScenePlayer& player = **created;
   runtime::Transport& transport = player.transport();
   for (const std::string& note : player.stage().notes) err << "note: " << note << "\n";
+  if (live.enabled()) {
+    std::string notice;
+    if (Status s = live.attach(player.stage(), *scene, notice); !s) return fail(s.error().message);
+    if (!notice.empty()) out << notice << "\n";
+    out << live.describe() << "\n";
+  }
   if (const audio::LiveOutput* sound = transport.output(); sound && sound->simulated()) {
     if (o.audio_driver != "simulated") {
       out << "play: no sound device; the clock runs on a simulated one (silent)\n";
@@ -185,6 +206,8 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     }
   }
   InputQueue input;
+  input.piano = live.keyboard();
+  input.clock = host_now;
   input.install((*window)->handle());
 
   auto resized = [&] {
@@ -210,7 +233,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     if (quit) break;
     // Paused and nothing asked for: the picture cannot change, so wait for input instead of
     // drawing it again (not with --frames, which counts drawn frames).
-    if (o.frames == 0 && !transport.playing() && !acted && frames > 0 &&
+    if (o.frames == 0 && !live.enabled() && !transport.playing() && !acted && frames > 0 &&
         player.shown_time() == transport.time() && !resized()) {
       glfwWaitEventsTimeout(0.1);
       continue;
@@ -222,7 +245,14 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     if (!frame) return fail(frame.error().message);
     // The time is read after begin_frame's wait for a free slot: the picture shows the music as
     // late as possible, and however long the last frame took, none is drawn for a stale time.
-    player.update(host_now());
+    if (live.enabled()) {
+      // Live: the picture is the host's time, and the pianist has played what came in by then.
+      const double live_s = host_now();
+      live.frame(player.stage(), live_s);
+      player.show(live_s);
+    } else {
+      player.update(host_now());
+    }
     if (Status s = player.record(*frame, **target); !s) return fail(s.error().message);
     if (auto id = (*target)->end_frame(); !id) return fail(id.error().message);
     ++frames;

@@ -24,6 +24,9 @@ struct PlayOptions {
   int frames = 0;                    // > 0: quit after this many frames (tests, automation)
   std::filesystem::path screenshot;  // .png: the last frame
   bool validate = false;             // Vulkan validation layer; any message fails
+  // Live input (play_live.hpp): the pianist plays what comes in instead of the score.
+  std::string midi_in;          // ALSA sequencer: "auto", "none", "client:port" or a name
+  bool keyboard_piano = false;  // the computer keyboard as a piano (keyboard_piano.hpp)
 };
 
 int run_play(const PlayOptions& options, std::ostream& out, std::ostream& err);
