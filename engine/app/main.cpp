@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/brass_command.hpp"
+#include "app/concat_command.hpp"
 #include "app/exit_codes.hpp"
 #include "app/fingering_command.hpp"
 #include "app/fit_fingering_command.hpp"
@@ -25,6 +26,20 @@ int main(int argc, char** argv) {
                                           "MIDI, MusicXML (.xml/.musicxml/.mxl) or PIG file");
   info_cmd->add_option("FILE", info.file, "score file")->required();
   info_cmd->add_flag("--json", info.json, "print JSON instead of text");
+
+  tutti::app::ConcatOptions concat;
+  bool concat_no_audio = false;
+  CLI::App* concat_cmd = app.add_subcommand(
+      "concat",
+      "Join slices of one render (tutti render SCENE --frames A:B --no-audio -o slice.mp4) into "
+      "one video: frames copied exactly, the sound rendered once for the whole range");
+  concat_cmd->add_option("SCENE", concat.scene, "the scene the slices were rendered from")
+      ->required();
+  concat_cmd->add_option("SLICES", concat.slices, "slice .mp4 files, any order")->required();
+  concat_cmd->add_option("-o,--output", concat.output, "OUT.mp4")->required();
+  concat_cmd->add_option("--soundfont", concat.soundfont, "General MIDI .sf2");
+  concat_cmd->add_option("--assets", concat.assets, "folder of the generated .glb assets");
+  concat_cmd->add_flag("--no-audio", concat_no_audio, "no sound track");
 
   tutti::app::PerformOptions perform;
   CLI::App* perform_cmd = app.add_subcommand(
@@ -104,6 +119,8 @@ int main(int argc, char** argv) {
                          "General MIDI .sf2 (default: $TUTTI_SOUNDFONT, then Debian's)");
   bool no_audio = false;
   render_cmd->add_flag("--no-audio", no_audio, "an .mp4 without a sound track");
+  render_cmd->add_flag("--lossless", render.lossless,
+                       "lossless H.264: slices joined by tutti concat equal a single render");
   render_cmd->add_option("--tempo", render.tempo,
                          "practice tempo, 0.1..4 (0.5 = half speed: picture and sound)");
   render_cmd->add_option("--camera", render.camera,
@@ -176,6 +193,10 @@ int main(int argc, char** argv) {
   }
 
   if (*info_cmd) return tutti::app::run_info(info, std::cout, std::cerr);
+  if (*concat_cmd) {
+    concat.audio = !concat_no_audio;
+    return tutti::app::run_concat(concat, std::cout, std::cerr);
+  }
   if (*perform_cmd) return tutti::app::run_perform(perform, std::cout, std::cerr);
   if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
   if (*fit_cmd) return tutti::app::run_fit_fingering(fit, std::cout, std::cerr);

@@ -11,6 +11,7 @@
 #include "app/exit_codes.hpp"
 #include "app/frame_range.hpp"
 #include "app/scene_audio.hpp"
+#include "app/slice_tag.hpp"
 #include "app/video_pipe.hpp"
 #include "audio/wav_file.hpp"
 #include "image/png.hpp"
@@ -202,9 +203,13 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
 
   std::unique_ptr<VideoPipe> video;
   if (*kind == OutputKind::video) {
+    VideoEncoding encoding;
+    encoding.lossless = o.lossless;
+    encoding.comment =
+        format_slice_tag({range.first, range.end, fps, o.tempo, width, height, o.lossless});
     auto opened = VideoPipe::open(o.output, static_cast<std::uint32_t>(width),
                                   static_cast<std::uint32_t>(height), fps,
-                                  o.audio ? audio_file : std::filesystem::path{});
+                                  o.audio ? audio_file : std::filesystem::path{}, encoding);
     if (!opened) return fail(opened.error().message);
     video = std::move(*opened);
   } else if (*kind == OutputKind::folder) {

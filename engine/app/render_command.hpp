@@ -27,6 +27,7 @@ struct RenderOptions {
   std::filesystem::path wav;     // also write the rendered range's audio here (16-bit PCM)
   std::filesystem::path soundfont;  // General MIDI .sf2 (default: audio::find_sound_font)
   bool audio = true;                // .mp4: an AAC track of the scene's music
+  bool lossless = false;            // .mp4: x264 lossless (slices join into an exact render)
   bool validate = false;            // run with the Vulkan validation layer; any message fails
   bool progress = true;             // progress on stderr
 };

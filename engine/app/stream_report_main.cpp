@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   app.add_option("FILES", options.inputs, "scores (MusicXML, MIDI, PIG)")->required();
   app.add_option("--lookahead", options.lookaheads, "future events each decision waits for")
       ->delimiter(',');
-  app.add_option("--weights", options.weights, "cost weights preset (content/piano/fingering/NAME.json)");
+  app.add_option("--weights", options.weights,
+                 "cost weights preset (content/piano/fingering/NAME.json)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

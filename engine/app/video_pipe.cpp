@@ -15,8 +15,8 @@ namespace tutti::app {
 
 Result<std::unique_ptr<VideoPipe>> VideoPipe::open(const std::filesystem::path& path,
                                                    std::uint32_t width, std::uint32_t height,
-                                                   int fps,
-                                                   const std::filesystem::path& audio_wav) {
+                                                   int fps, const std::filesystem::path& audio_wav,
+                                                   const VideoEncoding& encoding) {
   // A dying ffmpeg must give an error from write(), not kill us with SIGPIPE.
   signal(SIGPIPE, SIG_IGN);
   std::unique_ptr<VideoPipe> pipe_out(new VideoPipe());
@@ -43,9 +43,14 @@ Result<std::unique_ptr<VideoPipe>> VideoPipe::open(const std::filesystem::path& 
       args.emplace_back(a);
     }
   }
-  for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt",
-                        "yuv420p", "-movflags", "+faststart"}) {
+  for (const char* a :
+       {"-c:v", "libx264", "-preset", "veryfast", encoding.lossless ? "-qp" : "-crf",
+        encoding.lossless ? "0" : "18", "-pix_fmt", "yuv420p", "-movflags", "+faststart"}) {
     args.emplace_back(a);
+  }
+  if (!encoding.comment.empty()) {
+    args.emplace_back("-metadata");
+    args.push_back("comment=" + encoding.comment);
   }
   args.push_back(output);
   std::vector<char*> argv;

@@ -16,13 +16,22 @@
 
 namespace tutti::app {
 
+struct VideoEncoding {
+  // x264 at -qp 0: every decoded frame is exactly the frame given (in yuv420p), so slices
+  // rendered apart and joined equal a single render frame for frame. Files are several times
+  // larger.
+  bool lossless = false;
+  std::string comment;  // written as the file's "comment" tag (tutti concat reads it)
+};
+
 class VideoPipe {
  public:
   // Starts `ffmpeg` (from PATH) writing `path`. With `audio_wav`, that file becomes the AAC
   // audio track (192 kb/s). An error when ffmpeg cannot be started.
   static Result<std::unique_ptr<VideoPipe>> open(const std::filesystem::path& path,
                                                  std::uint32_t width, std::uint32_t height, int fps,
-                                                 const std::filesystem::path& audio_wav = {});
+                                                 const std::filesystem::path& audio_wav = {},
+                                                 const VideoEncoding& encoding = {});
   ~VideoPipe();
   VideoPipe(const VideoPipe&) = delete;
   VideoPipe& operator=(const VideoPipe&) = delete;
