@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/splitmix64.hpp"
+
 namespace tutti::scene {
 
 std::size_t Scene::shot_at(double t_s) const {
@@ -20,11 +22,8 @@ int Scene::find_camera(std::string_view name) const {
 }
 
 std::uint64_t derive_seed(std::uint64_t scene_seed, std::uint64_t stream) {
-  // splitmix64 (Steele, Lea, Flood 2014) of the scene seed advanced by `stream` + 1 steps.
-  std::uint64_t z = scene_seed + (stream + 1) * 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+  // The generator's output after `stream` + 1 steps from the scene seed.
+  return splitmix64(scene_seed + stream * kSplitmixGamma);
 }
 
 std::string_view stance_name(Stance stance) {

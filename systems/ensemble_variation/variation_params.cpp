@@ -1,16 +1,8 @@
 #include "ensemble_variation/variation_params.hpp"
 
+#include "core/splitmix64.hpp"
+
 namespace tutti::ensemble {
-namespace {
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
-}  // namespace
 
 double unit_from_seed(std::uint64_t seed, std::uint64_t stream) {
   const std::uint64_t bits = splitmix64(splitmix64(seed) ^ (stream * 0xD1B54A32D192ED03ull));

@@ -7,17 +7,11 @@
 #include <numbers>
 #include <tuple>
 
+#include "core/splitmix64.hpp"
 #include "finger_motion/finger_chain.hpp"
 
 namespace tutti::key_action {
 namespace {
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
 double unit_interval(std::uint64_t bits) {  // (0, 1)
   return (static_cast<double>(bits >> 11) + 0.5) * (1.0 / 9007199254740992.0);
