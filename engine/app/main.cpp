@@ -7,6 +7,7 @@
 #include "app/brass_command.hpp"
 #include "app/concat_command.hpp"
 #include "app/exit_codes.hpp"
+#include "app/export_command.hpp"
 #include "app/fingering_command.hpp"
 #include "app/fit_fingering_command.hpp"
 #include "app/info_command.hpp"
@@ -40,6 +41,21 @@ int main(int argc, char** argv) {
   concat_cmd->add_option("--soundfont", concat.soundfont, "General MIDI .sf2");
   concat_cmd->add_option("--assets", concat.assets, "folder of the generated .glb assets");
   concat_cmd->add_flag("--no-audio", concat_no_audio, "no sound track");
+
+  tutti::app::ExportOptions exporting;
+  CLI::App* export_cmd = app.add_subcommand(
+      "export",
+      "Write the scene as binary glTF 2.0: characters, hands, piano, instruments and props with "
+      "the performance baked as animation (one clip per performer plus the whole scene)");
+  export_cmd->add_option("SCENE", exporting.scene, "scene file (.json)")->required();
+  export_cmd->add_option("-o,--output", exporting.output, "performance.glb")->required();
+  export_cmd->add_option("--fps", exporting.fps, "keyframe rate (default: the scene's)");
+  export_cmd->add_option("--seconds", exporting.seconds,
+                         "A:B: the frames whose times are in [A, B)");
+  export_cmd->add_option("--frames", exporting.frames,
+                         "A:B: frames A (inclusive) to B (exclusive)");
+  export_cmd->add_option("--assets", exporting.assets, "folder of the generated .glb assets");
+  export_cmd->add_flag("--json", exporting.json_summary, "print the summary as JSON");
 
   tutti::app::PerformOptions perform;
   CLI::App* perform_cmd = app.add_subcommand(
@@ -197,6 +213,7 @@ int main(int argc, char** argv) {
     concat.audio = !concat_no_audio;
     return tutti::app::run_concat(concat, std::cout, std::cerr);
   }
+  if (*export_cmd) return tutti::app::run_export(exporting, std::cout, std::cerr);
   if (*perform_cmd) return tutti::app::run_perform(perform, std::cout, std::cerr);
   if (*fingering_cmd) return tutti::app::run_fingering(fingering, std::cout, std::cerr);
   if (*fit_cmd) return tutti::app::run_fit_fingering(fit, std::cout, std::cerr);
