@@ -1,0 +1,106 @@
+# `cmake --install`: tutti as a relocatable CMake package (docs/embedding.md, "Using the installed
+# package"). Installed: the libraries below and their headers (include/tutti/<folder>/*.hpp, the
+# same paths the code includes), lib/cmake/tutti/ (tuttiConfig.cmake, tuttiConfigVersion.cmake,
+# tuttiTargets.cmake), and the data: content/ and the generated .glb assets under share/tutti/
+# (the rules are in content/CMakeLists.txt and content/generator/CMakeLists.txt).
+# Components: "dev" (headers, libraries, CMake files) and "data" (content, assets).
+include(CMakePackageConfigHelpers)
+
+# The libraries a game links, exported as tutti::<name> (tutti_core -> tutti::core). Their
+# include directories are $<BUILD_INTERFACE:...> / $<INSTALL_INTERFACE:include/tutti> and
+# tutti_warnings is $<BUILD_INTERFACE:...> in their link lines, so neither the source tree nor
+# the warning flags reach a consumer.
+set(TUTTI_EXPORTED_TARGETS
+  tutti_core tutti_ecs tutti_components tutti_music tutti_audio tutti_content tutti_image
+  tutti_model tutti_render tutti_render_window tutti_shader_compiler tutti_scene tutti_stage
+  tutti_runtime tutti_runtime_imgui tutti_live
+  tutti_piano_model tutti_fingering_planner tutti_brass_planner tutti_spline_motion
+  tutti_piano_performance tutti_finger_motion tutti_key_action tutti_note_sounding
+  tutti_brass_model tutti_brass_motion tutti_ensemble_variation tutti_audio_sync)
+# Libraries of the programs and the tests, not installed.
+set(TUTTI_INTERNAL_TARGETS
+  tutti_warnings tutti_app tutti_app_play tutti_app_stream_report tutti_content_generator_lib
+  tutti_editor_core tutti_editor_ui)
+
+# tutti::tutti: everything a game needs (staging, the runtime, the renderer and its window, the
+# sound, live input, every system). Not in it: tutti::runtime_imgui (Dear ImGui) and
+# tutti::shader_compiler (glslang, for shader hot reload); link those by name.
+add_library(tutti_all INTERFACE)
+add_library(tutti::tutti ALIAS tutti_all)
+set_target_properties(tutti_all PROPERTIES EXPORT_NAME tutti)
+set(_tutti_umbrella ${TUTTI_EXPORTED_TARGETS})
+list(REMOVE_ITEM _tutti_umbrella tutti_runtime_imgui tutti_shader_compiler)
+target_link_libraries(tutti_all INTERFACE ${_tutti_umbrella})
+
+foreach(target IN LISTS TUTTI_EXPORTED_TARGETS)
+  string(REGEX REPLACE "^tutti_" "" name ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
+  # The headers are C++20 (the same -std as the build: CMAKE_CXX_STANDARD is 20).
+  get_target_property(type ${target} TYPE)
+  if(type STREQUAL "INTERFACE_LIBRARY")
+    target_compile_features(${target} INTERFACE cxx_std_20)
+  else()
+    target_compile_features(${target} PUBLIC cxx_std_20)
+  endif()
+endforeach()
+
+# A new library must be put in one of the two lists: exported (then its CMakeLists needs the
+# generator expressions above) or internal.
+function(_tutti_check_library_lists dir)
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  foreach(target IN LISTS targets)
+    get_target_property(type ${target} TYPE)
+    if(target MATCHES "^tutti_" AND type MATCHES "_LIBRARY$" AND NOT target STREQUAL "tutti_all"
+       AND NOT target IN_LIST TUTTI_EXPORTED_TARGETS AND NOT target IN_LIST TUTTI_INTERNAL_TARGETS)
+      message(WARNING "${target} (${dir}) is in neither TUTTI_EXPORTED_TARGETS nor "
+                      "TUTTI_INTERNAL_TARGETS (cmake/tutti_package.cmake)")
+    endif()
+  endforeach()
+  get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(subdir IN LISTS subdirs)
+    _tutti_check_library_lists(${subdir})
+  endforeach()
+endfunction()
+_tutti_check_library_lists(${PROJECT_SOURCE_DIR})
+
+# The public headers: every .hpp in the folders of the exported libraries, at its path relative
+# to the include root (engine/, systems/ or the top folder for components/). The same list feeds
+# tests/package (each header compiled on its own).
+set(TUTTI_PUBLIC_HEADERS)       # as included: "model/model_asset.hpp"
+set(TUTTI_PUBLIC_HEADER_FILES)  # the files in the source tree
+set(_tutti_header_trees)
+foreach(target IN LISTS TUTTI_EXPORTED_TARGETS)
+  get_target_property(dir ${target} SOURCE_DIR)
+  list(APPEND _tutti_header_trees ${dir})
+endforeach()
+list(REMOVE_DUPLICATES _tutti_header_trees)
+foreach(tree IN LISTS _tutti_header_trees)
+  get_filename_component(root ${tree} DIRECTORY)
+  file(GLOB_RECURSE headers CONFIGURE_DEPENDS RELATIVE ${root} ${tree}/*.hpp)
+  list(SORT headers)
+  foreach(header IN LISTS headers)
+    list(APPEND TUTTI_PUBLIC_HEADERS ${header})
+    list(APPEND TUTTI_PUBLIC_HEADER_FILES ${root}/${header})
+    get_filename_component(header_dir ${header} DIRECTORY)
+    install(FILES ${root}/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tutti/${header_dir}
+            COMPONENT dev)
+  endforeach()
+endforeach()
+
+set(TUTTI_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/tutti)
+
+install(TARGETS ${TUTTI_EXPORTED_TARGETS} tutti_all EXPORT tuttiTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
+install(EXPORT tuttiTargets NAMESPACE tutti:: DESTINATION ${TUTTI_INSTALL_CMAKEDIR} COMPONENT dev)
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/tuttiConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/package/tuttiConfig.cmake
+                              INSTALL_DESTINATION ${TUTTI_INSTALL_CMAKEDIR}
+                              PATH_VARS TUTTI_INSTALL_CONTENT_DIR TUTTI_INSTALL_ASSET_DIR)
+# 0.x: a minor version may break the interface.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/package/tuttiConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/package/tuttiConfig.cmake
+              ${PROJECT_BINARY_DIR}/package/tuttiConfigVersion.cmake
+        DESTINATION ${TUTTI_INSTALL_CMAKEDIR} COMPONENT dev)

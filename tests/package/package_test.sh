@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# The installed package, used as a game would (docs/embedding.md, "Using the installed package"):
+# installs the build into a fresh prefix, checks what was installed, builds the consumer project
+# (tests/package/consumer) against it and runs it on a scene from the installed share/ folder
+# with the source and build trees out of its reach.
+#
+#   package_test.sh SOURCE_DIR BUILD_DIR CMAKE CTEST CXX_COMPILER GENERATOR [BUILD_TYPE]
+#
+# Exit 0: passed; 77: no Vulkan device (ctest: skipped); anything else: failed.
+set -euo pipefail
+
+src=$(realpath "$1")
+build=$(realpath "$2")
+cmake=$3
+ctest=$4
+cxx=$5
+generator=$6
+build_type=${7:-}
+
+fail() {
+  echo "package test: $*" >&2
+  exit 1
+}
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/tutti-package.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+case "$tmp/" in
+  "$src"/* | "$build"/*) fail "the temporary folder $tmp must be outside $src and $build" ;;
+esac
+prefix=$tmp/prefix
+
+# 1. Install, as a user would.
+start=$SECONDS
+"$cmake" --install "$build" --prefix "$prefix" >"$tmp/install.log" || {
+  cat "$tmp/install.log"
+  fail "cmake --install failed"
+}
+echo "installed into $prefix: $(du -sh "$prefix" | cut -f1), $((SECONDS - start)) s"
+
+# 2. What was installed.
+cmakedir=$prefix/lib/cmake/tutti
+for file in tuttiConfig.cmake tuttiConfigVersion.cmake tuttiTargets.cmake; do
+  [ -f "$cmakedir/$file" ] || fail "missing $cmakedir/$file"
+done
+# Relocatable: no path of this machine's trees in the CMake files.
+if grep -rnF -e "$src" -e "$build" "$cmakedir"; then
+  fail "the installed CMake files mention the source or build tree (above)"
+fi
+# Headers only: no sources, no tests.
+if find "$prefix" \( -name '*.cpp' -o -name '*_test.*' -o -name 'CMakeLists.txt' \) | grep .; then
+  fail "sources or test files installed (above)"
+fi
+# Every header's "..." include is another installed header (a header including, say,
+# "app/..." compiles in the build tree, whose include roots hold more than was installed).
+include_root=$prefix/include/tutti
+unresolved=0
+while IFS=: read -r header included; do
+  if [ ! -f "$include_root/$included" ] && [ ! -f "$(dirname "$header")/$included" ]; then
+    echo "${header#"$include_root"/}: #include \"$included\" is not installed" >&2
+    unresolved=1
+  fi
+done < <(grep -rHo --include='*.hpp' '^#include "[^"]*"' "$include_root" |
+         sed 's/:#include "\(.*\)"$/:\1/')
+[ "$unresolved" -eq 0 ] || fail "headers include files that are not installed (above)"
+content=$prefix/share/tutti/content
+assets=$prefix/share/tutti/assets
+[ -f "$content/scenes/piano.json" ] || fail "missing $content/scenes/piano.json"
+[ -f "$content/piano/keyboard.json" ] || fail "missing $content/piano/keyboard.json"
+[ -f "$assets/piano.glb" ] || fail "missing $assets/piano.glb"
+
+# 3. The consumer, copied out of the source tree with the example it builds.
+mkdir "$tmp/consumer"
+cp "$src/tests/package/consumer/CMakeLists.txt" "$src/engine/runtime/examples/embed_example.cpp" \
+  "$tmp/consumer/"
+start=$SECONDS
+"$cmake" -S "$tmp/consumer" -B "$tmp/consumer-build" -G "$generator" \
+  -DCMAKE_BUILD_TYPE="$build_type" -DCMAKE_CXX_COMPILER="$cxx" \
+  -DCMAKE_PREFIX_PATH="$prefix" >"$tmp/configure.log" || {
+  cat "$tmp/configure.log"
+  fail "configuring the consumer failed"
+}
+"$cmake" --build "$tmp/consumer-build" || fail "building the consumer failed"
+echo "consumer configured and built in $((SECONDS - start)) s"
+if grep -rlIF -e "$src" -e "$build" "$tmp/consumer-build"; then
+  fail "the consumer's build files refer to the source or build tree (above)"
+fi
+grep -q "^tutti_DIR:PATH=$cmakedir\$" "$tmp/consumer-build/CMakeCache.txt" ||
+  fail "the consumer did not find tutti in $cmakedir"
+
+# 4. Run it on the installed scene, data and models (its ctest sets TUTTI_CONTENT_DIR and
+#    TUTTI_ASSET_DIR from tutti_CONTENT_DIR / tutti_ASSET_DIR), with the source and build trees
+#    hidden (empty folders mounted over them in a private mount namespace) where unprivileged
+#    namespaces are allowed, else with every file access traced (strace) and checked.
+run=("$ctest" --test-dir "$tmp/consumer-build" --verbose)
+cd "$tmp"
+start=$SECONDS
+set +e
+if unshare --user --map-root-user --mount true 2>/dev/null; then
+  echo "running the consumer with $src and $build hidden"
+  # The build folder first: it may be inside the source folder.
+  unshare --user --map-root-user --mount -- sh -c \
+    'mount -t tmpfs tutti-hidden "$1" && mount -t tmpfs tutti-hidden "$2" && shift 2 && exec "$@"' \
+    sh "$build" "$src" "${run[@]}" 2>&1 | tee "$tmp/run.log"
+  status=${PIPESTATUS[0]}
+elif strace -f -qq -e trace=%file -o /dev/null true 2>/dev/null; then
+  echo "running the consumer under strace"
+  strace -f -qq -e trace=%file -o "$tmp/strace.log" "${run[@]}" 2>&1 | tee "$tmp/run.log"
+  status=${PIPESTATUS[0]}
+  # ctest itself looks at its own files only; the program must not look in the trees.
+  if grep -qF -e "\"$src" -e "\"$build" "$tmp/strace.log"; then
+    grep -F -e "\"$src" -e "\"$build" "$tmp/strace.log" | head -20
+    fail "the consumer accessed the source or build tree (above)"
+  fi
+else
+  echo "running the consumer (neither unshare nor strace available: the trees stay visible)"
+  "${run[@]}" 2>&1 | tee "$tmp/run.log"
+  status=${PIPESTATUS[0]}
+fi
+set -e
+echo "consumer ran in $((SECONDS - start)) s"
+[ "$status" -eq 0 ] || fail "the consumer's test failed (exit $status)"
+if grep -q '\*\*\*Skipped' "$tmp/run.log"; then
+  echo "package test: no Vulkan device, the consumer's run was skipped"
+  exit 77
+fi
+grep -q "embed: 5 frames of $content/scenes/piano.json" "$tmp/run.log" ||
+  fail "the consumer did not render the installed scene"
+echo "package test: passed"
