@@ -115,7 +115,7 @@ class Writer {
     std::vector<int> scene_roots;
     std::vector<std::string> clip_order;
     for (const stage::BrassSeat& seat : stage_.brass) clip_order.push_back(seat.name);
-    if (stage_.pianist) clip_order.push_back("pianist");
+    if (stage_.pianist) clip_order.push_back(pianist_clip_name(stage_));
 
     for (std::size_t i = 0; i < stage_.placed.size(); ++i) {
       write_instance(i, labels[i], samples[i], scene_roots);
@@ -522,10 +522,11 @@ std::vector<InstanceLabel> label_instances(const stage::Stage& stage) {
   }
   if (stage.pianist) {
     const stage::PianistSeat& p = *stage.pianist;
-    set(p.piano, "piano", "pianist");
-    set(p.hand_models[0], "pianist hand_r", "pianist");
-    set(p.hand_models[1], "pianist hand_l", "pianist");
-    if (p.body) set(*p.body, "pianist", "pianist");
+    const std::string pianist = pianist_clip_name(stage);
+    set(p.piano, "piano", pianist);
+    set(p.hand_models[0], pianist + " hand_r", pianist);
+    set(p.hand_models[1], pianist + " hand_l", pianist);
+    if (p.body) set(*p.body, pianist, pianist);
   }
   std::set<std::string> taken;
   for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -543,6 +544,12 @@ std::vector<InstanceLabel> label_instances(const stage::Stage& stage) {
     labels[i].name = name;
   }
   return labels;
+}
+
+std::string pianist_clip_name(const stage::Stage& stage) {
+  const bool taken = std::any_of(stage.brass.begin(), stage.brass.end(),
+                                 [](const stage::BrassSeat& s) { return s.name == "pianist"; });
+  return taken ? "pianist (piano)" : "pianist";
 }
 
 std::string whole_scene_clip_name(const stage::Stage& stage) {

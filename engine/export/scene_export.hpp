@@ -60,6 +60,9 @@ struct ExportSummary {
 Result<ExportSummary> export_performance(stage::Stage& stage, const ExportRange& range,
                                          const KeyTolerances& tolerances = {});
 
+// The pianist's clip (and their instances' name): "pianist", or "pianist (piano)" when a brass
+// performer is called "pianist".
+std::string pianist_clip_name(const stage::Stage& stage);
 // The name of the whole-scene clip: "scene", or "scene (all)" when a performer is called "scene".
 std::string whole_scene_clip_name(const stage::Stage& stage);
 

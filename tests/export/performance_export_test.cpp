@@ -280,6 +280,28 @@ TEST(PerformanceExport, TheSameStageGivesTheSameBytes) {
   EXPECT_EQ(first->glb, again->glb);
 }
 
+// Players called "scene" and "pianist" keep their names; the whole-scene clip steps aside.
+TEST(PerformanceExport, ClipNamesStayDistinct) {
+  std::ifstream in(kSource / "content" / "scenes" / "quartet.json");
+  json document = json::parse(in);
+  document["performers"][0]["name"] = "scene";
+  document["performers"][1]["name"] = "pianist";
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("tutti-export-names-" + std::to_string(getpid()) + ".json");
+  document["music"] = (kSource / "content" / "music" / "quartet.musicxml").string();
+  std::ofstream(file) << document.dump();
+  auto stage = build(file);
+  std::filesystem::remove(file);
+  ASSERT_TRUE(stage);
+  auto exported = export_performance(*stage, {30, 60, 30});
+  ASSERT_TRUE(exported) << exported.error().message;
+  std::set<std::string> names;
+  for (const ClipSummary& clip : exported->clips) names.insert(clip.name);
+  EXPECT_EQ(names.size(), exported->clips.size());
+  EXPECT_TRUE(names.count("scene") && names.count("pianist") && names.count("scene (all)"));
+  EXPECT_EQ(pianist_clip_name(*stage), "pianist (piano)");
+}
+
 TEST(PerformanceExport, AnEmptyRangeIsAnError) {
   auto stage = build(kSource / "content" / "scenes" / "piano.json");
   ASSERT_TRUE(stage);
