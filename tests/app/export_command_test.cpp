@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/exit_codes.hpp"
+#include "command_run.hpp"
 #include "core/file_io.hpp"
 #include "testdata.hpp"
 
@@ -19,21 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using test::CommandRun;
 
-CommandRun run(const ExportOptions& options) {
-  std::ostringstream out;
-  std::ostringstream err;
-  CommandRun r;
-  r.code = run_export(options, out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
-}
+CommandRun run(const ExportOptions& options) { return test::run_command(run_export, options); }
 
 const fs::path kScenes = tutti::test::source_dir() / "content" / "scenes";
 

@@ -14,6 +14,7 @@
 
 #include "app/exit_codes.hpp"
 #include "app/fingering_output.hpp"
+#include "command_run.hpp"
 #include "core/file_io.hpp"
 #include "music/load_score.hpp"
 #include "music/pig/pig_format.hpp"
@@ -24,20 +25,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using test::CommandRun;
 
 CommandRun run(const FingeringOptions& options) {
-  std::ostringstream out;
-  std::ostringstream err;
-  CommandRun r;
-  r.code = run_fingering(options, out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
+  return test::run_command(run_fingering, options);
 }
 
 std::string bytes_of(const fs::path& path) {

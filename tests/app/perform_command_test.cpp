@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/exit_codes.hpp"
+#include "command_run.hpp"
 #include "core/file_io.hpp"
 #include "music/load_score.hpp"
 #include "testdata.hpp"
@@ -19,21 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using test::CommandRun;
 
-CommandRun run(const PerformOptions& options) {
-  std::ostringstream out;
-  std::ostringstream err;
-  CommandRun r;
-  r.code = run_perform(options, out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
-}
+CommandRun run(const PerformOptions& options) { return test::run_command(run_perform, options); }
 
 const fs::path kDemo = tutti::test::source_dir() / "content" / "music" / "ode_to_joy.musicxml";
 
