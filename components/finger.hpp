@@ -7,8 +7,8 @@
 // abduction (`abduction_rad`), then `mcp_flexion_rad` (thumb MCP) and `pip_flexion_rad` (thumb IP);
 // its `dip_flexion_rad` stays 0.
 
-#include "components/hand_side.hpp"
-#include "ecs/entity.hpp"
+#include <tutti/components/hand_side.hpp>
+#include <tutti/ecs/entity.hpp>
 
 namespace tutti::components {
 

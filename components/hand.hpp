@@ -2,9 +2,9 @@
 // One of a pianist's hands. Written every frame by the finger-motion system (Phase::evaluate)
 // from the planned hand path; read by posing (skeleton) and rendering.
 
-#include "components/hand_side.hpp"
-#include "components/transform.hpp"
-#include "ecs/entity.hpp"
+#include <tutti/components/hand_side.hpp>
+#include <tutti/components/transform.hpp>
+#include <tutti/ecs/entity.hpp>
 
 namespace tutti::components {
 

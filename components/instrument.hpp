@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "ecs/entity.hpp"
+#include <tutti/ecs/entity.hpp>
 
 namespace tutti::components {
 

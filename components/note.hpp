@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "components/hand_side.hpp"
-#include "ecs/entity.hpp"
+#include <tutti/components/hand_side.hpp>
+#include <tutti/ecs/entity.hpp>
 
 namespace tutti::components {
 

@@ -1,4 +1,4 @@
-#include "editor/atomic_file.hpp"
+#include <tutti/editor/atomic_file.hpp>
 
 #include <fcntl.h>
 #include <sys/stat.h>

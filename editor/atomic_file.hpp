@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::editor {
 

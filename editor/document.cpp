@@ -1,11 +1,11 @@
-#include "editor/document.hpp"
+#include <tutti/editor/document.hpp>
 
 #include <fstream>
 #include <sstream>
 
-#include "editor/atomic_file.hpp"
-#include "editor/scene_json_format.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/editor/atomic_file.hpp>
+#include <tutti/editor/scene_json_format.hpp>
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::editor {
 namespace {

@@ -1,4 +1,4 @@
-#include "editor/editor_app.hpp"
+#include <tutti/editor/editor_app.hpp>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -8,16 +8,16 @@
 #include <cstdlib>
 #include <ostream>
 
-#include "app/exit_codes.hpp"
-#include "editor/editor_ui.hpp"
-#include "editor/script.hpp"
-#include "editor/session.hpp"
-#include "image/png.hpp"
-#include "render/window.hpp"
-#include "render/window_target.hpp"
-#include "runtime/imgui_layer.hpp"
-#include "runtime/input_bindings.hpp"
-#include "runtime/scene_player.hpp"
+#include <tutti/cli/exit_codes.hpp>
+#include <tutti/editor/editor_ui.hpp>
+#include <tutti/editor/script.hpp>
+#include <tutti/editor/session.hpp>
+#include <tutti/image/png.hpp>
+#include <tutti/render/window.hpp>
+#include <tutti/render/window_target.hpp>
+#include <tutti/runtime/imgui_layer.hpp>
+#include <tutti/runtime/input_bindings.hpp>
+#include <tutti/runtime/scene_player.hpp>
 
 namespace tutti::editor {
 namespace {

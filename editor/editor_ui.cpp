@@ -1,4 +1,4 @@
-#include "editor/editor_ui.hpp"
+#include <tutti/editor/editor_ui.hpp>
 
 #include <imgui.h>
 
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ensemble_variation/variation_params.hpp"
+#include <tutti/ensemble_variation/variation_params.hpp>
 
 namespace tutti::editor {
 namespace {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "editor/session.hpp"
+#include <tutti/editor/session.hpp>
 
 namespace tutti::editor {
 

@@ -2,7 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "editor/editor_app.hpp"
+#include <tutti/editor/editor_app.hpp>
 
 int main(int argc, char** argv) {
   CLI::App app{"tutti-editor: tweak a scene's performance and see and hear it at once"};

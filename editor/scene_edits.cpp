@@ -1,4 +1,4 @@
-#include "editor/scene_edits.hpp"
+#include <tutti/editor/scene_edits.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -15,9 +15,9 @@
 #include <string>
 #include <string_view>
 
-#include "core/result.hpp"
-#include "editor/json_edit.hpp"
-#include "scene/scene.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/editor/json_edit.hpp>
+#include <tutti/scene/scene.hpp>
 
 namespace tutti::editor {
 

@@ -1,4 +1,4 @@
-#include "editor/scene_json_format.hpp"
+#include <tutti/editor/scene_json_format.hpp>
 
 #include <algorithm>
 

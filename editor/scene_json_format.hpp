@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "editor/json_edit.hpp"
+#include <tutti/editor/json_edit.hpp>
 
 namespace tutti::editor {
 

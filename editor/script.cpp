@@ -1,4 +1,4 @@
-#include "editor/script.hpp"
+#include <tutti/editor/script.hpp>
 
 #include <cerrno>
 #include <cmath>

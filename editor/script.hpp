@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "core/result.hpp"
-#include "editor/session.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/editor/session.hpp>
 
 namespace tutti::editor {
 

@@ -1,4 +1,4 @@
-#include "editor/session.hpp"
+#include <tutti/editor/session.hpp>
 
 #include <chrono>
 

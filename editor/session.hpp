@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <memory>
 
-#include "core/result.hpp"
-#include "editor/document.hpp"
-#include "editor/scene_edits.hpp"
-#include "editor/timeline.hpp"
-#include "stage/stage.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/editor/document.hpp>
+#include <tutti/editor/scene_edits.hpp>
+#include <tutti/editor/timeline.hpp>
+#include <tutti/stage/stage.hpp>
 
 namespace tutti::editor {
 

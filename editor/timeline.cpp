@@ -1,12 +1,12 @@
-#include "editor/timeline.hpp"
+#include <tutti/editor/timeline.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include "brass_motion/plan_brass_player.hpp"
-#include "ensemble_variation/ensemble_plan.hpp"
-#include "finger_motion/finger_pose_system.hpp"
-#include "music/meter.hpp"
+#include <tutti/brass_motion/plan_brass_player.hpp>
+#include <tutti/ensemble_variation/ensemble_plan.hpp>
+#include <tutti/finger_motion/finger_pose_system.hpp>
+#include <tutti/music/meter.hpp>
 
 namespace tutti::editor {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
-#include "stage/stage.hpp"
+#include <tutti/scene/scene.hpp>
+#include <tutti/stage/stage.hpp>
 
 namespace tutti::editor {
 

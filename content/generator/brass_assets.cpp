@@ -1,11 +1,11 @@
-#include "generator/brass_assets.hpp"
+#include <tutti/generator/brass_assets.hpp>
 
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
 
-#include "generator/gltf_builder.hpp"
+#include <tutti/generator/gltf_builder.hpp>
 
 namespace tutti::content_generator {
 namespace {

@@ -1,9 +1,9 @@
-#include "generator/dimensions.hpp"
+#include <tutti/generator/dimensions.hpp>
 
 #include <array>
 #include <nlohmann/json.hpp>
 
-#include "content/json_reader.hpp"
+#include <tutti/content/json_reader.hpp>
 
 namespace tutti::content_generator {
 namespace {

@@ -1,17 +1,17 @@
-#include "generator/generate.hpp"
+#include <tutti/generator/generate.hpp>
 
 #include <sstream>
 #include <system_error>
 
-#include "brass_model/instrument.hpp"
-#include "core/file_io.hpp"
-#include "generator/brass_assets.hpp"
-#include "generator/hand_asset.hpp"
-#include "generator/performer_asset.hpp"
-#include "generator/piano_asset.hpp"
-#include "generator/props.hpp"
-#include "generator/stage_asset.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/brass_model/instrument.hpp>
+#include <tutti/core/file_io.hpp>
+#include <tutti/generator/brass_assets.hpp>
+#include <tutti/generator/hand_asset.hpp>
+#include <tutti/generator/performer_asset.hpp>
+#include <tutti/generator/piano_asset.hpp>
+#include <tutti/generator/props.hpp>
+#include <tutti/generator/stage_asset.hpp>
+#include <tutti/piano_model/keyboard.hpp>
 
 namespace tutti::content_generator {
 

@@ -1,4 +1,4 @@
-#include "generator/gltf_builder.hpp"
+#include <tutti/generator/gltf_builder.hpp>
 
 #include <algorithm>
 #include <cmath>

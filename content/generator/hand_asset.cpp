@@ -1,4 +1,4 @@
-#include "generator/hand_asset.hpp"
+#include <tutti/generator/hand_asset.hpp>
 
 #include <algorithm>
 

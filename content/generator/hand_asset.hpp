@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "generator/gltf_builder.hpp"
-#include "generator/hand_rig.hpp"
+#include <tutti/generator/gltf_builder.hpp>
+#include <tutti/generator/hand_rig.hpp>
 
 namespace tutti::content_generator {
 

@@ -1,12 +1,12 @@
-#include "generator/hand_rig.hpp"
+#include <tutti/generator/hand_rig.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include "content/json_reader.hpp"
-#include "finger_motion/finger_chain.hpp"
-#include "finger_motion/finger_motion_params.hpp"
-#include "piano_model/hand_model.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/content/json_reader.hpp>
+#include <tutti/finger_motion/finger_chain.hpp>
+#include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/piano_model/hand_model.hpp>
+#include <tutti/piano_model/keyboard.hpp>
 
 namespace tutti::content_generator {
 namespace {

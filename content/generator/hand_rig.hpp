@@ -13,8 +13,8 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
-#include "components/hand_side.hpp"
-#include "core/result.hpp"
+#include <tutti/components/hand_side.hpp>
+#include <tutti/core/result.hpp>
 
 namespace tutti::content_generator {
 

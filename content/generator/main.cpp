@@ -2,8 +2,8 @@
 #include <cstdio>
 #include <string>
 
-#include "content/content_dir.hpp"
-#include "generator/generate.hpp"
+#include <tutti/content/content_dir.hpp>
+#include <tutti/generator/generate.hpp>
 
 int main(int argc, char** argv) {
   std::filesystem::path out_dir;

@@ -1,4 +1,4 @@
-#include "generator/performer_asset.hpp"
+#include <tutti/generator/performer_asset.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "generator/gltf_builder.hpp"
-#include "generator/hand_asset.hpp"
+#include <tutti/generator/gltf_builder.hpp>
+#include <tutti/generator/hand_asset.hpp>
 
 namespace tutti::content_generator {
 namespace {

@@ -10,8 +10,8 @@
 
 #include <tiny_gltf.h>
 
-#include "generator/dimensions.hpp"
-#include "generator/hand_rig.hpp"
+#include <tutti/generator/dimensions.hpp>
+#include <tutti/generator/hand_rig.hpp>
 
 namespace tutti::content_generator {
 

@@ -1,8 +1,8 @@
-#include "generator/piano_asset.hpp"
+#include <tutti/generator/piano_asset.hpp>
 
 #include <string>
 
-#include "generator/gltf_builder.hpp"
+#include <tutti/generator/gltf_builder.hpp>
 
 namespace tutti::content_generator {
 namespace {

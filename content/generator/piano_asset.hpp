@@ -10,8 +10,8 @@
 
 #include <tiny_gltf.h>
 
-#include "generator/dimensions.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/generator/dimensions.hpp>
+#include <tutti/piano_model/keyboard.hpp>
 
 namespace tutti::content_generator {
 

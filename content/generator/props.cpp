@@ -1,8 +1,8 @@
-#include "generator/props.hpp"
+#include <tutti/generator/props.hpp>
 
 #include <numbers>
 
-#include "generator/gltf_builder.hpp"
+#include <tutti/generator/gltf_builder.hpp>
 
 namespace tutti::content_generator {
 namespace {

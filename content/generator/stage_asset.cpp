@@ -1,8 +1,8 @@
-#include "generator/stage_asset.hpp"
+#include <tutti/generator/stage_asset.hpp>
 
 #include <cmath>
 
-#include "generator/gltf_builder.hpp"
+#include <tutti/generator/gltf_builder.hpp>
 
 namespace tutti::content_generator {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <tiny_gltf.h>
 
-#include "generator/dimensions.hpp"
+#include <tutti/generator/dimensions.hpp>
 
 namespace tutti::content_generator {
 

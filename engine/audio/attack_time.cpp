@@ -1,4 +1,4 @@
-#include "audio/attack_time.hpp"
+#include <tutti/audio/attack_time.hpp>
 
 #include <algorithm>
 #include <array>
@@ -6,8 +6,8 @@
 #include <map>
 #include <tuple>
 
-#include "audio/offline_synth.hpp"
-#include "audio/onset_detection.hpp"
+#include <tutti/audio/offline_synth.hpp>
+#include <tutti/audio/onset_detection.hpp>
 
 namespace tutti::audio {
 namespace {

@@ -22,9 +22,9 @@
 #include <span>
 #include <vector>
 
-#include "audio/onset_detection.hpp"
-#include "audio/synth_events.hpp"
-#include "core/result.hpp"
+#include <tutti/audio/onset_detection.hpp>
+#include <tutti/audio/synth_events.hpp>
+#include <tutti/core/result.hpp>
 
 namespace tutti::audio {
 

@@ -1,4 +1,4 @@
-#include "audio/fluid_synth_util.hpp"
+#include <tutti/audio/fluid_synth_util.hpp>
 
 #include <mutex>
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "audio/synth_events.hpp"
+#include <tutti/audio/synth_events.hpp>
 
 namespace tutti::audio {
 

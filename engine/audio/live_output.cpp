@@ -1,10 +1,10 @@
-#include "audio/live_output.hpp"
+#include <tutti/audio/live_output.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "audio/fluid_synth_util.hpp"
+#include <tutti/audio/fluid_synth_util.hpp>
 
 namespace tutti::audio {
 

@@ -20,8 +20,8 @@
 #include <memory>
 #include <string>
 
-#include "audio/synth_events.hpp"
-#include "core/result.hpp"
+#include <tutti/audio/synth_events.hpp>
+#include <tutti/core/result.hpp>
 
 namespace tutti::audio {
 

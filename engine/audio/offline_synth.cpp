@@ -1,4 +1,4 @@
-#include "audio/offline_synth.hpp"
+#include <tutti/audio/offline_synth.hpp>
 
 #include <fluidsynth.h>
 
@@ -8,7 +8,7 @@
 #include <mutex>
 #include <string>
 
-#include "audio/fluid_synth_util.hpp"
+#include <tutti/audio/fluid_synth_util.hpp>
 
 namespace tutti::audio {
 namespace {

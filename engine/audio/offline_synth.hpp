@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "audio/synth_events.hpp"
-#include "core/result.hpp"
+#include <tutti/audio/synth_events.hpp>
+#include <tutti/core/result.hpp>
 
 namespace tutti::audio {
 

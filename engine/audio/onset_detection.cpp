@@ -1,4 +1,4 @@
-#include "audio/onset_detection.hpp"
+#include <tutti/audio/onset_detection.hpp>
 
 #include <kiss_fftr.h>
 

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "audio/offline_synth.hpp"
+#include <tutti/audio/offline_synth.hpp>
 
 namespace tutti::audio {
 

@@ -1,4 +1,4 @@
-#include "audio/sound_font.hpp"
+#include <tutti/audio/sound_font.hpp>
 
 #include <cstdlib>
 #include <system_error>

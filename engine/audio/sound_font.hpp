@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::audio {
 

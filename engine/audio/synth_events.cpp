@@ -1,4 +1,4 @@
-#include "audio/synth_events.hpp"
+#include <tutti/audio/synth_events.hpp>
 
 #include <algorithm>
 #include <cmath>

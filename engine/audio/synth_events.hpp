@@ -12,8 +12,8 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::audio {
 

@@ -1,8 +1,8 @@
-#include "audio/wav_file.hpp"
+#include <tutti/audio/wav_file.hpp>
 
 #include <cstring>
 
-#include "core/file_io.hpp"
+#include <tutti/core/file_io.hpp>
 
 namespace tutti::audio {
 namespace {

@@ -7,8 +7,8 @@
 #include <span>
 #include <string>
 
-#include "audio/offline_synth.hpp"
-#include "core/result.hpp"
+#include <tutti/audio/offline_synth.hpp>
+#include <tutti/core/result.hpp>
 
 namespace tutti::audio {
 

@@ -1,4 +1,4 @@
-#include "content/content_dir.hpp"
+#include <tutti/content/content_dir.hpp>
 
 #include <cstdlib>
 

@@ -1,10 +1,10 @@
-#include "content/json_reader.hpp"
+#include <tutti/content/json_reader.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "core/file_io.hpp"
+#include <tutti/core/file_io.hpp>
 
 namespace tutti::content {
 

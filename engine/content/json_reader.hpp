@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::content {
 

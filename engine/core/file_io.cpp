@@ -1,4 +1,4 @@
-#include "core/file_io.hpp"
+#include <tutti/core/file_io.hpp>
 
 #include <fcntl.h>
 #include <unistd.h>

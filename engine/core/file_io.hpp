@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti {
 

@@ -1,4 +1,4 @@
-#include "ecs/schedule.hpp"
+#include <tutti/ecs/schedule.hpp>
 
 #include <stdexcept>
 #include <utility>

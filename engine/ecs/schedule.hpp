@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "ecs/world.hpp"
+#include <tutti/ecs/world.hpp>
 
 namespace tutti::ecs {
 

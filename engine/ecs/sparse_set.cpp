@@ -1,4 +1,4 @@
-#include "ecs/sparse_set.hpp"
+#include <tutti/ecs/sparse_set.hpp>
 
 #include <algorithm>
 #include <stdexcept>

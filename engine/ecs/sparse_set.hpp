@@ -24,8 +24,8 @@
 #include <utility>
 #include <vector>
 
-#include "ecs/entity.hpp"
-#include "ecs/type_name.hpp"
+#include <tutti/ecs/entity.hpp>
+#include <tutti/ecs/type_name.hpp>
 
 namespace tutti::ecs {
 

@@ -1,4 +1,4 @@
-#include "ecs/type_index.hpp"
+#include <tutti/ecs/type_index.hpp>
 
 #include <atomic>
 

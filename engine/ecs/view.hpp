@@ -32,8 +32,8 @@
 #include <type_traits>
 #include <utility>
 
-#include "ecs/entity.hpp"
-#include "ecs/sparse_set.hpp"
+#include <tutti/ecs/entity.hpp>
+#include <tutti/ecs/sparse_set.hpp>
 
 namespace tutti::ecs {
 

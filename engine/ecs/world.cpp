@@ -1,4 +1,4 @@
-#include "ecs/world.hpp"
+#include <tutti/ecs/world.hpp>
 
 #include <iterator>
 #include <stdexcept>

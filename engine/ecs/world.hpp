@@ -20,10 +20,10 @@
 #include <utility>
 #include <vector>
 
-#include "ecs/entity.hpp"
-#include "ecs/sparse_set.hpp"
-#include "ecs/type_index.hpp"
-#include "ecs/view.hpp"
+#include <tutti/ecs/entity.hpp>
+#include <tutti/ecs/sparse_set.hpp>
+#include <tutti/ecs/type_index.hpp>
+#include <tutti/ecs/view.hpp>
 
 namespace tutti::ecs {
 

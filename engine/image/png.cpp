@@ -1,10 +1,10 @@
 // The only translation unit with stb_image_write's implementation, compiled with warnings off
 // (third-party code).
-#include "image/png.hpp"
+#include <tutti/image/png.hpp>
 
 #include <string>
 
-#include "core/file_io.hpp"
+#include <tutti/core/file_io.hpp>
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBI_WRITE_NO_STDIO

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::image {
 

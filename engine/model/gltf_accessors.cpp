@@ -1,4 +1,4 @@
-#include "model/gltf_accessors.hpp"
+#include <tutti/model/gltf_accessors.hpp>
 
 #include <algorithm>
 #include <array>

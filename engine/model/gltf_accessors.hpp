@@ -14,7 +14,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::model::detail {
 

@@ -1,4 +1,4 @@
-#include "model/gltf_document.hpp"
+#include <tutti/model/gltf_document.hpp>
 
 #include <cstring>
 #include <exception>
@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "core/file_io.hpp"
+#include <tutti/core/file_io.hpp>
 
 namespace tutti::model::detail {
 namespace {

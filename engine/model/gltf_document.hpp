@@ -15,7 +15,7 @@
 #include <span>
 #include <string>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::model::detail {
 

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <set>
 
-#include "core/file_io.hpp"
-#include "model/gltf_accessors.hpp"
-#include "model/gltf_document.hpp"
-#include "model/model_asset.hpp"
-#include "model/node_hierarchy.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/model/gltf_accessors.hpp>
+#include <tutti/model/gltf_document.hpp>
+#include <tutti/model/model_asset.hpp>
+#include <tutti/model/node_hierarchy.hpp>
 
 namespace tutti::model {
 namespace {

@@ -1,4 +1,4 @@
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 
 namespace tutti::model {
 

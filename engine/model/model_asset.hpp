@@ -20,7 +20,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::model {
 

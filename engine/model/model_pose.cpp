@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 
 namespace tutti::model {
 

@@ -1,4 +1,4 @@
-#include "model/node_hierarchy.hpp"
+#include <tutti/model/node_hierarchy.hpp>
 
 #include <cmath>
 #include <functional>

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/result.hpp"
-#include "model/model_asset.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/model/model_asset.hpp>
 
 namespace tutti::model::detail {
 

@@ -1,4 +1,4 @@
-#include "music/general_midi.hpp"
+#include <tutti/music/general_midi.hpp>
 
 #include <array>
 

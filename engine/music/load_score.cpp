@@ -1,13 +1,13 @@
-#include "music/load_score.hpp"
+#include <tutti/music/load_score.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <string_view>
 
-#include "core/file_io.hpp"
-#include "music/midi/midi_reader.hpp"
-#include "music/musicxml/musicxml_reader.hpp"
-#include "music/pig/pig_format.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/midi/midi_reader.hpp>
+#include <tutti/music/musicxml/musicxml_reader.hpp>
+#include <tutti/music/pig/pig_format.hpp>
 
 namespace tutti::music {
 

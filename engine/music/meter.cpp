@@ -1,4 +1,4 @@
-#include "music/meter.hpp"
+#include <tutti/music/meter.hpp>
 
 #include <cmath>
 

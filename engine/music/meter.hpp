@@ -2,7 +2,7 @@
 // Bars and beats from a score's time signatures: which bar a moment falls in (for messages), and
 // how long a beat is there (for rules stated in beats, such as where a player breathes).
 
-#include "music/score.hpp"
+#include <tutti/music/score.hpp>
 
 namespace tutti::music {
 

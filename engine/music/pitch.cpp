@@ -1,4 +1,4 @@
-#include "music/pitch.hpp"
+#include <tutti/music/pitch.hpp>
 
 #include <array>
 #include <cctype>

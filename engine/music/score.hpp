@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "music/tempo_map.hpp"
+#include <tutti/music/tempo_map.hpp>
 
 namespace tutti::music {
 

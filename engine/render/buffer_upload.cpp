@@ -1,9 +1,9 @@
-#include "render/buffer_upload.hpp"
+#include <tutti/render/buffer_upload.hpp>
 
 #include <algorithm>
 #include <cstring>
 
-#include "render/vk_result.hpp"
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 namespace {

@@ -1,12 +1,12 @@
-#include "render/color_mesh_pipeline.hpp"
+#include <tutti/render/color_mesh_pipeline.hpp>
 
 #include <cstddef>
 #include <cstring>
 #include <string>
 
-#include "render/pipeline_builder.hpp"
-#include "render/shaders.hpp"
-#include "render/vk_result.hpp"
+#include <tutti/render/pipeline_builder.hpp>
+#include <tutti/render/shaders.hpp>
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 

@@ -15,9 +15,9 @@
 #include <memory>
 #include <span>
 
-#include "core/result.hpp"
-#include "render/device_memory.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/render/device_memory.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 namespace tutti::render {
 

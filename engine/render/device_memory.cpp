@@ -1,9 +1,9 @@
-#include "render/device_memory.hpp"
+#include <tutti/render/device_memory.hpp>
 
 #include <string>
 #include <utility>
 
-#include "render/vk_result.hpp"
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 namespace {

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <utility>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::render {
 

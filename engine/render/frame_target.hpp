@@ -20,7 +20,7 @@
 
 #include <cstdint>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::render {
 

@@ -1,10 +1,10 @@
-#include "render/geometry_arena.hpp"
+#include <tutti/render/geometry_arena.hpp>
 
 #include <glm/glm.hpp>
 #include <limits>
 #include <string>
 
-#include "render/buffer_upload.hpp"
+#include <tutti/render/buffer_upload.hpp>
 
 namespace tutti::render {
 

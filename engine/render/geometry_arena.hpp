@@ -10,11 +10,11 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "model/model_asset.hpp"
-#include "render/device_memory.hpp"
-#include "render/mesh_lod.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/model/model_asset.hpp>
+#include <tutti/render/device_memory.hpp>
+#include <tutti/render/mesh_lod.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 namespace tutti::render {
 

@@ -1,8 +1,8 @@
-#include "render/image_barrier.hpp"
+#include <tutti/render/image_barrier.hpp>
 
 #include <vector>
 
-#include "render/vk_result.hpp"
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 

@@ -1,4 +1,4 @@
-#include "render/mesh_lod.hpp"
+#include <tutti/render/mesh_lod.hpp>
 
 #include <meshoptimizer.h>
 

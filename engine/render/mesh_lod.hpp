@@ -17,7 +17,7 @@
 #include <span>
 #include <vector>
 
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 
 namespace tutti::render {
 

@@ -1,4 +1,4 @@
-#include "render/model_renderer.hpp"
+#include <tutti/render/model_renderer.hpp>
 
 #include <algorithm>
 #include <array>
@@ -7,10 +7,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
-#include "render/buffer_upload.hpp"
-#include "render/pipeline_builder.hpp"
-#include "render/shaders.hpp"
-#include "render/vk_result.hpp"
+#include <tutti/render/buffer_upload.hpp>
+#include <tutti/render/pipeline_builder.hpp>
+#include <tutti/render/shaders.hpp>
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 namespace {

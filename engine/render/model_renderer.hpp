@@ -20,14 +20,14 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "model/model_asset.hpp"
-#include "render/device_memory.hpp"
-#include "render/frame_target.hpp"
-#include "render/geometry_arena.hpp"
-#include "render/mesh_lod.hpp"
-#include "render/shadow_map.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/model/model_asset.hpp>
+#include <tutti/render/device_memory.hpp>
+#include <tutti/render/frame_target.hpp>
+#include <tutti/render/geometry_arena.hpp>
+#include <tutti/render/mesh_lod.hpp>
+#include <tutti/render/shadow_map.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 namespace tutti::render {
 

@@ -1,10 +1,10 @@
-#include "render/offscreen_target.hpp"
+#include <tutti/render/offscreen_target.hpp>
 
 #include <cstring>
 #include <string>
 
-#include "render/image_barrier.hpp"
-#include "render/vk_result.hpp"
+#include <tutti/render/image_barrier.hpp>
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 namespace {

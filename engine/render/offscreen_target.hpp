@@ -25,10 +25,10 @@
 #include <memory>
 #include <vector>
 
-#include "core/result.hpp"
-#include "render/device_memory.hpp"
-#include "render/frame_target.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/render/device_memory.hpp>
+#include <tutti/render/frame_target.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 namespace tutti::render {
 

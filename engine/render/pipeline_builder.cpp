@@ -1,8 +1,8 @@
-#include "render/pipeline_builder.hpp"
+#include <tutti/render/pipeline_builder.hpp>
 
 #include <string>
 
-#include "render/vk_result.hpp"
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 

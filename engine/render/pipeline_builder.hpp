@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "render/device_memory.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/render/device_memory.hpp>
 
 namespace tutti::render {
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "render/color_mesh_pipeline.hpp"
-#include "render/offscreen_target.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/render/color_mesh_pipeline.hpp>
+#include <tutti/render/offscreen_target.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 namespace {
 

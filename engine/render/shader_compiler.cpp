@@ -1,4 +1,4 @@
-#include "render/shader_compiler.hpp"
+#include <tutti/render/shader_compiler.hpp>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -11,7 +11,7 @@
 #include <system_error>
 #include <utility>
 
-#include "core/file_io.hpp"
+#include <tutti/core/file_io.hpp>
 
 namespace tutti::render {
 

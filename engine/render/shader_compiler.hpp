@@ -31,7 +31,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::render {
 

@@ -1,4 +1,4 @@
-#include "render/shader_watcher.hpp"
+#include <tutti/render/shader_watcher.hpp>
 
 #include <algorithm>
 #include <system_error>

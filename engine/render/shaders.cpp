@@ -1,4 +1,4 @@
-#include "render/shaders.hpp"
+#include <tutti/render/shaders.hpp>
 
 namespace tutti::render::shaders {
 namespace spirv {

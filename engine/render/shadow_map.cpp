@@ -1,11 +1,11 @@
-#include "render/shadow_map.hpp"
+#include <tutti/render/shadow_map.hpp>
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
-#include "render/image_barrier.hpp"
-#include "render/vk_result.hpp"
+#include <tutti/render/image_barrier.hpp>
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 

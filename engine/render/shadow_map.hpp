@@ -9,9 +9,9 @@
 #include <glm/glm.hpp>
 #include <memory>
 
-#include "core/result.hpp"
-#include "render/device_memory.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/render/device_memory.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 namespace tutti::render {
 

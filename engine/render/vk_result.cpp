@@ -1,4 +1,4 @@
-#include "render/vk_result.hpp"
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::render {
 

@@ -1,11 +1,11 @@
-#include "render/vulkan_context.hpp"
+#include <tutti/render/vulkan_context.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <optional>
 #include <utility>
 
-#include "render/vk_result.hpp"
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/window.hpp"
+#include <tutti/render/window.hpp>
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>

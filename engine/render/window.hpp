@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "core/result.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 struct GLFWwindow;
 

@@ -1,4 +1,4 @@
-#include "render/window_target.hpp"
+#include <tutti/render/window_target.hpp>
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "render/image_barrier.hpp"
-#include "render/vk_result.hpp"
+#include <tutti/render/image_barrier.hpp>
+#include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {
 namespace {

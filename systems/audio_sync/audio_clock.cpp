@@ -1,4 +1,4 @@
-#include "audio_sync/audio_clock.hpp"
+#include <tutti/audio_sync/audio_clock.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "audio_sync/audio_clock.hpp"
+#include <tutti/audio_sync/audio_clock.hpp>
 
 namespace tutti::audio_sync {
 

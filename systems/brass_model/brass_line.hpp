@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "brass_model/instrument.hpp"
+#include <tutti/brass_model/instrument.hpp>
 
 namespace tutti::brass {
 

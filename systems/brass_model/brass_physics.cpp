@@ -1,4 +1,4 @@
-#include "brass_model/brass_physics.hpp"
+#include <tutti/brass_model/brass_physics.hpp>
 
 #include <cmath>
 

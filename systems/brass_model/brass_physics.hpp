@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-#include "brass_model/instrument.hpp"
+#include <tutti/brass_model/instrument.hpp>
 
 namespace tutti::brass {
 

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "brass_model/instrument.hpp"
+#include <tutti/brass_model/instrument.hpp>
 
 namespace tutti::brass {
 namespace {

@@ -1,4 +1,4 @@
-#include "brass_model/fingering_chart.hpp"
+#include <tutti/brass_model/fingering_chart.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <span>
 #include <tuple>
 
-#include "brass_model/brass_physics.hpp"
-#include "brass_model/fingering_names.hpp"
-#include "content/json_reader.hpp"
-#include "music/pitch.hpp"
+#include <tutti/brass_model/brass_physics.hpp>
+#include <tutti/brass_model/fingering_names.hpp>
+#include <tutti/content/json_reader.hpp>
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::brass {
 namespace {

@@ -15,8 +15,8 @@
 //    partial.
 // Fills instrument.chart and instrument.chart_begin. Errors name the file and JSON path.
 
-#include "brass_model/instrument_file.hpp"
-#include "core/result.hpp"
+#include <tutti/brass_model/instrument_file.hpp>
+#include <tutti/core/result.hpp>
 
 namespace tutti::brass {
 

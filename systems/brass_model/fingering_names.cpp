@@ -1,4 +1,4 @@
-#include "brass_model/fingering_names.hpp"
+#include <tutti/brass_model/fingering_names.hpp>
 
 #include <cctype>
 

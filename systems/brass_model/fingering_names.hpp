@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "brass_model/instrument.hpp"
+#include <tutti/brass_model/instrument.hpp>
 
 namespace tutti::brass {
 

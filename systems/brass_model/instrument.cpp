@@ -1,13 +1,13 @@
-#include "brass_model/instrument.hpp"
+#include <tutti/brass_model/instrument.hpp>
 
 #include <algorithm>
 #include <system_error>
 
-#include "brass_model/fingering_chart.hpp"
-#include "brass_model/fingering_names.hpp"
-#include "brass_model/instrument_file.hpp"
-#include "content/content_dir.hpp"
-#include "content/json_reader.hpp"
+#include <tutti/brass_model/fingering_chart.hpp>
+#include <tutti/brass_model/fingering_names.hpp>
+#include <tutti/brass_model/instrument_file.hpp>
+#include <tutti/content/content_dir.hpp>
+#include <tutti/content/json_reader.hpp>
 
 namespace tutti::brass {
 

@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/result.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::brass {
 

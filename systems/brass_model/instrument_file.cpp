@@ -1,14 +1,14 @@
-#include "brass_model/instrument_file.hpp"
+#include <tutti/brass_model/instrument_file.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "brass_model/brass_physics.hpp"
-#include "brass_model/fingering_names.hpp"
-#include "content/json_reader.hpp"
-#include "music/pitch.hpp"
+#include <tutti/brass_model/brass_physics.hpp>
+#include <tutti/brass_model/fingering_names.hpp>
+#include <tutti/content/json_reader.hpp>
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::brass {
 namespace {

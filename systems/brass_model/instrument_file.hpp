@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "brass_model/instrument.hpp"
-#include "core/result.hpp"
+#include <tutti/brass_model/instrument.hpp>
+#include <tutti/core/result.hpp>
 
 namespace tutti::brass {
 

@@ -1,7 +1,7 @@
-#include "brass_motion/brass_motion_params.hpp"
+#include <tutti/brass_motion/brass_motion_params.hpp>
 
-#include "content/content_dir.hpp"
-#include "content/json_reader.hpp"
+#include <tutti/content/content_dir.hpp>
+#include <tutti/content/json_reader.hpp>
 
 namespace tutti::brass {
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::brass {
 

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "brass_model/instrument.hpp"
+#include <tutti/brass_model/instrument.hpp>
 
 namespace tutti::brass {
 

@@ -1,13 +1,13 @@
-#include "brass_motion/brass_pose_system.hpp"
+#include <tutti/brass_motion/brass_pose_system.hpp>
 
 #include <algorithm>
 
-#include "brass_motion/evaluate_brass_pose.hpp"
-#include "components/breath.hpp"
-#include "components/instrument.hpp"
-#include "components/mouth.hpp"
-#include "components/slide.hpp"
-#include "components/valve.hpp"
+#include <tutti/brass_motion/evaluate_brass_pose.hpp>
+#include <tutti/components/breath.hpp>
+#include <tutti/components/instrument.hpp>
+#include <tutti/components/mouth.hpp>
+#include <tutti/components/slide.hpp>
+#include <tutti/components/valve.hpp>
 
 namespace tutti::brass {
 namespace {

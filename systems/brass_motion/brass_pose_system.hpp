@@ -10,10 +10,10 @@
 
 #include <memory>
 
-#include "brass_motion/brass_motion_plan.hpp"
-#include "brass_motion/breath_plan.hpp"
-#include "ecs/schedule.hpp"
-#include "ecs/world.hpp"
+#include <tutti/brass_motion/brass_motion_plan.hpp>
+#include <tutti/brass_motion/breath_plan.hpp>
+#include <tutti/ecs/schedule.hpp>
+#include <tutti/ecs/world.hpp>
 
 namespace tutti::brass {
 

@@ -1,9 +1,9 @@
-#include "brass_motion/breath_params.hpp"
+#include <tutti/brass_motion/breath_params.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include "content/content_dir.hpp"
-#include "content/json_reader.hpp"
+#include <tutti/content/content_dir.hpp>
+#include <tutti/content/json_reader.hpp>
 
 namespace tutti::brass {
 std::filesystem::path breath_params_path() {

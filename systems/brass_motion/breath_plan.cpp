@@ -1,10 +1,10 @@
-#include "brass_motion/breath_plan.hpp"
+#include <tutti/brass_motion/breath_plan.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "music/meter.hpp"
+#include <tutti/music/meter.hpp>
 
 namespace tutti::brass {
 namespace {

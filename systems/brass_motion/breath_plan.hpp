@@ -43,9 +43,9 @@
 
 #include <vector>
 
-#include "brass_model/brass_line.hpp"
-#include "brass_motion/breath_params.hpp"
-#include "music/score.hpp"
+#include <tutti/brass_model/brass_line.hpp>
+#include <tutti/brass_motion/breath_params.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::brass {
 

@@ -1,4 +1,4 @@
-#include "brass_motion/evaluate_brass_pose.hpp"
+#include <tutti/brass_motion/evaluate_brass_pose.hpp>
 
 #include <algorithm>
 

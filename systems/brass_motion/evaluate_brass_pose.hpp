@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "brass_motion/brass_motion_plan.hpp"
+#include <tutti/brass_motion/brass_motion_plan.hpp>
 
 namespace tutti::brass {
 

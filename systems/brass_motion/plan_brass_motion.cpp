@@ -1,4 +1,4 @@
-#include "brass_motion/plan_brass_motion.hpp"
+#include <tutti/brass_motion/plan_brass_motion.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -11,9 +11,9 @@
 // Mouth: tension from the written pitch's place in the instrument's range, set mouth_ramp_s before
 // each onset, relaxed to mouth_rest_tension over rests longer than mouth_relax_after_s.
 
-#include "brass_model/brass_line.hpp"
-#include "brass_motion/brass_motion_params.hpp"
-#include "brass_motion/brass_motion_plan.hpp"
+#include <tutti/brass_model/brass_line.hpp>
+#include <tutti/brass_motion/brass_motion_params.hpp>
+#include <tutti/brass_motion/brass_motion_plan.hpp>
 
 namespace tutti::brass {
 

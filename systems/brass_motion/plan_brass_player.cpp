@@ -1,8 +1,8 @@
-#include "brass_motion/plan_brass_player.hpp"
+#include <tutti/brass_motion/plan_brass_player.hpp>
 
 #include <algorithm>
 
-#include "brass_motion/plan_brass_motion.hpp"
+#include <tutti/brass_motion/plan_brass_motion.hpp>
 
 namespace tutti::brass {
 

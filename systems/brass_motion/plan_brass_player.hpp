@@ -3,11 +3,11 @@
 // (they may shorten a note to make room for a catch-breath), then valves, slide and embouchure
 // on the line as it will actually be played.
 
-#include "brass_model/brass_line.hpp"
-#include "brass_motion/brass_motion_params.hpp"
-#include "brass_motion/brass_pose_system.hpp"
-#include "brass_motion/breath_params.hpp"
-#include "music/score.hpp"
+#include <tutti/brass_model/brass_line.hpp>
+#include <tutti/brass_motion/brass_motion_params.hpp>
+#include <tutti/brass_motion/brass_pose_system.hpp>
+#include <tutti/brass_motion/breath_params.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::brass {
 

@@ -1,11 +1,11 @@
-#include "ensemble_variation/ensemble_plan.hpp"
+#include <tutti/ensemble_variation/ensemble_plan.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "music/meter.hpp"
+#include <tutti/music/meter.hpp>
 
 namespace tutti::ensemble {
 namespace {

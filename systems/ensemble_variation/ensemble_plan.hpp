@@ -30,11 +30,11 @@
 #include <optional>
 #include <vector>
 
-#include "brass_motion/breath_plan.hpp"
-#include "core/result.hpp"
-#include "ensemble_variation/expression.hpp"
-#include "ensemble_variation/variation_params.hpp"
-#include "music/score.hpp"
+#include <tutti/brass_motion/breath_plan.hpp>
+#include <tutti/core/result.hpp>
+#include <tutti/ensemble_variation/expression.hpp>
+#include <tutti/ensemble_variation/variation_params.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::ensemble {
 

@@ -1,8 +1,8 @@
-#include "ensemble_variation/ensemble_variation_system.hpp"
+#include <tutti/ensemble_variation/ensemble_variation_system.hpp>
 
-#include "components/body_motion.hpp"
-#include "components/breath.hpp"
-#include "ensemble_variation/evaluate_body_motion.hpp"
+#include <tutti/components/body_motion.hpp>
+#include <tutti/components/breath.hpp>
+#include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
 namespace tutti::ensemble {
 

@@ -7,9 +7,9 @@
 #include <cstddef>
 #include <memory>
 
-#include "ecs/schedule.hpp"
-#include "ecs/world.hpp"
-#include "ensemble_variation/ensemble_plan.hpp"
+#include <tutti/ecs/schedule.hpp>
+#include <tutti/ecs/world.hpp>
+#include <tutti/ensemble_variation/ensemble_plan.hpp>
 
 namespace tutti::ensemble {
 

@@ -1,4 +1,4 @@
-#include "ensemble_variation/evaluate_body_motion.hpp"
+#include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // The body motion of one planned performer at time t: a pure, allocation-free function of the
 // plan and t (seek anywhere, any order).
 
-#include "components/body_motion.hpp"
-#include "ensemble_variation/ensemble_plan.hpp"
+#include <tutti/components/body_motion.hpp>
+#include <tutti/ensemble_variation/ensemble_plan.hpp>
 
 namespace tutti::ensemble {
 

@@ -1,6 +1,6 @@
-#include "ensemble_variation/variation_params.hpp"
+#include <tutti/ensemble_variation/variation_params.hpp>
 
-#include "core/splitmix64.hpp"
+#include <tutti/core/splitmix64.hpp>
 
 namespace tutti::ensemble {
 
@@ -22,7 +22,7 @@ VariationParams draw_variation(std::uint64_t seed) {
   return p;
 }
 
-VariationParams resolve_variation(std::uint64_t seed, const scene::Variation& overrides) {
+VariationParams resolve_variation(std::uint64_t seed, const VariationOverrides& overrides) {
   VariationParams p = draw_variation(seed);
   const auto take = [](double& field, const std::optional<double>& given) {
     if (given) field = *given;

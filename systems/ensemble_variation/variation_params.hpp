@@ -1,13 +1,26 @@
 #pragma once
 // A performer's variation parameters, each in [0, 1]: drawn from the performer's seed (each
 // field its own splitmix64 stream, so adding a field later leaves the others as they were), then
-// overridden field by field by what the scene gives (scene::Variation).
+// overridden field by field by what the scene gives (VariationOverrides, a scene's "variation").
 
 #include <cstdint>
-
-#include "scene/scene.hpp"
+#include <optional>
 
 namespace tutti::ensemble {
+
+// Per-performer expression controls, each normalised to [0, 1]; the ensemble-variation system
+// maps them onto the ranges its style data gives. Absent (nullopt) = drawn from the performer's
+// seed (draw_variation). The scene file's keys: scene::kVariationFields.
+struct VariationOverrides {
+  std::optional<double> sway_amount;        // 0 = still, 1 = the style's widest body sway
+  std::optional<double> sway_period;        // 0 = the shortest sway period, 1 = the longest
+  std::optional<double> sway_phase;         // where in its cycle the sway starts (fraction)
+  std::optional<double> weight_shift_rate;  // how often weight moves between the feet
+  std::optional<double> breath_depth;       // how visibly the chest and shoulders breathe
+  std::optional<double> cue_strength;       // size of the lead's cue gesture / the followers' reply
+  std::optional<double> head_motion;        // how much the head follows the phrase
+  friend bool operator==(const VariationOverrides&, const VariationOverrides&) = default;
+};
 
 struct VariationParams {
   double sway_amount = 0.5;
@@ -26,6 +39,6 @@ struct VariationParams {
 double unit_from_seed(std::uint64_t seed, std::uint64_t stream);
 
 VariationParams draw_variation(std::uint64_t seed);
-VariationParams resolve_variation(std::uint64_t seed, const scene::Variation& overrides);
+VariationParams resolve_variation(std::uint64_t seed, const VariationOverrides& overrides);
 
 }  // namespace tutti::ensemble

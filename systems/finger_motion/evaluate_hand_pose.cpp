@@ -1,4 +1,4 @@
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 
 #include <algorithm>
 #include <cmath>

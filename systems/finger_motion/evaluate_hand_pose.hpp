@@ -19,10 +19,10 @@
 // atan(d / y) with d the tip's lateral offset from the finger's rest line and y its reach.
 // Non-finite t is treated like t before the first contact (NaN) or clamped by the comparisons.
 
-#include "components/hand_side.hpp"
-#include "finger_motion/finger_motion_plan.hpp"
-#include "finger_motion/hand_pose.hpp"
-#include "spline_motion/hand_path.hpp"
+#include <tutti/components/hand_side.hpp>
+#include <tutti/finger_motion/finger_motion_plan.hpp>
+#include <tutti/finger_motion/hand_pose.hpp>
+#include <tutti/spline_motion/hand_path.hpp>
 
 namespace tutti::finger_motion {
 

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "finger_motion/finger_motion_params.hpp"
+#include <tutti/finger_motion/finger_motion_params.hpp>
 
 namespace tutti::finger_motion {
 

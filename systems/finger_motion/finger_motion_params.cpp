@@ -1,8 +1,8 @@
-#include "finger_motion/finger_motion_params.hpp"
+#include <tutti/finger_motion/finger_motion_params.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include "piano_model/json_document.hpp"
+#include <tutti/piano_model/json_document.hpp>
 
 namespace tutti::finger_motion {
 namespace {

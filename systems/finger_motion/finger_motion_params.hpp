@@ -11,7 +11,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::finger_motion {
 

@@ -9,9 +9,9 @@
 #include <array>
 #include <vector>
 
-#include "components/hand_side.hpp"
-#include "finger_motion/finger_chain.hpp"
-#include "finger_motion/finger_motion_params.hpp"
+#include <tutti/components/hand_side.hpp>
+#include <tutti/finger_motion/finger_chain.hpp>
+#include <tutti/finger_motion/finger_motion_params.hpp>
 
 namespace tutti::finger_motion {
 

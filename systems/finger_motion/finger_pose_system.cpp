@@ -1,8 +1,8 @@
-#include "finger_motion/finger_pose_system.hpp"
+#include <tutti/finger_motion/finger_pose_system.hpp>
 
-#include "components/finger.hpp"
-#include "components/hand.hpp"
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/components/finger.hpp>
+#include <tutti/components/hand.hpp>
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 
 namespace tutti::finger_motion {
 namespace {

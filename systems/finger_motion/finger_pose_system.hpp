@@ -9,11 +9,11 @@
 
 #include <memory>
 
-#include "ecs/schedule.hpp"
-#include "ecs/world.hpp"
-#include "finger_motion/finger_motion_plan.hpp"
-#include "finger_motion/hand_pose.hpp"
-#include "spline_motion/hand_path.hpp"
+#include <tutti/ecs/schedule.hpp>
+#include <tutti/ecs/world.hpp>
+#include <tutti/finger_motion/finger_motion_plan.hpp>
+#include <tutti/finger_motion/hand_pose.hpp>
+#include <tutti/spline_motion/hand_path.hpp>
 
 namespace tutti::finger_motion {
 

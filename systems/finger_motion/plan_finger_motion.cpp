@@ -1,4 +1,4 @@
-#include "finger_motion/plan_finger_motion.hpp"
+#include <tutti/finger_motion/plan_finger_motion.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -23,14 +23,14 @@
 
 #include <span>
 
-#include "core/result.hpp"
-#include "finger_motion/finger_motion_params.hpp"
-#include "finger_motion/finger_motion_plan.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "music/score.hpp"
-#include "piano_model/hand_model.hpp"
-#include "piano_model/keyboard.hpp"
-#include "spline_motion/hand_path.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/finger_motion/finger_motion_plan.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/music/score.hpp>
+#include <tutti/piano_model/hand_model.hpp>
+#include <tutti/piano_model/keyboard.hpp>
+#include <tutti/spline_motion/hand_path.hpp>
 
 namespace tutti::finger_motion {
 

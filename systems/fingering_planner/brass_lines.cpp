@@ -1,4 +1,4 @@
-#include "fingering_planner/brass_lines.hpp"
+#include <tutti/fingering_planner/brass_lines.hpp>
 
 #include <algorithm>
 #include <string>

@@ -8,10 +8,10 @@
 #include <span>
 #include <vector>
 
-#include "brass_model/brass_line.hpp"
-#include "brass_model/instrument.hpp"
-#include "core/result.hpp"
-#include "music/score.hpp"
+#include <tutti/brass_model/brass_line.hpp>
+#include <tutti/brass_model/instrument.hpp>
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::brass {
 

@@ -1,4 +1,4 @@
-#include "fingering_planner/brass_planner.hpp"
+#include <tutti/fingering_planner/brass_planner.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <limits>
 
-#include "content/content_dir.hpp"
-#include "content/json_reader.hpp"
-#include "music/meter.hpp"
-#include "music/pitch.hpp"
+#include <tutti/content/content_dir.hpp>
+#include <tutti/content/json_reader.hpp>
+#include <tutti/music/meter.hpp>
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::brass {
 namespace {

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "brass_model/brass_line.hpp"
-#include "core/result.hpp"
-#include "music/score.hpp"
+#include <tutti/brass_model/brass_line.hpp>
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::brass {
 

@@ -1,9 +1,9 @@
-#include "fingering_planner/cost_weights.hpp"
+#include <tutti/fingering_planner/cost_weights.hpp>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "piano_model/json_document.hpp"
+#include <tutti/piano_model/json_document.hpp>
 
 namespace tutti::piano {
 namespace {

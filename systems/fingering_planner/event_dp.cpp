@@ -1,4 +1,4 @@
-#include "fingering_planner/event_dp.hpp"
+#include <tutti/fingering_planner/event_dp.hpp>
 
 #include <cmath>
 #include <limits>

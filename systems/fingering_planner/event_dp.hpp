@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "fingering_planner/hand_events.hpp"
+#include <tutti/fingering_planner/hand_events.hpp>
 
 namespace tutti::piano {
 

@@ -1,9 +1,9 @@
-#include "fingering_planner/exact_planner.hpp"
+#include <tutti/fingering_planner/exact_planner.hpp>
 
 #include <vector>
 
-#include "fingering_planner/event_dp.hpp"
-#include "fingering_planner/hand_events.hpp"
+#include <tutti/fingering_planner/event_dp.hpp>
+#include <tutti/fingering_planner/hand_events.hpp>
 
 namespace tutti::piano {
 

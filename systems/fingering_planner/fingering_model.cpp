@@ -1,4 +1,4 @@
-#include "fingering_planner/fingering_model.hpp"
+#include <tutti/fingering_planner/fingering_model.hpp>
 
 namespace tutti::piano {
 

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <string_view>
 
-#include "core/result.hpp"
-#include "fingering_planner/cost_weights.hpp"
-#include "piano_model/content_dir.hpp"
-#include "piano_model/hand_model.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/fingering_planner/cost_weights.hpp>
+#include <tutti/piano_model/content_dir.hpp>
+#include <tutti/piano_model/hand_model.hpp>
+#include <tutti/piano_model/keyboard.hpp>
 
 namespace tutti::piano {
 

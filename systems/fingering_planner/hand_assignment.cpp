@@ -1,4 +1,4 @@
-#include "fingering_planner/hand_assignment.hpp"
+#include <tutti/fingering_planner/hand_assignment.hpp>
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "fingering_planner/hand_events.hpp"
+#include <tutti/fingering_planner/hand_events.hpp>
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,7 @@
 #include <numeric>
 #include <string>
 
-#include "music/pitch.hpp"
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::piano {
 namespace {

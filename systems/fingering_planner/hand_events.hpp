@@ -14,10 +14,10 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "fingering_planner/fingering_model.hpp"
-#include "fingering_planner/hand_plan.hpp"
-#include "fingering_planner/transition_cost.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/fingering_planner/hand_plan.hpp>
+#include <tutti/fingering_planner/transition_cost.hpp>
 
 namespace tutti::piano {
 

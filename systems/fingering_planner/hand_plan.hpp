@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "music/score.hpp"
-#include "piano_model/hand_corridor.hpp"
+#include <tutti/music/score.hpp>
+#include <tutti/piano_model/hand_corridor.hpp>
 
 namespace tutti::piano {
 

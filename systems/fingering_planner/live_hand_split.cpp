@@ -1,4 +1,4 @@
-#include "fingering_planner/live_hand_split.hpp"
+#include <tutti/fingering_planner/live_hand_split.hpp>
 
 #include <algorithm>
 #include <cmath>

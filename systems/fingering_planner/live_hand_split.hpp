@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "fingering_planner/fingering_model.hpp"
-#include "music/score.hpp"
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::piano {
 

@@ -1,11 +1,11 @@
-#include "fingering_planner/local_replan.hpp"
+#include <tutti/fingering_planner/local_replan.hpp>
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include "fingering_planner/event_dp.hpp"
-#include "fingering_planner/hand_events.hpp"
+#include <tutti/fingering_planner/event_dp.hpp>
+#include <tutti/fingering_planner/hand_events.hpp>
 
 namespace tutti::piano {
 namespace {

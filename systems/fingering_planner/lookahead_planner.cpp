@@ -1,10 +1,10 @@
-#include "fingering_planner/lookahead_planner.hpp"
+#include <tutti/fingering_planner/lookahead_planner.hpp>
 
 #include <cmath>
 #include <limits>
 #include <vector>
 
-#include "fingering_planner/hand_events.hpp"
+#include <tutti/fingering_planner/hand_events.hpp>
 
 namespace tutti::piano {
 

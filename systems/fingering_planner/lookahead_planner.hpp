@@ -7,9 +7,9 @@
 
 #include <span>
 
-#include "core/result.hpp"
-#include "fingering_planner/fingering_model.hpp"
-#include "fingering_planner/hand_plan.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/fingering_planner/hand_plan.hpp>
 
 namespace tutti::piano {
 

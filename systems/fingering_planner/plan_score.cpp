@@ -1,14 +1,14 @@
-#include "fingering_planner/plan_score.hpp"
+#include <tutti/fingering_planner/plan_score.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "fingering_planner/exact_planner.hpp"
-#include "fingering_planner/local_replan.hpp"
-#include "fingering_planner/lookahead_planner.hpp"
-#include "music/meter.hpp"
-#include "music/pitch.hpp"
+#include <tutti/fingering_planner/exact_planner.hpp>
+#include <tutti/fingering_planner/local_replan.hpp>
+#include <tutti/fingering_planner/lookahead_planner.hpp>
+#include <tutti/music/meter.hpp>
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::piano {
 

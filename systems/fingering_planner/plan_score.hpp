@@ -10,11 +10,11 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "fingering_planner/fingering_model.hpp"
-#include "fingering_planner/hand_assignment.hpp"
-#include "fingering_planner/hand_plan.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/fingering_planner/hand_assignment.hpp>
+#include <tutti/fingering_planner/hand_plan.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::piano {
 

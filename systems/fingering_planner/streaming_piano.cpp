@@ -1,4 +1,4 @@
-#include "fingering_planner/streaming_piano.hpp"
+#include <tutti/fingering_planner/streaming_piano.hpp>
 
 #include <algorithm>
 

@@ -7,9 +7,9 @@
 #include <optional>
 #include <vector>
 
-#include "core/result.hpp"
-#include "fingering_planner/live_hand_split.hpp"
-#include "fingering_planner/streaming_planner.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/fingering_planner/live_hand_split.hpp>
+#include <tutti/fingering_planner/streaming_planner.hpp>
 
 namespace tutti::piano {
 

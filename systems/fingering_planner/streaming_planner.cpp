@@ -1,10 +1,10 @@
-#include "fingering_planner/streaming_planner.hpp"
+#include <tutti/fingering_planner/streaming_planner.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "fingering_planner/exact_planner.hpp"
+#include <tutti/fingering_planner/exact_planner.hpp>
 
 namespace tutti::piano {
 namespace {

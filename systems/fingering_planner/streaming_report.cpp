@@ -1,13 +1,13 @@
-#include "fingering_planner/streaming_report.hpp"
+#include <tutti/fingering_planner/streaming_report.hpp>
 
 #include <algorithm>
 #include <limits>
 #include <numeric>
 
-#include "fingering_planner/exact_planner.hpp"
-#include "fingering_planner/lookahead_planner.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "fingering_planner/streaming_piano.hpp"
+#include <tutti/fingering_planner/exact_planner.hpp>
+#include <tutti/fingering_planner/lookahead_planner.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/fingering_planner/streaming_piano.hpp>
 
 namespace tutti::piano {
 namespace {

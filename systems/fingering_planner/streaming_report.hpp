@@ -10,9 +10,9 @@
 
 #include <vector>
 
-#include "core/result.hpp"
-#include "fingering_planner/fingering_model.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::piano {
 

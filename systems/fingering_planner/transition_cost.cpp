@@ -1,10 +1,10 @@
-#include "fingering_planner/transition_cost.hpp"
+#include <tutti/fingering_planner/transition_cost.hpp>
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 
-#include "music/pitch.hpp"
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::piano {
 namespace {

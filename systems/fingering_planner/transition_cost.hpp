@@ -11,8 +11,8 @@
 #include <optional>
 #include <span>
 
-#include "fingering_planner/fingering_model.hpp"
-#include "music/score.hpp"
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::piano {
 

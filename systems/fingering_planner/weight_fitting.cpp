@@ -1,4 +1,4 @@
-#include "fingering_planner/weight_fitting.hpp"
+#include <tutti/fingering_planner/weight_fitting.hpp>
 
 #include <cmath>
 #include <fstream>

@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "core/result.hpp"
-#include "fingering_planner/cost_weights.hpp"
-#include "fingering_planner/fingering_model.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/fingering_planner/cost_weights.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::piano {
 

@@ -1,9 +1,9 @@
-#include "key_action/humane_performance.hpp"
+#include <tutti/key_action/humane_performance.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include "finger_motion/plan_finger_motion.hpp"
+#include <tutti/finger_motion/plan_finger_motion.hpp>
 
 namespace tutti::key_action {
 

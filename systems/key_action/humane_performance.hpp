@@ -9,19 +9,19 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "finger_motion/finger_motion_params.hpp"
-#include "finger_motion/finger_pose_system.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "key_action/key_action_params.hpp"
-#include "key_action/key_simulation.hpp"
-#include "key_action/note_strokes.hpp"
-#include "key_action/performance_report.hpp"
-#include "key_action/performance_style.hpp"
-#include "music/score.hpp"
-#include "piano_model/hand_model.hpp"
-#include "piano_model/keyboard.hpp"
-#include "spline_motion/hand_path.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/finger_motion/finger_pose_system.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/key_action/key_action_params.hpp>
+#include <tutti/key_action/key_simulation.hpp>
+#include <tutti/key_action/note_strokes.hpp>
+#include <tutti/key_action/performance_report.hpp>
+#include <tutti/key_action/performance_style.hpp>
+#include <tutti/music/score.hpp>
+#include <tutti/piano_model/hand_model.hpp>
+#include <tutti/piano_model/keyboard.hpp>
+#include <tutti/spline_motion/hand_path.hpp>
 
 namespace tutti::key_action {
 

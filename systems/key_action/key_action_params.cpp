@@ -1,10 +1,10 @@
-#include "key_action/key_action_params.hpp"
+#include <tutti/key_action/key_action_params.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "content/json_reader.hpp"
+#include <tutti/content/json_reader.hpp>
 
 namespace tutti::key_action {
 namespace {

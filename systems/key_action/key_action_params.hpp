@@ -13,7 +13,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::key_action {
 

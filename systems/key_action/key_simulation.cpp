@@ -1,9 +1,9 @@
-#include "key_action/key_simulation.hpp"
+#include <tutti/key_action/key_simulation.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 
 namespace tutti::key_action {
 namespace {

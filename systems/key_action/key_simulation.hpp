@@ -17,10 +17,10 @@
 #include <limits>
 #include <vector>
 
-#include "finger_motion/finger_pose_system.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "key_action/key_action_params.hpp"
-#include "music/score.hpp"
+#include <tutti/finger_motion/finger_pose_system.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/key_action/key_action_params.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::key_action {
 

@@ -1,4 +1,4 @@
-#include "key_action/note_strokes.hpp"
+#include <tutti/key_action/note_strokes.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <numbers>
 #include <tuple>
 
-#include "core/splitmix64.hpp"
-#include "finger_motion/finger_chain.hpp"
+#include <tutti/core/splitmix64.hpp>
+#include <tutti/finger_motion/finger_chain.hpp>
 
 namespace tutti::key_action {
 namespace {

@@ -19,14 +19,14 @@
 #include <span>
 #include <vector>
 
-#include "finger_motion/finger_motion_params.hpp"
-#include "finger_motion/plan_finger_motion.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "key_action/key_action_params.hpp"
-#include "key_action/performance_style.hpp"
-#include "music/score.hpp"
-#include "piano_model/hand_model.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/finger_motion/plan_finger_motion.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/key_action/key_action_params.hpp>
+#include <tutti/key_action/performance_style.hpp>
+#include <tutti/music/score.hpp>
+#include <tutti/piano_model/hand_model.hpp>
+#include <tutti/piano_model/keyboard.hpp>
 
 namespace tutti::key_action {
 

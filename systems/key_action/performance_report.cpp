@@ -1,4 +1,4 @@
-#include "key_action/performance_report.hpp"
+#include <tutti/key_action/performance_report.hpp>
 
 #include <algorithm>
 #include <cmath>

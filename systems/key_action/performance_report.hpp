@@ -6,8 +6,8 @@
 #include <span>
 #include <string>
 
-#include "key_action/key_simulation.hpp"
-#include "music/score.hpp"
+#include <tutti/key_action/key_simulation.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::key_action {
 

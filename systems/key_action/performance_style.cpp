@@ -1,8 +1,8 @@
-#include "key_action/performance_style.hpp"
+#include <tutti/key_action/performance_style.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include "content/json_reader.hpp"
+#include <tutti/content/json_reader.hpp>
 
 namespace tutti::key_action {
 namespace {

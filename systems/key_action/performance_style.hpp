@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/result.hpp"
-#include "finger_motion/finger_motion_params.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/finger_motion/finger_motion_params.hpp>
 
 namespace tutti::key_action {
 

@@ -1,6 +1,6 @@
-#include "note_sounding/note_sounding_system.hpp"
+#include <tutti/note_sounding/note_sounding_system.hpp>
 
-#include "components/note.hpp"
+#include <tutti/components/note.hpp>
 
 namespace tutti::note_sounding {
 

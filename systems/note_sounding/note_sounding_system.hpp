@@ -7,8 +7,8 @@
 // A zero-length note (offset_s == onset_s) never sounds; a NaN time sounds nothing. Reads and
 // writes only Note; allocation-free; O(number of notes) per frame.
 
-#include "ecs/schedule.hpp"
-#include "ecs/world.hpp"
+#include <tutti/ecs/schedule.hpp>
+#include <tutti/ecs/world.hpp>
 
 namespace tutti::note_sounding {
 

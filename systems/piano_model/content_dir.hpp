@@ -1,7 +1,7 @@
 #pragma once
 // default_content_dir moved to engine/content; the piano code keeps using it under its own name.
 
-#include "content/content_dir.hpp"
+#include <tutti/content/content_dir.hpp>
 
 namespace tutti::piano {
 using content::default_content_dir;

@@ -1,8 +1,8 @@
-#include "piano_model/hand_model.hpp"
+#include <tutti/piano_model/hand_model.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include "piano_model/json_document.hpp"
+#include <tutti/piano_model/json_document.hpp>
 
 namespace tutti::piano {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <string_view>
 
-#include "core/result.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::piano {
 

@@ -2,7 +2,7 @@
 // The JSON helpers moved to engine/content (shared with the instrument files); the piano code
 // keeps using them under its own namespace.
 
-#include "content/json_reader.hpp"
+#include <tutti/content/json_reader.hpp>
 
 namespace tutti::piano {
 using content::JsonReader;

@@ -1,9 +1,9 @@
-#include "piano_model/keyboard.hpp"
+#include <tutti/piano_model/keyboard.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include "music/pitch.hpp"
-#include "piano_model/json_document.hpp"
+#include <tutti/music/pitch.hpp>
+#include <tutti/piano_model/json_document.hpp>
 
 namespace tutti::piano {
 namespace {

@@ -1,4 +1,4 @@
-#include "piano_performance/corridor_repair.hpp"
+#include <tutti/piano_performance/corridor_repair.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "piano_model/hand_corridor.hpp"
+#include <tutti/piano_model/hand_corridor.hpp>
 
 namespace tutti::performance {
 

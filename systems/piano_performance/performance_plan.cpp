@@ -1,4 +1,4 @@
-#include "piano_performance/performance_plan.hpp"
+#include <tutti/piano_performance/performance_plan.hpp>
 
 #include <chrono>
 #include <cmath>

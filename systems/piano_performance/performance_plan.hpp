@@ -11,12 +11,12 @@
 
 #include <string>
 
-#include "core/result.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "music/score.hpp"
-#include "piano_performance/corridor_repair.hpp"
-#include "spline_motion/path_report.hpp"
-#include "spline_motion/smoothing.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/music/score.hpp>
+#include <tutti/piano_performance/corridor_repair.hpp>
+#include <tutti/spline_motion/path_report.hpp>
+#include <tutti/spline_motion/smoothing.hpp>
 
 namespace tutti::performance {
 

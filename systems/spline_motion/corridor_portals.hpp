@@ -13,8 +13,8 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "piano_model/hand_corridor.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/piano_model/hand_corridor.hpp>
 
 namespace tutti::motion {
 

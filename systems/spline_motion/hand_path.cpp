@@ -1,4 +1,4 @@
-#include "spline_motion/hand_path.hpp"
+#include <tutti/spline_motion/hand_path.hpp>
 
 #include <algorithm>
 #include <utility>

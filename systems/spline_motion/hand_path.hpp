@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "spline_motion/polynomial.hpp"
+#include <tutti/spline_motion/polynomial.hpp>
 
 namespace tutti::motion {
 

@@ -1,4 +1,4 @@
-#include "spline_motion/path_report.hpp"
+#include <tutti/spline_motion/path_report.hpp>
 
 #include <algorithm>
 #include <cmath>

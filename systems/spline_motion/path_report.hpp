@@ -5,8 +5,8 @@
 #include <cstddef>
 #include <span>
 
-#include "piano_model/hand_corridor.hpp"
-#include "spline_motion/hand_path.hpp"
+#include <tutti/piano_model/hand_corridor.hpp>
+#include <tutti/spline_motion/hand_path.hpp>
 
 namespace tutti::motion {
 

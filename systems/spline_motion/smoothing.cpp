@@ -1,4 +1,4 @@
-#include "spline_motion/smoothing.hpp"
+#include <tutti/spline_motion/smoothing.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -20,11 +20,11 @@
 
 #include <span>
 
-#include "core/result.hpp"
-#include "piano_model/hand_corridor.hpp"
-#include "spline_motion/corridor_portals.hpp"
-#include "spline_motion/hand_path.hpp"
-#include "spline_motion/taut_string.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/piano_model/hand_corridor.hpp>
+#include <tutti/spline_motion/corridor_portals.hpp>
+#include <tutti/spline_motion/hand_path.hpp>
+#include <tutti/spline_motion/taut_string.hpp>
 
 namespace tutti::motion {
 

@@ -19,9 +19,9 @@
 #include <span>
 #include <vector>
 
-#include "core/result.hpp"
-#include "piano_model/hand_corridor.hpp"
-#include "spline_motion/corridor_portals.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/piano_model/hand_corridor.hpp>
+#include <tutti/spline_motion/corridor_portals.hpp>
 
 namespace tutti::motion {
 

@@ -1,6 +1,6 @@
 // `tutti brass`: real pieces in, per-note fingerings, breaths and range reports out; bad input is
 // one error line and exit code 2.
-#include "app/brass_command.hpp"
+#include <tutti/cli/brass_command.hpp>
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "app/exit_codes.hpp"
+#include <tutti/cli/exit_codes.hpp>
 #include "testdata.hpp"
 
 namespace tutti::app {

@@ -1,6 +1,6 @@
 // `tutti export`: a .glb of the scene with one clip per performer plus the whole scene; the range
 // options; one-line errors for bad input, and a failed export never touches an existing file.
-#include "app/export_command.hpp"
+#include <tutti/cli/export_command.hpp>
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "app/exit_codes.hpp"
+#include <tutti/cli/exit_codes.hpp>
 #include "command_run.hpp"
-#include "core/file_io.hpp"
+#include <tutti/core/file_io.hpp>
 #include "testdata.hpp"
 
 namespace tutti::app {

@@ -1,5 +1,5 @@
 // `tutti fingering`: every output format, pins, round trips, determinism, errors, the plot.
-#include "app/fingering_command.hpp"
+#include <tutti/cli/fingering_command.hpp>
 
 #include <gtest/gtest.h>
 
@@ -12,12 +12,12 @@
 #include <sstream>
 #include <tuple>
 
-#include "app/exit_codes.hpp"
-#include "app/fingering_output.hpp"
+#include <tutti/cli/exit_codes.hpp>
+#include <tutti/cli/fingering_output.hpp>
 #include "command_run.hpp"
-#include "core/file_io.hpp"
-#include "music/load_score.hpp"
-#include "music/pig/pig_format.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/music/pig/pig_format.hpp>
 #include "testdata.hpp"
 
 namespace tutti::app {

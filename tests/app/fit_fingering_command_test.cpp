@@ -1,4 +1,4 @@
-#include "app/fit_fingering_command.hpp"
+#include <tutti/cli/fit_fingering_command.hpp>
 
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/exit_codes.hpp"
-#include "fingering_planner/cost_weights.hpp"
+#include <tutti/cli/exit_codes.hpp>
+#include <tutti/fingering_planner/cost_weights.hpp>
 #include "testdata.hpp"
 
 namespace tutti::app {

@@ -1,4 +1,4 @@
-#include "app/info_command.hpp"
+#include <tutti/cli/info_command.hpp>
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "app/exit_codes.hpp"
+#include <tutti/cli/exit_codes.hpp>
 #include "testdata.hpp"
 
 namespace tutti::app {

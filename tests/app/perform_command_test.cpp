@@ -1,6 +1,6 @@
 // `tutti perform`: the notes as the simulated keys sounded them, written as MIDI; a report per
 // style; deterministic; one-line errors for bad input.
-#include "app/perform_command.hpp"
+#include <tutti/cli/perform_command.hpp>
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "app/exit_codes.hpp"
+#include <tutti/cli/exit_codes.hpp>
 #include "command_run.hpp"
-#include "core/file_io.hpp"
-#include "music/load_score.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
 namespace tutti::app {

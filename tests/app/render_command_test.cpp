@@ -1,7 +1,7 @@
 // `tutti render` in-process on the real Vulkan device (lavapipe on CI): stills and PNG-folder
 // slices of the shipped piano scene are deterministic, a slice has exactly the full render's
 // pixels, and bad options give one-line errors.
-#include "app/render_command.hpp"
+#include <tutti/cli/render_command.hpp>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -13,9 +13,9 @@
 #include <iterator>
 #include <sstream>
 
-#include "audio/onset_detection.hpp"
-#include "audio/wav_file.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/audio/onset_detection.hpp>
+#include <tutti/audio/wav_file.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 namespace tutti::app {
 namespace {

@@ -13,8 +13,8 @@
 #include <iterator>
 #include <sstream>
 
-#include "app/render_command.hpp"
-#include "render/vulkan_context.hpp"
+#include <tutti/cli/render_command.hpp>
+#include <tutti/render/vulkan_context.hpp>
 
 std::vector<std::uint8_t> decode_png_for_test(const std::vector<std::uint8_t>& png, int& width,
                                               int& height);

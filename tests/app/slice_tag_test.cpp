@@ -1,5 +1,5 @@
 // The tag a rendered .mp4 carries so `tutti concat` can check its slices fit together.
-#include "app/slice_tag.hpp"
+#include <tutti/cli/slice_tag.hpp>
 
 #include <gtest/gtest.h>
 

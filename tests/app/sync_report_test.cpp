@@ -1,7 +1,7 @@
 // `tutti sync-report` (app/sync_report*.hpp): the animation's contact times against the onsets
 // found in the rendered audio, on the shipped demo scenes; a deliberately delayed sound track is
 // caught; bad options are one-line errors.
-#include "app/sync_report.hpp"
+#include <tutti/cli/sync_report.hpp>
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <sstream>
 
-#include "app/frame_range.hpp"
-#include "app/scene_audio.hpp"
-#include "app/sync_report_command.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/cli/frame_range.hpp>
+#include <tutti/cli/scene_audio.hpp>
+#include <tutti/cli/sync_report_command.hpp>
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::app {
 namespace {

@@ -1,15 +1,15 @@
 // Attack compensation (audio/attack_time.hpp) with Debian's General MIDI font: attacks measured
 // per instrument (a trombone speaks later than a trumpet, a trumpet later than a piano), a line
 // with a slur and a rest heard on its score times once compensated, and the limits kept.
-#include "audio/attack_time.hpp"
+#include <tutti/audio/attack_time.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "audio/offline_synth.hpp"
-#include "audio/onset_detection.hpp"
-#include "audio/sound_font.hpp"
+#include <tutti/audio/offline_synth.hpp>
+#include <tutti/audio/onset_detection.hpp>
+#include <tutti/audio/sound_font.hpp>
 
 namespace tutti::audio {
 namespace {

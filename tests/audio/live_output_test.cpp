@@ -1,7 +1,7 @@
 // Live output (audio/live_output.hpp): the simulated device's position, the audio pulled as the
 // driver would pull it equal to the offline render, seeking, an AudioClock following it, and a
 // real device when this machine has one (else the clear error without the simulated fallback).
-#include "audio/live_output.hpp"
+#include <tutti/audio/live_output.hpp>
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <cmath>
 #include <thread>
 
-#include "audio/offline_synth.hpp"
-#include "audio/sound_font.hpp"
-#include "audio_sync/audio_clock.hpp"
+#include <tutti/audio/offline_synth.hpp>
+#include <tutti/audio/sound_font.hpp>
+#include <tutti/audio_sync/audio_clock.hpp>
 
 namespace tutti::audio {
 namespace {

@@ -1,7 +1,7 @@
 // FluidSynth offline rendering (audio/offline_synth.hpp) with Debian's General MIDI sound font:
 // a note sounds from its frame on and not before, the same timeline gives the same samples, and
 // a missing or broken sound font is a clear error.
-#include "audio/offline_synth.hpp"
+#include <tutti/audio/offline_synth.hpp>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,8 +11,8 @@
 #include <fstream>
 #include <string>
 
-#include "audio/sound_font.hpp"
-#include "music/load_score.hpp"
+#include <tutti/audio/sound_font.hpp>
+#include <tutti/music/load_score.hpp>
 
 namespace tutti::audio {
 namespace {

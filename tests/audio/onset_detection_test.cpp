@@ -1,7 +1,7 @@
 // The onset detector (audio/onset_detection.hpp) on sounds whose onsets are known by
 // construction: synthetic tone bursts (instant and ramped attacks, chords, vibrato) and single
 // FluidSynth notes of the GM programs the demos use, placed at known frames.
-#include "audio/onset_detection.hpp"
+#include <tutti/audio/onset_detection.hpp>
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <numbers>
 #include <vector>
 
-#include "audio/sound_font.hpp"
-#include "audio/synth_events.hpp"
+#include <tutti/audio/sound_font.hpp>
+#include <tutti/audio/synth_events.hpp>
 
 namespace tutti::audio {
 namespace {

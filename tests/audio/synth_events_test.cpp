@@ -1,6 +1,6 @@
 // Scores -> synthesizer events (audio/synth_events.hpp) on the project's quartet and third-party
 // MIDI files: channels, programs, block-aligned frames, tempo factor, start time, pedal.
-#include "audio/synth_events.hpp"
+#include <tutti/audio/synth_events.hpp>
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <map>
 #include <string>
 
-#include "music/load_score.hpp"
+#include <tutti/music/load_score.hpp>
 
 namespace tutti::audio {
 namespace {

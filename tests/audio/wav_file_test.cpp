@@ -1,5 +1,5 @@
 // WAV writing and reading (audio/wav_file.hpp): round trip, and hostile or truncated files.
-#include "audio/wav_file.hpp"
+#include <tutti/audio/wav_file.hpp>
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "brass_model/instrument.hpp"
-#include "brass_motion/evaluate_brass_pose.hpp"
-#include "brass_motion/plan_brass_motion.hpp"
-#include "fingering_planner/brass_planner.hpp"
+#include <tutti/brass_model/instrument.hpp>
+#include <tutti/brass_motion/evaluate_brass_pose.hpp>
+#include <tutti/brass_motion/plan_brass_motion.hpp>
+#include <tutti/fingering_planner/brass_planner.hpp>
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "ecs/world.hpp"
+#include <tutti/ecs/world.hpp>
 
 namespace {
 

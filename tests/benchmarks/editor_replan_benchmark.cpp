@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "editor/session.hpp"
+#include <tutti/editor/session.hpp>
 
 namespace {
 

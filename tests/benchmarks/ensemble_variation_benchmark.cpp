@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "ensemble_variation/ensemble_plan.hpp"
-#include "ensemble_variation/evaluate_body_motion.hpp"
+#include <tutti/ensemble_variation/ensemble_plan.hpp>
+#include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "export/keyframe_reduction.hpp"
-#include "export/scene_export.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/export/keyframe_reduction.hpp>
+#include <tutti/export/scene_export.hpp>
+#include <tutti/scene/load_scene.hpp>
 
 namespace {
 

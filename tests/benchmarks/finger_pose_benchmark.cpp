@@ -7,10 +7,10 @@
 #include <random>
 #include <vector>
 
-#include "finger_motion/evaluate_hand_pose.hpp"
-#include "finger_motion/plan_finger_motion.hpp"
-#include "piano_model/hand_model.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
+#include <tutti/finger_motion/plan_finger_motion.hpp>
+#include <tutti/piano_model/hand_model.hpp>
+#include <tutti/piano_model/keyboard.hpp>
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "fingering_planner/exact_planner.hpp"
-#include "fingering_planner/local_replan.hpp"
+#include <tutti/fingering_planner/exact_planner.hpp>
+#include <tutti/fingering_planner/local_replan.hpp>
 
 namespace {
 

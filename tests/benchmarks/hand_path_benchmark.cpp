@@ -7,10 +7,10 @@
 #include <random>
 #include <vector>
 
-#include "piano_model/hand_corridor.hpp"
-#include "spline_motion/corridor_portals.hpp"
-#include "spline_motion/smoothing.hpp"
-#include "spline_motion/taut_string.hpp"
+#include <tutti/piano_model/hand_corridor.hpp>
+#include <tutti/spline_motion/corridor_portals.hpp>
+#include <tutti/spline_motion/smoothing.hpp>
+#include <tutti/spline_motion/taut_string.hpp>
 
 namespace {
 

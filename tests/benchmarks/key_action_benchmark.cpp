@@ -6,10 +6,10 @@
 
 #include <filesystem>
 
-#include "finger_motion/finger_motion_params.hpp"
-#include "key_action/humane_performance.hpp"
-#include "music/load_score.hpp"
-#include "piano_performance/performance_plan.hpp"
+#include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/key_action/humane_performance.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/piano_performance/performance_plan.hpp>
 
 namespace {
 

@@ -8,12 +8,12 @@
 #include <cstdlib>
 #include <vector>
 
-#include "finger_motion/finger_motion_params.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "fingering_planner/streaming_piano.hpp"
-#include "live/live_pianist.hpp"
-#include "music/load_score.hpp"
-#include "piano_model/content_dir.hpp"
+#include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/fingering_planner/streaming_piano.hpp>
+#include <tutti/live/live_pianist.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/piano_model/content_dir.hpp>
 
 namespace {
 

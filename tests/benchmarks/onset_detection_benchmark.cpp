@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "audio/onset_detection.hpp"
+#include <tutti/audio/onset_detection.hpp>
 
 namespace {
 

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "app/video_pipe.hpp"
-#include "render/model_renderer.hpp"
-#include "render/offscreen_target.hpp"
-#include "render/vulkan_context.hpp"
-#include "scene/load_scene.hpp"
-#include "stage/stage.hpp"
+#include <tutti/cli/video_pipe.hpp>
+#include <tutti/render/model_renderer.hpp>
+#include <tutti/render/offscreen_target.hpp>
+#include <tutti/render/vulkan_context.hpp>
+#include <tutti/scene/load_scene.hpp>
+#include <tutti/stage/stage.hpp>
 
 namespace {
 

@@ -1,5 +1,5 @@
 // components/body_motion.hpp compiles on its own; a default BodyMotion is the stock pose.
-#include "components/body_motion.hpp"
+#include <tutti/components/body_motion.hpp>
 
 #include <gtest/gtest.h>
 

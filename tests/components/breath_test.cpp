@@ -1,4 +1,4 @@
-#include "components/breath.hpp"
+#include <tutti/components/breath.hpp>
 
 #include <gtest/gtest.h>
 

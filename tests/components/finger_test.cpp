@@ -1,4 +1,4 @@
-#include "components/finger.hpp"
+#include <tutti/components/finger.hpp>
 
 #include <gtest/gtest.h>
 

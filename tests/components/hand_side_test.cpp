@@ -1,5 +1,5 @@
 // Includes only its header first: it must compile on its own.
-#include "components/hand_side.hpp"
+#include <tutti/components/hand_side.hpp>
 
 #include <gtest/gtest.h>
 

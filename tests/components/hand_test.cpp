@@ -1,4 +1,4 @@
-#include "components/hand.hpp"
+#include <tutti/components/hand.hpp>
 
 #include <gtest/gtest.h>
 

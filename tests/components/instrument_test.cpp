@@ -1,4 +1,4 @@
-#include "components/instrument.hpp"
+#include <tutti/components/instrument.hpp>
 
 #include <gtest/gtest.h>
 

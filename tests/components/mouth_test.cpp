@@ -1,4 +1,4 @@
-#include "components/mouth.hpp"
+#include <tutti/components/mouth.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "components/note.hpp"
+#include <tutti/components/note.hpp>
 
 #include <gtest/gtest.h>
 

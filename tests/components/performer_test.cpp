@@ -1,4 +1,4 @@
-#include "components/performer.hpp"
+#include <tutti/components/performer.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "components/slide.hpp"
+#include <tutti/components/slide.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "components/transform.hpp"
+#include <tutti/components/transform.hpp>
 
 #include <gtest/gtest.h>
 

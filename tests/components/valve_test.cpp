@@ -1,4 +1,4 @@
-#include "components/valve.hpp"
+#include <tutti/components/valve.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-#include "generator/brass_assets.hpp"
+#include <tutti/generator/brass_assets.hpp>
 
 #include <gtest/gtest.h>
 
-#include "brass_model/instrument.hpp"
-#include "content/json_reader.hpp"
+#include <tutti/brass_model/instrument.hpp>
+#include <tutti/content/json_reader.hpp>
 #include "gltf_test_support.hpp"
 #include "rig_test_support.hpp"
 

@@ -5,14 +5,14 @@
 #include <fstream>
 #include <sstream>
 
-#include "content/json_reader.hpp"
-#include "core/file_io.hpp"
-#include "generator/dimensions.hpp"
-#include "generator/generate.hpp"
-#include "generator/piano_asset.hpp"
-#include "generator/props.hpp"
+#include <tutti/content/json_reader.hpp>
+#include <tutti/core/file_io.hpp>
+#include <tutti/generator/dimensions.hpp>
+#include <tutti/generator/generate.hpp>
+#include <tutti/generator/piano_asset.hpp>
+#include <tutti/generator/props.hpp>
 #include "gltf_test_support.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/piano_model/keyboard.hpp>
 
 namespace tutti::test {
 namespace {

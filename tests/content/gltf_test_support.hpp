@@ -13,7 +13,7 @@
 #include <set>
 #include <string>
 
-#include "generator/generate.hpp"
+#include <tutti/generator/generate.hpp>
 #include "testdata.hpp"
 
 namespace tutti::test {

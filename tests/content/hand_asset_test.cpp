@@ -1,4 +1,4 @@
-#include "generator/hand_asset.hpp"
+#include <tutti/generator/hand_asset.hpp>
 
 #include <gtest/gtest.h>
 
@@ -6,14 +6,14 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "content/json_reader.hpp"
-#include "core/file_io.hpp"
-#include "finger_motion/evaluate_hand_pose.hpp"
-#include "finger_motion/finger_chain.hpp"
-#include "finger_motion/plan_finger_motion.hpp"
+#include <tutti/content/json_reader.hpp>
+#include <tutti/core/file_io.hpp>
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
+#include <tutti/finger_motion/finger_chain.hpp>
+#include <tutti/finger_motion/plan_finger_motion.hpp>
 #include "gltf_test_support.hpp"
-#include "piano_model/hand_model.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/piano_model/hand_model.hpp>
+#include <tutti/piano_model/keyboard.hpp>
 #include "rig_test_support.hpp"
 
 namespace tutti::test {

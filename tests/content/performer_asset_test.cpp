@@ -1,4 +1,4 @@
-#include "generator/performer_asset.hpp"
+#include <tutti/generator/performer_asset.hpp>
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "content/json_reader.hpp"
-#include "generator/dimensions.hpp"
-#include "generator/hand_rig.hpp"
+#include <tutti/content/json_reader.hpp>
+#include <tutti/generator/dimensions.hpp>
+#include <tutti/generator/hand_rig.hpp>
 #include "gltf_test_support.hpp"
 #include "rig_test_support.hpp"
 

@@ -1,11 +1,11 @@
-#include "generator/piano_asset.hpp"
+#include <tutti/generator/piano_asset.hpp>
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "gltf_test_support.hpp"
-#include "piano_model/keyboard.hpp"
+#include <tutti/piano_model/keyboard.hpp>
 
 namespace tutti::test {
 namespace {

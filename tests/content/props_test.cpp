@@ -1,4 +1,4 @@
-#include "generator/props.hpp"
+#include <tutti/generator/props.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include "ecs/entity.hpp"
+#include <tutti/ecs/entity.hpp>
 
 #include <gtest/gtest.h>
 
 #include <unordered_set>
 
-#include "ecs/type_name.hpp"
+#include <tutti/ecs/type_name.hpp>
 
 namespace tutti::ecs {
 namespace {

@@ -1,4 +1,4 @@
-#include "ecs/schedule.hpp"
+#include <tutti/ecs/schedule.hpp>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

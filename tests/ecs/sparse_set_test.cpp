@@ -1,4 +1,4 @@
-#include "ecs/sparse_set.hpp"
+#include <tutti/ecs/sparse_set.hpp>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

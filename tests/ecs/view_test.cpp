@@ -1,4 +1,4 @@
-#include "ecs/view.hpp"
+#include <tutti/ecs/view.hpp>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "ecs/world.hpp"
+#include <tutti/ecs/world.hpp>
 
 namespace tutti::ecs {
 namespace {

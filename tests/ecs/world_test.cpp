@@ -1,4 +1,4 @@
-#include "ecs/world.hpp"
+#include <tutti/ecs/world.hpp>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

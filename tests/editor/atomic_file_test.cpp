@@ -1,6 +1,6 @@
 // Saving never loses the user's file: the contents are either the old or the new ones, even when
 // the saving process is killed at a random moment, and the previous version is kept as .bak.
-#include "editor/atomic_file.hpp"
+#include <tutti/editor/atomic_file.hpp>
 
 #include <gtest/gtest.h>
 #include <signal.h>

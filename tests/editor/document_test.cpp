@@ -1,13 +1,13 @@
 // A scene open in the editor: edits keep it valid, undo/redo restore it exactly, saving is
 // atomic with a backup, and unsaved work survives in the autosave side file.
-#include "editor/document.hpp"
+#include <tutti/editor/document.hpp>
 
 #include <gtest/gtest.h>
 
-#include "editor/atomic_file.hpp"
-#include "editor/scene_edits.hpp"
+#include <tutti/editor/atomic_file.hpp>
+#include <tutti/editor/scene_edits.hpp>
 #include "editor_test_support.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::editor {
 namespace {

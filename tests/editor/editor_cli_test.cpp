@@ -12,10 +12,10 @@
 #include <fstream>
 #include <thread>
 
-#include "editor/atomic_file.hpp"
-#include "editor/session.hpp"
+#include <tutti/editor/atomic_file.hpp>
+#include <tutti/editor/session.hpp>
 #include "editor_test_support.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/scene/load_scene.hpp>
 
 std::vector<std::uint8_t> decode_png_for_test(const std::vector<std::uint8_t>& png, int& width,
                                               int& height);

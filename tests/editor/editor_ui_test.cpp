@@ -1,6 +1,6 @@
 // The editor's panels driven headless: a bare ImGui context (no window, no renderer), the mouse
 // moved and clicked through ImGuiIO for a few frames, and the model checked afterwards.
-#include "editor/editor_ui.hpp"
+#include <tutti/editor/editor_ui.hpp>
 
 #include <gtest/gtest.h>
 #include <imgui.h>

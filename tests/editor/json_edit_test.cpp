@@ -1,4 +1,4 @@
-#include "editor/json_edit.hpp"
+#include <tutti/editor/json_edit.hpp>
 
 #include <gtest/gtest.h>
 

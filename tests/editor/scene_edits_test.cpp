@@ -1,10 +1,10 @@
 // The editor's edits build the scene the loader reads: breath marks, cues, expressions, cuts,
 // pins, variation and seeds, each undone exactly.
-#include "editor/scene_edits.hpp"
+#include <tutti/editor/scene_edits.hpp>
 
 #include <gtest/gtest.h>
 
-#include "editor/document.hpp"
+#include <tutti/editor/document.hpp>
 #include "editor_test_support.hpp"
 
 namespace tutti::editor {

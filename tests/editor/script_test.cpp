@@ -1,10 +1,10 @@
 // The editor's --script actions, run against a session with a host that records the transport.
-#include "editor/script.hpp"
+#include <tutti/editor/script.hpp>
 
 #include <gtest/gtest.h>
 
 #include "editor_test_support.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::editor {
 namespace {

@@ -1,13 +1,13 @@
 // The editor's model: each edit re-plans the stage before it is accepted, the timeline follows,
 // and the models are shared so a renderer survives the re-plan.
-#include "editor/session.hpp"
+#include <tutti/editor/session.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "components/body_motion.hpp"
+#include <tutti/components/body_motion.hpp>
 #include "editor_test_support.hpp"
 
 namespace tutti::editor {

@@ -1,6 +1,6 @@
 // Keyframe reduction: what is dropped is reproduced by glTF's interpolation between what is kept,
 // within the tolerance; straight lines and constants collapse; the span cap holds.
-#include "export/keyframe_reduction.hpp"
+#include <tutti/export/keyframe_reduction.hpp>
 
 #include <gtest/gtest.h>
 

@@ -18,11 +18,11 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "audio_sync/audio_clock.hpp"
-#include "export/keyframe_reduction.hpp"
-#include "export/scene_export.hpp"
-#include "scene/asset_mapping.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/audio_sync/audio_clock.hpp>
+#include <tutti/export/keyframe_reduction.hpp>
+#include <tutti/export/scene_export.hpp>
+#include <tutti/scene/asset_mapping.hpp>
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::gltf_export {
 namespace {

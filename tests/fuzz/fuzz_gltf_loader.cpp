@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace tutti::model;

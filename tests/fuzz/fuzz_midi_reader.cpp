@@ -4,8 +4,8 @@
 #include <cstdlib>
 #include <span>
 
-#include "music/midi/midi_reader.hpp"
-#include "music/midi/midi_writer.hpp"
+#include <tutti/music/midi/midi_reader.hpp>
+#include <tutti/music/midi/midi_writer.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace tutti::music;

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <span>
 
-#include "music/musicxml/musicxml_reader.hpp"
+#include <tutti/music/musicxml/musicxml_reader.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace tutti::music;

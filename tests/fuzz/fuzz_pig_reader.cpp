@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "music/pig/pig_format.hpp"
+#include <tutti/music/pig/pig_format.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace tutti::music;

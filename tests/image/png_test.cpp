@@ -1,4 +1,4 @@
-#include "image/png.hpp"
+#include <tutti/image/png.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The ALSA sequencer input fails cleanly: one line, no crash, when there is no sequencer (this
 // build machine) or the port does not exist.
-#include "live/alsa_midi_source.hpp"
+#include <tutti/live/alsa_midi_source.hpp>
 
 #include <gtest/gtest.h>
 

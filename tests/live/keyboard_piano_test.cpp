@@ -1,5 +1,5 @@
 // The computer keyboard as a piano: the layout, octave keys, releases after an octave change.
-#include "live/keyboard_piano.hpp"
+#include <tutti/live/keyboard_piano.hpp>
 
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>

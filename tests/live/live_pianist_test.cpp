@@ -2,7 +2,7 @@
 // a 60 fps frame loop, and the latency from each event to its key contact (press depth 1 in the
 // evaluated pose), which must stay within one frame; the pose at t must depend only on the
 // events that had arrived by t.
-#include "live/live_pianist.hpp"
+#include <tutti/live/live_pianist.hpp>
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <map>
 #include <random>
 
-#include "finger_motion/evaluate_hand_pose.hpp"
-#include "live/scripted_source.hpp"
-#include "piano_model/content_dir.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
+#include <tutti/live/scripted_source.hpp>
+#include <tutti/piano_model/content_dir.hpp>
 
 namespace tutti::live {
 namespace {

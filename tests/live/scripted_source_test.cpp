@@ -1,5 +1,5 @@
 // Scripted events arrive at their times, in order, each once.
-#include "live/scripted_source.hpp"
+#include <tutti/live/scripted_source.hpp>
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 
 namespace tutti::test {
 

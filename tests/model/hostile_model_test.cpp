@@ -7,7 +7,7 @@
 #include <random>
 
 #include "gltf_test_builder.hpp"
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 #include "testdata.hpp"
 
 namespace tutti::model {

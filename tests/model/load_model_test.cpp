@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "gltf_test_builder.hpp"
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 #include "testdata.hpp"
 
 namespace tutti::model {

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "gltf_test_builder.hpp"
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 
 namespace tutti::model {
 namespace {

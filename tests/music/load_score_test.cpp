@@ -1,4 +1,4 @@
-#include "music/load_score.hpp"
+#include <tutti/music/load_score.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Bars and beat lengths from time signatures.
-#include "music/meter.hpp"
+#include <tutti/music/meter.hpp>
 
 #include <gtest/gtest.h>
 

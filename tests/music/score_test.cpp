@@ -1,4 +1,4 @@
-#include "music/score.hpp"
+#include <tutti/music/score.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "music/tempo_map.hpp"
+#include <tutti/music/tempo_map.hpp>
 
 #include <gtest/gtest.h>
 

@@ -50,17 +50,17 @@ fi
 if find "$prefix" \( -name '*.cpp' -o -name '*_test.*' -o -name 'CMakeLists.txt' \) | grep .; then
   fail "sources or test files installed (above)"
 fi
-# Every header's "..." include is another installed header (a header including, say,
-# "app/..." compiles in the build tree, whose include roots hold more than was installed).
-include_root=$prefix/include/tutti
+# Every header's tutti include is another installed header (a header including, say,
+# <tutti/cli/...> compiles in the build tree, whose include root holds more than was installed).
+include_root=$prefix/include
 unresolved=0
 while IFS=: read -r header included; do
   if [ ! -f "$include_root/$included" ] && [ ! -f "$(dirname "$header")/$included" ]; then
-    echo "${header#"$include_root"/}: #include \"$included\" is not installed" >&2
+    echo "${header#"$include_root"/}: #include $included is not installed" >&2
     unresolved=1
   fi
-done < <(grep -rHo --include='*.hpp' '^#include "[^"]*"' "$include_root" |
-         sed 's/:#include "\(.*\)"$/:\1/')
+done < <(grep -rHoE --include='*.hpp' --include='*.h' '^#include (<tutti/[^>]*>|"[^"]*")' \
+           "$include_root/tutti" | sed -E 's/:#include [<"](.*)[>"]$/:\1/')
 [ "$unresolved" -eq 0 ] || fail "headers include files that are not installed (above)"
 content=$prefix/share/tutti/content
 assets=$prefix/share/tutti/assets
@@ -70,7 +70,7 @@ assets=$prefix/share/tutti/assets
 
 # 3. The consumer, copied out of the source tree with the example it builds.
 mkdir "$tmp/consumer"
-cp "$src/tests/package/consumer/CMakeLists.txt" "$src/engine/runtime/examples/embed_example.cpp" \
+cp "$src/tests/package/consumer/CMakeLists.txt" "$src/app/runtime/examples/embed_example.cpp" \
   "$tmp/consumer/"
 start=$SECONDS
 "$cmake" -S "$tmp/consumer" -B "$tmp/consumer-build" -G "$generator" \

@@ -1,6 +1,6 @@
 // Detail levels and bounds (render/mesh_lod.hpp) on the generated performer and trumpet, checked
 // against the files' own triangles and the CPU skinning reference (model::deform_vertex).
-#include "render/mesh_lod.hpp"
+#include <tutti/render/mesh_lod.hpp>
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "model/model_asset.hpp"
+#include <tutti/model/model_asset.hpp>
 
 namespace tutti::render {
 namespace {

@@ -1,6 +1,6 @@
 // ModelRenderer on the real device (lavapipe on CI), validation on: lighting and shadows, MSAA,
 // skinning and morph targets, each checked on pixels of models built in the test.
-#include "render/model_renderer.hpp"
+#include <tutti/render/model_renderer.hpp>
 
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "image/png.hpp"
-#include "render/offscreen_target.hpp"
-#include "render/shader_compiler.hpp"
+#include <tutti/image/png.hpp>
+#include <tutti/render/offscreen_target.hpp>
+#include <tutti/render/shader_compiler.hpp>
 #include "render_test_support.hpp"
 
 namespace tutti::render {

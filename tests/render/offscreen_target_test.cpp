@@ -1,6 +1,6 @@
 // Renders into an offscreen target on the real device (lavapipe on CI) with validation on, reads
 // the pixels back and checks them.
-#include "render/offscreen_target.hpp"
+#include <tutti/render/offscreen_target.hpp>
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <iterator>
 #include <vector>
 
-#include "image/png.hpp"
-#include "render/color_mesh_pipeline.hpp"
+#include <tutti/image/png.hpp>
+#include <tutti/render/color_mesh_pipeline.hpp>
 #include "render_test_support.hpp"
 #include "testdata.hpp"
 

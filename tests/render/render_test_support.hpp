@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "render/vulkan_context.hpp"
+#include <tutti/render/vulkan_context.hpp>
 
 namespace tutti::render::test {
 

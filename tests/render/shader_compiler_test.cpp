@@ -1,7 +1,7 @@
 // Runtime GLSL -> SPIR-V (render/shader_compiler.hpp) and the polled file watcher
 // (render/shader_watcher.hpp). Only the last tests need a Vulkan device.
 
-#include "render/shader_compiler.hpp"
+#include <tutti/render/shader_compiler.hpp>
 
 #include <gtest/gtest.h>
 
@@ -14,10 +14,10 @@
 #include <thread>
 #include <vector>
 
-#include "render/pipeline_builder.hpp"
+#include <tutti/render/pipeline_builder.hpp>
 #include "render/render_test_support.hpp"
-#include "render/shader_watcher.hpp"
-#include "render/shaders.hpp"
+#include <tutti/render/shader_watcher.hpp>
+#include <tutti/render/shaders.hpp>
 
 namespace tutti::render {
 namespace {

@@ -1,10 +1,10 @@
-#include "render/vulkan_context.hpp"
+#include <tutti/render/vulkan_context.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "render/vk_result.hpp"
+#include <tutti/render/vk_result.hpp>
 #include "render_test_support.hpp"
 
 namespace tutti::render {

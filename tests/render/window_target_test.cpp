@@ -2,7 +2,7 @@
 // `xvfb-run`, a virtual one). Without a display the window tests print "SKIPPED: no display" and
 // skip; without a Vulkan device, "SKIPPED: no Vulkan device". Validation (with synchronization
 // validation) is on and any message fails the test.
-#include "render/window_target.hpp"
+#include <tutti/render/window_target.hpp>
 
 #include <gtest/gtest.h>
 
@@ -18,10 +18,10 @@
 #include <thread>
 #include <vector>
 
-#include "image/png.hpp"
-#include "render/color_mesh_pipeline.hpp"
-#include "render/vulkan_context.hpp"
-#include "render/window.hpp"
+#include <tutti/image/png.hpp>
+#include <tutti/render/color_mesh_pipeline.hpp>
+#include <tutti/render/vulkan_context.hpp>
+#include <tutti/render/window.hpp>
 #include "render_test_support.hpp"
 #ifdef TUTTI_TEST_X11_PIXELS
 #include "x11_window_pixels.hpp"

@@ -2,7 +2,7 @@
 // drawn in WindowTarget's overlay pass over a cleared, multisampled 3D pass, captured. Validation
 // with synchronization validation is on; any message fails. Without a display or a Vulkan
 // device: "[  SKIPPED ]".
-#include "runtime/imgui_layer.hpp"
+#include <tutti/runtime/imgui_layer.hpp>
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "image/png.hpp"
+#include <tutti/image/png.hpp>
 #include "render/render_test_support.hpp"
-#include "render/vulkan_context.hpp"
-#include "render/window.hpp"
-#include "render/window_target.hpp"
+#include <tutti/render/vulkan_context.hpp>
+#include <tutti/render/window.hpp>
+#include <tutti/render/window_target.hpp>
 
 namespace tutti::runtime {
 namespace {

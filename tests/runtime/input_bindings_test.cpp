@@ -1,4 +1,4 @@
-#include "runtime/input_bindings.hpp"
+#include <tutti/runtime/input_bindings.hpp>
 
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>

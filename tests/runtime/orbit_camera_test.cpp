@@ -1,4 +1,4 @@
-#include "runtime/orbit_camera.hpp"
+#include <tutti/runtime/orbit_camera.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // ScenePlayer on the piano scene, headless (an OffscreenTarget), silent (the transport on the
 // host clock): camera modes through the key bindings, the transport through them, and a drawn
 // frame. Skipped without a Vulkan device.
-#include "runtime/scene_player.hpp"
+#include <tutti/runtime/scene_player.hpp>
 
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
@@ -9,9 +9,9 @@
 #include <memory>
 #include <vector>
 
-#include "render/offscreen_target.hpp"
+#include <tutti/render/offscreen_target.hpp>
 #include "render/render_test_support.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::runtime {
 namespace {

@@ -1,6 +1,6 @@
 // Transport over the simulated audio device (LiveOutput with driver "simulated"), whose
 // position is a function of the host time passed in: every case is deterministic.
-#include "runtime/transport.hpp"
+#include <tutti/runtime/transport.hpp>
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "audio/sound_font.hpp"
+#include <tutti/audio/sound_font.hpp>
 
 namespace tutti::runtime {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene/asset_mapping.hpp"
+#include <tutti/scene/asset_mapping.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "scene/load_scene.hpp"
+#include <tutti/scene/load_scene.hpp>
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <iterator>
 #include <string>
 
-#include "music/load_score.hpp"
-#include "scene/asset_mapping.hpp"
+#include <tutti/music/load_score.hpp>
+#include <tutti/scene/asset_mapping.hpp>
 #include "scene_test_support.hpp"
 
 namespace tutti::scene {

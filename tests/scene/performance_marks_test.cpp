@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "scene/load_scene.hpp"
+#include <tutti/scene/load_scene.hpp>
 #include "scene_test_support.hpp"
 
 namespace tutti::scene {

@@ -1,4 +1,4 @@
-#include "scene/scene.hpp"
+#include <tutti/scene/scene.hpp>
 
 #include <gtest/gtest.h>
 

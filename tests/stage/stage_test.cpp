@@ -1,7 +1,7 @@
 // The stage: the shipped scenes build; the pose at t is a pure function of t; pressed keys and
 // valves move their nodes; a user's own instrument model, through a mapping file with other node
 // names and centimetre units, moves exactly like the generated one.
-#include "stage/stage.hpp"
+#include <tutti/stage/stage.hpp>
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -12,13 +12,13 @@
 #include <filesystem>
 #include <fstream>
 
-#include "brass_motion/brass_pose_system.hpp"
-#include "components/body_motion.hpp"
-#include "components/finger.hpp"
-#include "components/valve.hpp"
-#include "ensemble_variation/ensemble_plan.hpp"
-#include "ensemble_variation/ensemble_variation_system.hpp"
-#include "scene/load_scene.hpp"
+#include <tutti/brass_motion/brass_pose_system.hpp>
+#include <tutti/components/body_motion.hpp>
+#include <tutti/components/finger.hpp>
+#include <tutti/components/valve.hpp>
+#include <tutti/ensemble_variation/ensemble_plan.hpp>
+#include <tutti/ensemble_variation/ensemble_variation_system.hpp>
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::stage {
 namespace {

@@ -1,12 +1,12 @@
-#include "music/midi/midi_reader.hpp"
+#include <tutti/music/midi/midi_reader.hpp>
 
 #include <algorithm>
 #include <utility>
 
-#include "core/file_io.hpp"
-#include "music/midi/midi_score_builder.hpp"
-#include "music/midi/smf_chunks.hpp"
-#include "music/midi/smf_events.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/midi/midi_score_builder.hpp>
+#include <tutti/music/midi/smf_chunks.hpp>
+#include <tutti/music/midi/smf_events.hpp>
 
 namespace tutti::music {
 

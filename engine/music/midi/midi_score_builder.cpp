@@ -1,12 +1,12 @@
-#include "music/midi/midi_score_builder.hpp"
+#include <tutti/music/midi/midi_score_builder.hpp>
 
 #include <algorithm>
 #include <limits>
 #include <tuple>
 #include <utility>
 
-#include "music/midi/midi_text.hpp"
-#include "music/midi/pedal_span_merge.hpp"
+#include <tutti/music/midi/midi_text.hpp>
+#include <tutti/music/midi/pedal_span_merge.hpp>
 
 namespace tutti::music::midi_detail {
 namespace {

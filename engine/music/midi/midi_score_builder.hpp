@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "music/midi/smf_chunks.hpp"
-#include "music/midi/smf_events.hpp"
-#include "music/score.hpp"
+#include <tutti/music/midi/smf_chunks.hpp>
+#include <tutti/music/midi/smf_events.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::music::midi_detail {
 

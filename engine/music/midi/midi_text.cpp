@@ -1,4 +1,4 @@
-#include "music/midi/midi_text.hpp"
+#include <tutti/music/midi/midi_text.hpp>
 
 #include <cstddef>
 

@@ -1,4 +1,4 @@
-#include "music/midi/midi_writer.hpp"
+#include <tutti/music/midi/midi_writer.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <tuple>
 #include <utility>
 
-#include "core/file_io.hpp"
-#include "music/midi/pedal_span_merge.hpp"
-#include "music/midi/smf_track_encoder.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/midi/pedal_span_merge.hpp>
+#include <tutti/music/midi/smf_track_encoder.hpp>
 
 namespace tutti::music {
 namespace {

@@ -18,8 +18,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "core/result.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::music {
 

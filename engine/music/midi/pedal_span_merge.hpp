@@ -8,7 +8,7 @@
 #include <tuple>
 #include <vector>
 
-#include "music/score.hpp"
+#include <tutti/music/score.hpp>
 
 namespace tutti::music::midi_detail {
 

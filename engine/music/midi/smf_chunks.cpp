@@ -1,10 +1,10 @@
-#include "music/midi/smf_chunks.hpp"
+#include <tutti/music/midi/smf_chunks.hpp>
 
 #include <algorithm>
 #include <string_view>
 
-#include "music/midi/byte_cursor.hpp"
-#include "music/midi/smf_error.hpp"
+#include <tutti/music/midi/byte_cursor.hpp>
+#include <tutti/music/midi/smf_error.hpp>
 
 namespace tutti::music::midi_detail {
 namespace {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::music::midi_detail {
 

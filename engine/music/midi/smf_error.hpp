@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::music::midi_detail {
 

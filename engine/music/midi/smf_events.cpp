@@ -1,7 +1,7 @@
-#include "music/midi/smf_events.hpp"
+#include <tutti/music/midi/smf_events.hpp>
 
-#include "music/midi/byte_cursor.hpp"
-#include "music/midi/smf_error.hpp"
+#include <tutti/music/midi/byte_cursor.hpp>
+#include <tutti/music/midi/smf_error.hpp>
 
 namespace tutti::music::midi_detail {
 namespace {

@@ -17,8 +17,8 @@
 #include <span>
 #include <string>
 
-#include "core/result.hpp"
-#include "music/midi/smf_chunks.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/music/midi/smf_chunks.hpp>
 
 namespace tutti::music::midi_detail {
 

@@ -1,4 +1,4 @@
-#include "music/midi/smf_track_encoder.hpp"
+#include <tutti/music/midi/smf_track_encoder.hpp>
 
 #include <algorithm>
 #include <tuple>

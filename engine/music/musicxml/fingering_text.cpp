@@ -1,6 +1,6 @@
-#include "music/musicxml/fingering_text.hpp"
+#include <tutti/music/musicxml/fingering_text.hpp>
 
-#include "music/musicxml/xml_text_values.hpp"
+#include <tutti/music/musicxml/xml_text_values.hpp>
 
 namespace tutti::music::musicxml {
 

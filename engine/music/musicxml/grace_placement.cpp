@@ -1,4 +1,4 @@
-#include "music/musicxml/grace_placement.hpp"
+#include <tutti/music/musicxml/grace_placement.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "music/musicxml/measure_walker.hpp"
+#include <tutti/music/musicxml/measure_walker.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -7,12 +7,12 @@
 #include <set>
 #include <string_view>
 
-#include "music/musicxml/fingering_text.hpp"
-#include "music/musicxml/grace_placement.hpp"
-#include "music/musicxml/notation_values.hpp"
-#include "music/musicxml/tick_resolution.hpp"
-#include "music/musicxml/xml_text_values.hpp"
-#include "music/pitch.hpp"
+#include <tutti/music/musicxml/fingering_text.hpp>
+#include <tutti/music/musicxml/grace_placement.hpp>
+#include <tutti/music/musicxml/notation_values.hpp>
+#include <tutti/music/musicxml/tick_resolution.hpp>
+#include <tutti/music/musicxml/xml_text_values.hpp>
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::music::musicxml {
 

@@ -36,10 +36,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/result.hpp"
-#include "music/musicxml/score_parts.hpp"
-#include "music/musicxml/tie_merge.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/music/musicxml/score_parts.hpp>
+#include <tutti/music/musicxml/tie_merge.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::music::musicxml {
 

@@ -1,10 +1,10 @@
-#include "music/musicxml/musicxml_document.hpp"
+#include <tutti/music/musicxml/musicxml_document.hpp>
 
 #include <algorithm>
 #include <cstring>
 
-#include "music/musicxml/mxl_archive.hpp"
-#include "music/musicxml/xml_text_values.hpp"
+#include <tutti/music/musicxml/mxl_archive.hpp>
+#include <tutti/music/musicxml/xml_text_values.hpp>
 
 namespace tutti::music::musicxml {
 

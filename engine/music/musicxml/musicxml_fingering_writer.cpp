@@ -1,4 +1,4 @@
-#include "music/musicxml/musicxml_fingering_writer.hpp"
+#include <tutti/music/musicxml/musicxml_fingering_writer.hpp>
 
 #include <algorithm>
 #include <cstring>
@@ -8,11 +8,11 @@
 #include <string_view>
 #include <vector>
 
-#include "core/file_io.hpp"
-#include "music/musicxml/musicxml_document.hpp"
-#include "music/musicxml/note_element_order.hpp"
-#include "music/musicxml/source_preserving_serializer.hpp"
-#include "music/musicxml/xml_source_range.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/musicxml/musicxml_document.hpp>
+#include <tutti/music/musicxml/note_element_order.hpp>
+#include <tutti/music/musicxml/source_preserving_serializer.hpp>
+#include <tutti/music/musicxml/xml_source_range.hpp>
 
 namespace tutti::music {
 

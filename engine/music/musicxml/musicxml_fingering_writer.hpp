@@ -20,8 +20,8 @@
 #include <span>
 #include <string>
 
-#include "core/result.hpp"
-#include "music/score.hpp"
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::music {
 

@@ -1,14 +1,14 @@
-#include "music/musicxml/musicxml_reader.hpp"
+#include <tutti/music/musicxml/musicxml_reader.hpp>
 
 #include <algorithm>
 #include <pugixml.hpp>
 #include <tuple>
 
-#include "core/file_io.hpp"
-#include "music/musicxml/measure_walker.hpp"
-#include "music/musicxml/musicxml_document.hpp"
-#include "music/musicxml/score_parts.hpp"
-#include "music/musicxml/tick_resolution.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/musicxml/measure_walker.hpp>
+#include <tutti/music/musicxml/musicxml_document.hpp>
+#include <tutti/music/musicxml/score_parts.hpp>
+#include <tutti/music/musicxml/tick_resolution.hpp>
 
 namespace tutti::music {
 

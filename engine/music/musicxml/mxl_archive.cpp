@@ -1,4 +1,4 @@
-#include "music/musicxml/mxl_archive.hpp"
+#include <tutti/music/musicxml/mxl_archive.hpp>
 
 #include <zip.h>
 
@@ -10,7 +10,7 @@
 #include <pugixml.hpp>
 #include <string_view>
 
-#include "music/musicxml/xml_text_values.hpp"
+#include <tutti/music/musicxml/xml_text_values.hpp>
 
 namespace tutti::music::musicxml {
 

@@ -8,7 +8,7 @@
 #include <span>
 #include <string>
 
-#include "core/result.hpp"
+#include <tutti/core/result.hpp>
 
 namespace tutti::music::musicxml {
 

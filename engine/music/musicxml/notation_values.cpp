@@ -1,4 +1,4 @@
-#include "music/musicxml/notation_values.hpp"
+#include <tutti/music/musicxml/notation_values.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <map>
 #include <numeric>
 
-#include "music/musicxml/xml_text_values.hpp"
+#include <tutti/music/musicxml/xml_text_values.hpp>
 
 namespace tutti::music::musicxml {
 

@@ -1,4 +1,4 @@
-#include "music/musicxml/note_element_order.hpp"
+#include <tutti/music/musicxml/note_element_order.hpp>
 
 #include <algorithm>
 

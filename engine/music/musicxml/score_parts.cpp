@@ -1,10 +1,10 @@
-#include "music/musicxml/score_parts.hpp"
+#include <tutti/music/musicxml/score_parts.hpp>
 
 #include <cstring>
 #include <string_view>
 #include <unordered_map>
 
-#include "music/musicxml/xml_text_values.hpp"
+#include <tutti/music/musicxml/xml_text_values.hpp>
 
 namespace tutti::music::musicxml {
 

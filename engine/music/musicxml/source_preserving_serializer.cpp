@@ -1,6 +1,6 @@
-#include "music/musicxml/source_preserving_serializer.hpp"
+#include <tutti/music/musicxml/source_preserving_serializer.hpp>
 
-#include "music/musicxml/xml_source_range.hpp"
+#include <tutti/music/musicxml/xml_source_range.hpp>
 
 namespace tutti::music::musicxml {
 

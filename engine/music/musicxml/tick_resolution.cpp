@@ -1,4 +1,4 @@
-#include "music/musicxml/tick_resolution.hpp"
+#include <tutti/music/musicxml/tick_resolution.hpp>
 
 #include <cmath>
 #include <numeric>

@@ -1,4 +1,4 @@
-#include "music/musicxml/tie_merge.hpp"
+#include <tutti/music/musicxml/tie_merge.hpp>
 
 #include <algorithm>
 #include <climits>

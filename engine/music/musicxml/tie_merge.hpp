@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "music/score.hpp"
+#include <tutti/music/score.hpp>
 
 namespace tutti::music::musicxml {
 

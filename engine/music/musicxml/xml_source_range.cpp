@@ -1,4 +1,4 @@
-#include "music/musicxml/xml_source_range.hpp"
+#include <tutti/music/musicxml/xml_source_range.hpp>
 
 #include <cstring>
 

@@ -1,4 +1,4 @@
-#include "music/musicxml/xml_text_values.hpp"
+#include <tutti/music/musicxml/xml_text_values.hpp>
 
 #include <charconv>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "music/pig/pig_format.hpp"
+#include <tutti/music/pig/pig_format.hpp>
 
 #include <charconv>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <sstream>
 #include <vector>
 
-#include "core/file_io.hpp"
-#include "music/pitch.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::music {
 

@@ -1,7 +1,7 @@
 // Byte-level tests of the MIDI reader: every file is built here, byte by byte, so each test
 // shows exactly the input it is about.
 
-#include "music/midi/midi_reader.hpp"
+#include <tutti/music/midi/midi_reader.hpp>
 
 #include <gtest/gtest.h>
 

@@ -14,8 +14,8 @@
 #include <set>
 #include <string>
 
-#include "music/midi/midi_reader.hpp"
-#include "music/midi/midi_writer.hpp"
+#include <tutti/music/midi/midi_reader.hpp>
+#include <tutti/music/midi/midi_writer.hpp>
 #include "score_compare.hpp"
 #include "testdata.hpp"
 

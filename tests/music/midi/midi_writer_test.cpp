@@ -1,6 +1,6 @@
 // Writer tests: the bytes it produces, and round trips (write -> read) of hand-made scores.
 
-#include "music/midi/midi_writer.hpp"
+#include <tutti/music/midi/midi_writer.hpp>
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "music/midi/midi_reader.hpp"
+#include <tutti/music/midi/midi_reader.hpp>
 #include "score_compare.hpp"
 #include "smf_bytes.hpp"
 #include "testdata.hpp"

@@ -10,7 +10,7 @@
 #include <tuple>
 #include <vector>
 
-#include "music/score.hpp"
+#include <tutti/music/score.hpp>
 
 namespace tutti::test {
 

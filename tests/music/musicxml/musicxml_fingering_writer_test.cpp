@@ -1,4 +1,4 @@
-#include "music/musicxml/musicxml_fingering_writer.hpp"
+#include <tutti/music/musicxml/musicxml_fingering_writer.hpp>
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/file_io.hpp"
-#include "music/musicxml/musicxml_reader.hpp"
+#include <tutti/core/file_io.hpp>
+#include <tutti/music/musicxml/musicxml_reader.hpp>
 #include "musicxml_test_support.hpp"
 #include "testdata.hpp"
 

@@ -1,4 +1,4 @@
-#include "music/musicxml/musicxml_reader.hpp"
+#include <tutti/music/musicxml/musicxml_reader.hpp>
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "music/musicxml/fingering_text.hpp"
-#include "music/musicxml/mxl_archive.hpp"
-#include "music/musicxml/tick_resolution.hpp"
+#include <tutti/music/musicxml/fingering_text.hpp>
+#include <tutti/music/musicxml/mxl_archive.hpp>
+#include <tutti/music/musicxml/tick_resolution.hpp>
 #include "musicxml_test_support.hpp"
 #include "zip_builder.hpp"
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "music/musicxml/musicxml_reader.hpp"
-#include "music/score.hpp"
+#include <tutti/music/musicxml/musicxml_reader.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::test {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "music/musicxml/musicxml_reader.hpp"
+#include <tutti/music/musicxml/musicxml_reader.hpp>
 #include "musicxml_test_support.hpp"
 #include "testdata.hpp"
 

@@ -1,4 +1,4 @@
-#include "music/pig/pig_format.hpp"
+#include <tutti/music/pig/pig_format.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // The audio clock (audio_sync/audio_clock.hpp) against a simulated device: it never goes
 // backward, stays within a frame of what is heard for 10 simulated minutes with a device 0.1 %
 // fast (and slow), learns the device's rate, and seeks, pauses and loops.
-#include "audio_sync/audio_clock.hpp"
+#include <tutti/audio_sync/audio_clock.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "audio_sync/simulated_device.hpp"
+#include <tutti/audio_sync/simulated_device.hpp>
 
 namespace tutti::audio_sync {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "brass_model/instrument.hpp"
-#include "music/pitch.hpp"
+#include <tutti/brass_model/instrument.hpp>
+#include <tutti/music/pitch.hpp>
 
 namespace tutti::brass::test {
 

@@ -1,6 +1,6 @@
 // The acoustics behind the charts: the harmonic series' tuning, how valve combinations add tube
 // (and come out sharp), a double horn's side switch, and where a slide must be.
-#include "brass_model/brass_physics.hpp"
+#include <tutti/brass_model/brass_physics.hpp>
 
 #include <gtest/gtest.h>
 

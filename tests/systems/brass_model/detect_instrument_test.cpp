@@ -5,7 +5,7 @@
 #include <string>
 
 #include "brass_fixture.hpp"
-#include "music/load_score.hpp"
+#include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
 namespace tutti::brass {

@@ -1,6 +1,6 @@
 // Loading content/instruments: every shipped file loads; a broken file gives one line naming
 // the file and the JSON path; overrides and optional parts of the format work.
-#include "brass_model/instrument_file.hpp"
+#include <tutti/brass_model/instrument_file.hpp>
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 
 #include "brass_fixture.hpp"
-#include "content/json_reader.hpp"
+#include <tutti/content/json_reader.hpp>
 #include "testdata.hpp"
 
 namespace tutti::brass {

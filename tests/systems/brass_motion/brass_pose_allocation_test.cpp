@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "allocation_counter.hpp"
-#include "brass_motion/evaluate_brass_pose.hpp"
-#include "brass_motion/plan_brass_motion.hpp"
-#include "fingering_planner/brass_planner.hpp"
+#include <tutti/brass_motion/evaluate_brass_pose.hpp>
+#include <tutti/brass_motion/plan_brass_motion.hpp>
+#include <tutti/fingering_planner/brass_planner.hpp>
 
 namespace tutti::brass {
 namespace {

@@ -7,18 +7,18 @@
 #include <memory>
 #include <vector>
 
-#include "brass_motion/brass_pose_system.hpp"
-#include "brass_motion/evaluate_brass_pose.hpp"
-#include "brass_motion/plan_brass_motion.hpp"
-#include "brass_motion/plan_brass_player.hpp"
-#include "components/breath.hpp"
-#include "components/instrument.hpp"
-#include "components/mouth.hpp"
-#include "components/slide.hpp"
-#include "components/valve.hpp"
-#include "fingering_planner/brass_lines.hpp"
-#include "fingering_planner/brass_planner.hpp"
-#include "music/load_score.hpp"
+#include <tutti/brass_motion/brass_pose_system.hpp>
+#include <tutti/brass_motion/evaluate_brass_pose.hpp>
+#include <tutti/brass_motion/plan_brass_motion.hpp>
+#include <tutti/brass_motion/plan_brass_player.hpp>
+#include <tutti/components/breath.hpp>
+#include <tutti/components/instrument.hpp>
+#include <tutti/components/mouth.hpp>
+#include <tutti/components/slide.hpp>
+#include <tutti/components/valve.hpp>
+#include <tutti/fingering_planner/brass_lines.hpp>
+#include <tutti/fingering_planner/brass_planner.hpp>
+#include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
 namespace tutti::brass {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "breath_fixture.hpp"
-#include "music/load_score.hpp"
+#include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
 namespace tutti::brass {

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <vector>
 
-#include "brass_model/brass_line.hpp"
-#include "brass_motion/breath_params.hpp"
-#include "brass_motion/breath_plan.hpp"
-#include "music/score.hpp"
+#include <tutti/brass_model/brass_line.hpp>
+#include <tutti/brass_motion/breath_params.hpp>
+#include <tutti/brass_motion/breath_plan.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::brass::test {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "brass_motion/plan_brass_player.hpp"
+#include <tutti/brass_motion/plan_brass_player.hpp>
 #include "breath_fixture.hpp"
 
 namespace tutti::brass {

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "breath_fixture.hpp"
-#include "content/json_reader.hpp"
+#include <tutti/content/json_reader.hpp>
 #include "testdata.hpp"
 
 namespace tutti::brass {

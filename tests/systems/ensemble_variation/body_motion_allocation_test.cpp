@@ -7,7 +7,7 @@
 
 #include "allocation_counter.hpp"
 #include "ensemble_fixture.hpp"
-#include "ensemble_variation/evaluate_body_motion.hpp"
+#include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
 namespace tutti::ensemble {
 namespace {

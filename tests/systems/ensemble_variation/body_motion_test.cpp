@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "ensemble_fixture.hpp"
-#include "ensemble_variation/ensemble_plan.hpp"
-#include "ensemble_variation/evaluate_body_motion.hpp"
+#include <tutti/ensemble_variation/ensemble_plan.hpp>
+#include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
 namespace tutti::ensemble {
 namespace {

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "brass_motion/breath_plan.hpp"
-#include "ensemble_variation/ensemble_plan.hpp"
-#include "music/score.hpp"
+#include <tutti/brass_motion/breath_plan.hpp>
+#include <tutti/ensemble_variation/ensemble_plan.hpp>
+#include <tutti/music/score.hpp>
 
 namespace tutti::ensemble::test {
 

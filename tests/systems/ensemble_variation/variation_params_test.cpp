@@ -1,5 +1,5 @@
 // Variation parameters from seeds (ensemble_variation/variation_params.hpp).
-#include "ensemble_variation/variation_params.hpp"
+#include <tutti/ensemble_variation/variation_params.hpp>
 
 #include <gtest/gtest.h>
 
@@ -32,7 +32,7 @@ TEST(VariationParams, NeighbouringSeedsDifferInEveryField) {
 }
 
 TEST(VariationParams, SceneValuesOverrideOnlyTheirFields) {
-  scene::Variation overrides;
+  VariationOverrides overrides;
   overrides.sway_amount = 0.9;
   overrides.breath_depth = 0.0;
   const VariationParams drawn = draw_variation(42);

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "allocation_counter.hpp"
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 #include "finger_motion_fixture.hpp"
 
 namespace tutti::finger_motion {

@@ -1,13 +1,13 @@
 // A tiny world: one pianist, one right hand, five fingers; one frame of the schedule.
-#include "finger_motion/finger_pose_system.hpp"
+#include <tutti/finger_motion/finger_pose_system.hpp>
 
 #include <gtest/gtest.h>
 
 #include <memory>
 
-#include "components/finger.hpp"
-#include "components/hand.hpp"
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/components/finger.hpp>
+#include <tutti/components/hand.hpp>
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 #include "finger_motion_fixture.hpp"
 
 namespace tutti::finger_motion {

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 #include "finger_motion_fixture.hpp"
 
 namespace tutti::finger_motion {

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 #include "finger_motion_fixture.hpp"
-#include "fingering_planner/fingering_model.hpp"
-#include "music/load_score.hpp"
-#include "spline_motion/smoothing.hpp"
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/spline_motion/smoothing.hpp>
 
 namespace tutti::finger_motion {
 namespace {

@@ -2,7 +2,7 @@
 // stroke's bottom time, from its start, to its travel; without strokes nothing changes.
 #include <gtest/gtest.h>
 
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 #include "finger_motion_fixture.hpp"
 
 namespace tutti::finger_motion {

@@ -2,9 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "finger_motion/finger_motion_params.hpp"
+#include <tutti/finger_motion/finger_motion_params.hpp>
 #include "finger_motion_fixture.hpp"
-#include "piano_model/json_document.hpp"
+#include <tutti/piano_model/json_document.hpp>
 
 namespace tutti::finger_motion {
 namespace {

@@ -2,7 +2,7 @@
 // the stroke, press depth 1 exactly at the onset, held to the offset, released after.
 #include <gtest/gtest.h>
 
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 #include "finger_motion_fixture.hpp"
 
 namespace tutti::finger_motion {

@@ -1,9 +1,9 @@
 // Players' lines from a score's brass parts: voices, monophony, written pitch.
-#include "fingering_planner/brass_lines.hpp"
+#include <tutti/fingering_planner/brass_lines.hpp>
 
 #include <gtest/gtest.h>
 
-#include "music/load_score.hpp"
+#include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
 namespace tutti::brass {

@@ -1,6 +1,6 @@
 // Brass fingering planner: standard fingerings by default, alternates only where they help,
 // slide timing, out-of-range notes, real parts.
-#include "fingering_planner/brass_planner.hpp"
+#include <tutti/fingering_planner/brass_planner.hpp>
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "fingering_planner/brass_lines.hpp"
-#include "music/load_score.hpp"
+#include <tutti/fingering_planner/brass_lines.hpp>
+#include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
 namespace tutti::brass {

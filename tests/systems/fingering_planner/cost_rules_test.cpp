@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "fingering_planner/transition_cost.hpp"
+#include <tutti/fingering_planner/transition_cost.hpp>
 #include "planner_test_util.hpp"
 
 namespace tutti::piano {

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "fingering_planner/plan_score.hpp"
-#include "fingering_planner/weight_fitting.hpp"
-#include "music/load_score.hpp"
-#include "music/pig/pig_format.hpp"
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/fingering_planner/weight_fitting.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/music/pig/pig_format.hpp>
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 

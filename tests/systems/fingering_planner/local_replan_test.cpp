@@ -1,6 +1,6 @@
 // Re-planning after a pin: only the affected span changes, and the result is as good as a full
 // re-plan with the same pins (on real pieces).
-#include "fingering_planner/local_replan.hpp"
+#include <tutti/fingering_planner/local_replan.hpp>
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "fingering_planner/exact_planner.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "music/load_score.hpp"
+#include <tutti/fingering_planner/exact_planner.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/music/load_score.hpp>
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "fingering_planner/fingering_model.hpp"
-#include "fingering_planner/hand_plan.hpp"
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/fingering_planner/hand_plan.hpp>
 
 namespace tutti::piano::test {
 

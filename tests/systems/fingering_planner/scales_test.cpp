@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <vector>
 
-#include "fingering_planner/exact_planner.hpp"
-#include "fingering_planner/lookahead_planner.hpp"
-#include "fingering_planner/plan_score.hpp"
-#include "music/load_score.hpp"
-#include "music/pitch.hpp"
+#include <tutti/fingering_planner/exact_planner.hpp>
+#include <tutti/fingering_planner/lookahead_planner.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/music/pitch.hpp>
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 

@@ -1,7 +1,7 @@
 // The streaming fingering planner: when it decides (lookahead, deadline, chords arriving late),
 // what a key still down does, bounded memory, bad input, and its agreement with the exact and
 // the paper's lookahead planner on real pieces.
-#include "fingering_planner/streaming_planner.hpp"
+#include <tutti/fingering_planner/streaming_planner.hpp>
 
 #include <gtest/gtest.h>
 
@@ -11,11 +11,11 @@
 #include <limits>
 #include <vector>
 
-#include "fingering_planner/exact_planner.hpp"
-#include "fingering_planner/live_hand_split.hpp"
-#include "fingering_planner/streaming_piano.hpp"
-#include "fingering_planner/streaming_report.hpp"
-#include "music/load_score.hpp"
+#include <tutti/fingering_planner/exact_planner.hpp>
+#include <tutti/fingering_planner/live_hand_split.hpp>
+#include <tutti/fingering_planner/streaming_piano.hpp>
+#include <tutti/fingering_planner/streaming_report.hpp>
+#include <tutti/music/load_score.hpp>
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <tuple>
 
-#include "fingering_planner/cost_weights.hpp"
-#include "fingering_planner/fingering_model.hpp"
+#include <tutti/fingering_planner/cost_weights.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
 
 namespace tutti::piano {
 namespace {

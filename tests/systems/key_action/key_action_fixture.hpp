@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <string>
 
-#include "finger_motion/finger_motion_params.hpp"
-#include "fingering_planner/fingering_model.hpp"
-#include "key_action/humane_performance.hpp"
-#include "music/load_score.hpp"
-#include "piano_performance/performance_plan.hpp"
+#include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/key_action/humane_performance.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/piano_performance/performance_plan.hpp>
 
 namespace tutti::key_action::test {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "finger_motion/evaluate_hand_pose.hpp"
+#include <tutti/finger_motion/evaluate_hand_pose.hpp>
 #include "key_action_fixture.hpp"
 
 namespace tutti::key_action {

@@ -1,4 +1,4 @@
-#include "key_action/note_strokes.hpp"
+#include <tutti/key_action/note_strokes.hpp>
 
 #include <gtest/gtest.h>
 

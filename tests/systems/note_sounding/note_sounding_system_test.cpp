@@ -1,6 +1,6 @@
 // Note::sounding from the frame time: a tiny world of notes, one schedule, frames played forward,
 // backwards and out of order.
-#include "note_sounding/note_sounding_system.hpp"
+#include <tutti/note_sounding/note_sounding_system.hpp>
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "components/note.hpp"
+#include <tutti/components/note.hpp>
 
 namespace tutti::note_sounding {
 namespace {

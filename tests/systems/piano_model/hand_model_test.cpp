@@ -1,10 +1,10 @@
-#include "piano_model/hand_model.hpp"
+#include <tutti/piano_model/hand_model.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
-#include "piano_model/content_dir.hpp"
+#include <tutti/piano_model/content_dir.hpp>
 
 namespace tutti::piano {
 namespace {

@@ -1,11 +1,11 @@
-#include "piano_model/keyboard.hpp"
+#include <tutti/piano_model/keyboard.hpp>
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "music/pitch.hpp"
-#include "piano_model/content_dir.hpp"
+#include <tutti/music/pitch.hpp>
+#include <tutti/piano_model/content_dir.hpp>
 
 namespace tutti::piano {
 namespace {

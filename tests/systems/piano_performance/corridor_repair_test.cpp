@@ -1,15 +1,15 @@
 // The corridor repair: jumps get a transition gap, contract violations are fixed, and the result
 // always plans.
-#include "piano_performance/corridor_repair.hpp"
+#include <tutti/piano_performance/corridor_repair.hpp>
 
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "piano_performance/performance_plan.hpp"
-#include "spline_motion/corridor_portals.hpp"
-#include "spline_motion/path_report.hpp"
-#include "spline_motion/smoothing.hpp"
+#include <tutti/piano_performance/performance_plan.hpp>
+#include <tutti/spline_motion/corridor_portals.hpp>
+#include <tutti/spline_motion/path_report.hpp>
+#include <tutti/spline_motion/smoothing.hpp>
 
 namespace tutti::performance {
 namespace {

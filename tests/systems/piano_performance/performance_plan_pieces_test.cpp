@@ -19,8 +19,8 @@
 #include <string_view>
 #include <vector>
 
-#include "music/load_score.hpp"
-#include "piano_performance/performance_plan.hpp"
+#include <tutti/music/load_score.hpp>
+#include <tutti/piano_performance/performance_plan.hpp>
 #include "testdata.hpp"
 
 namespace tutti::performance {

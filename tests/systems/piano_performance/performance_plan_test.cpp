@@ -1,13 +1,13 @@
 // Whole pieces through fingering + repair + path: every note fingered, the path never leaves the
 // corridors it was planned through, deterministic.
-#include "piano_performance/performance_plan.hpp"
+#include <tutti/piano_performance/performance_plan.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
 
-#include "music/load_score.hpp"
+#include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
 namespace tutti::performance {

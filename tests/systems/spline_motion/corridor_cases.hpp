@@ -9,9 +9,9 @@
 #include <span>
 #include <string>
 
-#include "piano_model/hand_corridor.hpp"
-#include "spline_motion/corridor_portals.hpp"
-#include "spline_motion/taut_string.hpp"
+#include <tutti/piano_model/hand_corridor.hpp>
+#include <tutti/spline_motion/corridor_portals.hpp>
+#include <tutti/spline_motion/taut_string.hpp>
 
 namespace tutti::motion::testing {
 

@@ -1,4 +1,4 @@
-#include "spline_motion/corridor_portals.hpp"
+#include <tutti/spline_motion/corridor_portals.hpp>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

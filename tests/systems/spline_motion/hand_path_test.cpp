@@ -1,4 +1,4 @@
-#include "spline_motion/hand_path.hpp"
+#include <tutti/spline_motion/hand_path.hpp>
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "corridor_cases.hpp"
-#include "spline_motion/smoothing.hpp"
+#include <tutti/spline_motion/smoothing.hpp>
 
 namespace tutti::motion {
 namespace {

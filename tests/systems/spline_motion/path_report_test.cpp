@@ -1,11 +1,11 @@
-#include "spline_motion/path_report.hpp"
+#include <tutti/spline_motion/path_report.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
 #include "corridor_cases.hpp"
-#include "spline_motion/smoothing.hpp"
+#include <tutti/spline_motion/smoothing.hpp>
 
 namespace tutti::motion {
 namespace {

@@ -1,4 +1,4 @@
-#include "spline_motion/taut_string.hpp"
+#include <tutti/spline_motion/taut_string.hpp>
 
 #include <gtest/gtest.h>
 

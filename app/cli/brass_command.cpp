@@ -1,0 +1,258 @@
+#include <tutti/cli/brass_command.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include <tutti/cli/exit_codes.hpp>
+#include <tutti/brass_model/instrument.hpp>
+#include <tutti/brass_motion/brass_motion_params.hpp>
+#include <tutti/brass_motion/breath_params.hpp>
+#include <tutti/brass_motion/breath_plan.hpp>
+#include <tutti/brass_motion/plan_brass_motion.hpp>
+#include <tutti/fingering_planner/brass_lines.hpp>
+#include <tutti/fingering_planner/brass_planner.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/music/pitch.hpp>
+
+namespace tutti::app {
+namespace {
+
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// The part `wanted` names: a 1-based index, else a name (exact, then contained), -1 = none.
+int find_part(const music::Score& score, const std::string& wanted) {
+  if (!wanted.empty() && std::all_of(wanted.begin(), wanted.end(),
+                                     [](unsigned char c) { return std::isdigit(c) != 0; })) {
+    const long index = std::strtol(wanted.c_str(), nullptr, 10);
+    return index >= 1 && static_cast<std::size_t>(index) <= score.parts.size()
+               ? static_cast<int>(index - 1)
+               : -1;
+  }
+  const std::string key = lower(wanted);
+  for (std::size_t p = 0; p < score.parts.size(); ++p) {
+    if (lower(score.parts[p].name) == key) return static_cast<int>(p);
+  }
+  for (std::size_t p = 0; p < score.parts.size(); ++p) {
+    if (lower(score.parts[p].name).find(key) != std::string::npos) return static_cast<int>(p);
+  }
+  return -1;
+}
+
+std::string part_list(const music::Score& score) {
+  std::string text;
+  for (std::size_t p = 0; p < score.parts.size(); ++p) {
+    if (!text.empty()) text += ", ";
+    text += std::to_string(p + 1) + " \"" + score.parts[p].name + "\"";
+  }
+  return text.empty() ? "none" : text;
+}
+
+std::string instrument_list(const std::vector<brass::Instrument>& known) {
+  std::string text;
+  for (const brass::Instrument& i : known) text += (text.empty() ? "" : ", ") + i.id;
+  return text;
+}
+
+const char* breath_kind_name(brass::BreathKind kind) {
+  switch (kind) {
+    case brass::BreathKind::before_entrance:
+      return "before_entrance";
+    case brass::BreathKind::in_rest:
+      return "in_rest";
+    case brass::BreathKind::last_beat:
+      return "last_beat";
+    case brass::BreathKind::prepared:
+      return "prepared";
+    case brass::BreathKind::catch_breath:
+      return "catch_breath";
+  }
+  return "?";
+}
+
+struct PlayerReport {
+  brass::BrassLine line;
+  brass::BrassPlanSummary summary;
+  brass::BreathPlan breaths;
+};
+
+nlohmann::json player_json(const PlayerReport& r, const brass::BrassMotionParams& motion) {
+  const brass::Instrument& instrument = *r.line.instrument;
+  nlohmann::json notes = nlohmann::json::array();
+  for (const brass::LineNote& n : r.line.notes) {
+    nlohmann::json note = {{"onset_s", n.onset_s},
+                           {"offset_s", n.offset_s},
+                           {"score_note", n.score_index},
+                           {"sounding", music::pitch_name(n.sounding)},
+                           {"written", music::pitch_name(n.written)},
+                           {"playable", n.playable}};
+    if (n.fingering >= 0) {
+      const brass::Fingering& f = instrument.chart[static_cast<std::size_t>(n.fingering)];
+      note["fingering"] = brass::fingering_name(instrument, f);
+      note["partial"] = f.partial;
+      if (instrument.mechanism == brass::Mechanism::slide) {
+        note["position"] = f.position;
+        note["slide_mm"] = f.slide_mm;
+      }
+      note["alternate"] = n.alternate;
+      note["tension"] = brass::embouchure_tension(instrument, n.written, motion);
+    }
+    notes.push_back(std::move(note));
+  }
+  nlohmann::json breaths = nlohmann::json::array();
+  for (const brass::BreathEvent& b : r.breaths.events) {
+    breaths.push_back({{"kind", breath_kind_name(b.kind)},
+                       {"prepare_start_s", b.prepare_start_s},
+                       {"start_s", b.start_s},
+                       {"end_s", b.end_s},
+                       {"depth", b.depth},
+                       {"before_note", b.before_note}});
+  }
+  nlohmann::json diagnostics = nlohmann::json::array();
+  for (const brass::BrassDiagnostic& d : r.summary.diagnostics) diagnostics.push_back(d.message);
+  return {{"part", r.line.part + 1},
+          {"name", r.line.part_name},
+          {"voice", r.line.voice + 1},
+          {"instrument", instrument.id},
+          {"notes", std::move(notes)},
+          {"breaths", std::move(breaths)},
+          {"unplayable", r.summary.unplayable},
+          {"alternates", r.summary.alternates},
+          {"slide_travel_mm", r.summary.slide_travel_mm},
+          {"infeasible_moves", r.summary.infeasible_moves},
+          {"diagnostics", std::move(diagnostics)}};
+}
+
+void player_text(const PlayerReport& r, const brass::BrassMotionParams& motion, std::ostream& out) {
+  const brass::Instrument& instrument = *r.line.instrument;
+  out << "part " << r.line.part + 1 << " \"" << r.line.part_name << "\" voice " << r.line.voice + 1
+      << ": " << instrument.display_name << " (" << instrument.id << "), " << r.line.notes.size()
+      << " notes, " << r.summary.alternates << " alternates, " << r.summary.unplayable
+      << " out of range, " << r.breaths.events.size() << " breaths";
+  if (instrument.mechanism == brass::Mechanism::slide) {
+    char travel[64];
+    std::snprintf(travel, sizeof travel, ", slide travel %.0f mm", r.summary.slide_travel_mm);
+    out << travel;
+  }
+  out << "\n";
+  std::size_t next_breath = 0;
+  for (const brass::LineNote& n : r.line.notes) {
+    while (next_breath < r.breaths.events.size() &&
+           r.breaths.events[next_breath].start_s <= n.onset_s) {
+      const brass::BreathEvent& b = r.breaths.events[next_breath++];
+      char line[128];
+      std::snprintf(line, sizeof line, "  %9.3f  breath (%s) until %.3f s, depth %.2f\n", b.start_s,
+                    breath_kind_name(b.kind), b.end_s, b.depth);
+      out << line;
+    }
+    char line[160];
+    if (n.fingering < 0) {
+      std::snprintf(line, sizeof line, "  %9.3f  %-4s (written %-4s)  out of range, not played\n",
+                    n.onset_s, music::pitch_name(n.sounding).c_str(),
+                    music::pitch_name(n.written).c_str());
+    } else {
+      const brass::Fingering& f = instrument.chart[static_cast<std::size_t>(n.fingering)];
+      std::snprintf(line, sizeof line,
+                    "  %9.3f  %-4s (written %-4s)  %-7s partial %2d  tension %.2f%s\n", n.onset_s,
+                    music::pitch_name(n.sounding).c_str(), music::pitch_name(n.written).c_str(),
+                    brass::fingering_name(instrument, f).c_str(), f.partial,
+                    brass::embouchure_tension(instrument, n.written, motion),
+                    n.alternate ? "  (alternate)" : "");
+    }
+    out << line;
+  }
+  for (const brass::BrassDiagnostic& d : r.summary.diagnostics)
+    out << "  note: " << d.message << "\n";
+}
+
+}  // namespace
+
+int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err) {
+  auto fail = [&](const std::string& message) {
+    err << "error: " << message << "\n";
+    return kExitBadInput;
+  };
+  auto score = music::load_score(options.file);
+  if (!score) return fail(score.error().message);
+  auto known = brass::load_all_instruments();
+  if (!known) return fail(known.error().message);
+  auto weights = brass::load_planner_weights();
+  if (!weights) return fail(weights.error().message);
+  auto motion = brass::load_brass_motion_params();
+  if (!motion) return fail(motion.error().message);
+  auto breath_params = brass::load_breath_params();
+  if (!breath_params) return fail(breath_params.error().message);
+
+  const brass::Instrument* forced = nullptr;
+  if (!options.instrument.empty()) {
+    for (const brass::Instrument& i : *known) forced = i.id == options.instrument ? &i : forced;
+    if (forced == nullptr) {
+      return fail("no instrument \"" + options.instrument +
+                  "\" (known: " + instrument_list(*known) + ")");
+    }
+  }
+  std::vector<brass::BrassPart> parts;
+  if (!options.part.empty()) {
+    const int part = find_part(*score, options.part);
+    if (part < 0) {
+      return fail(options.file.string() + ": no part \"" + options.part +
+                  "\" (parts: " + part_list(*score) + ")");
+    }
+    const brass::Instrument* instrument =
+        forced != nullptr
+            ? forced
+            : brass::detect_instrument(score->parts[static_cast<std::size_t>(part)], *known);
+    if (instrument == nullptr) {
+      return fail(options.file.string() + ": part " + std::to_string(part + 1) + " \"" +
+                  score->parts[static_cast<std::size_t>(part)].name +
+                  "\" is not a brass instrument tutti knows; name one with --instrument (" +
+                  instrument_list(*known) + ")");
+    }
+    parts.push_back({part, instrument, brass::voices_in_part(*score, part)});
+  } else {
+    parts = brass::find_brass_parts(*score, *known);
+    if (forced != nullptr) {
+      for (brass::BrassPart& p : parts) p.instrument = forced;
+    }
+    if (parts.empty()) {
+      return fail(options.file.string() + ": no brass parts found (parts: " + part_list(*score) +
+                  "); choose one with --part and --instrument");
+    }
+  }
+
+  std::vector<PlayerReport> players;
+  for (const brass::BrassPart& part : parts) {
+    if (options.voice > part.voices) {
+      return fail(options.file.string() + ": part " + std::to_string(part.part + 1) + " has " +
+                  std::to_string(part.voices) + " voice(s), not " + std::to_string(options.voice));
+    }
+    for (int voice = 0; voice < part.voices; ++voice) {
+      if (options.voice > 0 && voice != options.voice - 1) continue;
+      auto line = brass::extract_line(*score, part.part, voice, *part.instrument);
+      if (!line) return fail(line.error().message);
+      PlayerReport report;
+      report.line = std::move(*line);
+      report.summary = brass::plan_line(report.line, *weights, &*score);
+      report.breaths = brass::plan_breaths(report.line, *score, *breath_params);
+      players.push_back(std::move(report));
+    }
+  }
+  if (options.json) {
+    nlohmann::json players_json = nlohmann::json::array();
+    for (const PlayerReport& r : players) players_json.push_back(player_json(r, *motion));
+    out << nlohmann::json{{"file", options.file.string()}, {"players", std::move(players_json)}}
+               .dump(2)
+        << "\n";
+  } else {
+    for (const PlayerReport& r : players) player_text(r, *motion, out);
+  }
+  return kExitOk;
+}
+
+}  // namespace tutti::app

@@ -1,0 +1,114 @@
+#include <tutti/cli/sync_report_command.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+#include <tutti/cli/exit_codes.hpp>
+#include <tutti/cli/frame_range.hpp>
+#include <tutti/cli/scene_audio.hpp>
+#include <tutti/cli/sync_report.hpp>
+#include <tutti/audio/wav_file.hpp>
+#include <tutti/scene/load_scene.hpp>
+
+namespace tutti::app {
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+std::string kinds_of(const SyncMatch& match) {
+  std::string text;
+  for (const Contact* c : match.contacts) {
+    if (!text.empty()) text += ", ";
+    text += c->performer + " " + contact_kind_name(c->kind);
+    if (c->detail >= 0) text += " " + std::to_string(c->detail);
+  }
+  return text;
+}
+
+}  // namespace
+
+int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream& err) {
+  auto fail = [&](const std::string& message) {
+    err << "error: " << message << "\n";
+    return kExitBadInput;
+  };
+  if (!(o.tempo >= 0.1 && o.tempo <= 4.0)) return fail("--tempo: must be in [0.1, 4]");
+  if (!(o.step_ms >= 0.05 && o.step_ms <= 10.0)) return fail("--step-ms: must be in [0.05, 10]");
+  if (!(o.tolerance_ms >= 1.0 && o.tolerance_ms <= 500.0)) {
+    return fail("--tolerance-ms: must be in [1, 500]");
+  }
+  auto scene = scene::load_scene(o.scene);
+  if (!scene) return fail(scene.error().message);
+  stage::StageOptions stage_options;
+  stage_options.asset_dir = o.assets;
+  auto built = stage::build_stage(*scene, stage_options);
+  if (!built) return fail(scene->source + ": " + built.error().message);
+  stage::Stage& stage = **built;
+
+  const int fps = scene->output.fps;
+  const std::int64_t frames = frame_count(0.0, (stage.end_s - stage.start_s) / o.tempo, fps);
+  SceneAudioOptions audio_options;
+  audio_options.sound_font = o.soundfont;
+  audio_options.tempo_factor = o.tempo;
+  audio_options.compensate_attacks = o.compensate_attacks;
+  auto audio = render_scene_audio(stage, fps, 0, frames, audio_options);
+  if (!audio) return fail(audio.error().message);
+  if (!o.wav.empty()) {
+    if (Status s = audio::write_wav(o.wav, *audio); !s) return fail(s.error().message);
+  }
+
+  SyncOptions sync;
+  sync.step_s = o.step_ms / 1000.0;
+  sync.tolerance_s = o.tolerance_ms / 1000.0;
+  sync.tempo_factor = o.tempo;
+  const std::vector<Contact> contacts =
+      sample_contacts(stage, stage.start_s, stage.end_s, sync.step_s);
+  const SyncFigures f = measure_sync(contacts, *audio, stage.start_s, sync);
+
+  out << "sync report: " << scene->source << "\n";
+  out << "  contacts (animation): " << f.contacts << " events, " << f.expected
+      << " expected onsets (merged within " << sync.merge_s * 1000.0 << " ms)\n";
+  out << "  onsets (audio):       " << f.detected << " detected\n";
+  out << "  matched:              " << f.matches.size() << " (within ±" << o.tolerance_ms
+      << " ms); " << f.unmatched_expected_s.size() << " contacts without a sound, "
+      << f.unmatched_detected_s.size() << " sounds without a contact\n";
+  out << "  offset (sound − contact): mean |" << format("%.2f", f.mean_abs_ms) << "| ms, max |"
+      << format("%.2f", f.max_abs_ms) << "| ms, mean " << format("%+.2f", f.mean_signed_ms)
+      << " ms\n";
+  std::vector<const SyncMatch*> worst;
+  for (const SyncMatch& m : f.matches) worst.push_back(&m);
+  std::stable_sort(worst.begin(), worst.end(), [](const SyncMatch* a, const SyncMatch* b) {
+    return std::abs(a->offset_ms()) > std::abs(b->offset_ms());
+  });
+  worst.resize(std::min<std::size_t>(worst.size(), static_cast<std::size_t>(std::max(o.worst, 0))));
+  for (const SyncMatch* m : worst) {
+    out << "    " << format("%8.3f", m->contact_s) << " s  " << format("%+6.2f", m->offset_ms())
+        << " ms  " << kinds_of(*m) << "\n";
+  }
+  if (!f.unmatched_expected_s.empty()) {
+    out << "  contacts without a sound at:";
+    for (std::size_t i = 0; i < f.unmatched_expected_s.size() && i < 12; ++i) {
+      out << " " << format("%.3f", f.unmatched_expected_s[i]);
+    }
+    out << (f.unmatched_expected_s.size() > 12 ? " ..." : "") << " s\n";
+  }
+  const double heard =
+      f.expected == 0 ? 0.0
+                      : static_cast<double>(f.matches.size()) / static_cast<double>(f.expected);
+  const bool met = !f.matches.empty() && f.mean_abs_ms <= kSyncGoalMeanMs &&
+                   f.max_abs_ms <= kSyncGoalMaxMs && heard >= kSyncGoalHeard;
+  out << "  goal (mean ≤ " << kSyncGoalMeanMs << " ms, max ≤ " << format("%.2f", kSyncGoalMaxMs)
+      << " ms, ≥ " << format("%.0f", kSyncGoalHeard * 100.0)
+      << " % of contacts heard): " << (met ? "met" : "missed") << " ("
+      << format("%.0f", heard * 100.0) << " % heard)\n";
+  return o.check && !met ? kExitSyncGoalMissed : kExitOk;
+}
+
+}  // namespace tutti::app

@@ -1,0 +1,237 @@
+#include <tutti/scene/asset_mapping.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+
+#include <tutti/scene/json_fields.hpp>
+#include <tutti/scene/load_scene.hpp>
+
+namespace tutti::scene {
+namespace {
+
+constexpr std::array<AssetKind, 4> kKinds{AssetKind::character, AssetKind::hand, AssetKind::trumpet,
+                                          AssetKind::trombone};
+
+std::vector<std::string> finger_roles() {
+  std::vector<std::string> roles;
+  for (const char* side : {"l", "r"}) {
+    for (const char* finger : {"thumb", "index", "middle", "ring", "little"}) {
+      for (int joint = 1; joint <= 3; ++joint) {
+        roles.push_back(std::string(finger) + "_" + std::to_string(joint) + "_" + side);
+      }
+    }
+  }
+  return roles;
+}
+
+struct RoleTable {
+  std::vector<std::string> storage;
+  std::vector<std::string_view> roles;
+  std::vector<std::string_view> required;
+};
+
+RoleTable make_table(std::vector<std::string> names, std::vector<std::string> required) {
+  RoleTable table;
+  table.storage = std::move(names);
+  for (const std::string& name : table.storage) table.roles.push_back(name);
+  for (const std::string& name : required) {
+    for (std::string_view role : table.roles) {
+      if (role == name) table.required.push_back(role);
+    }
+  }
+  return table;
+}
+
+const RoleTable& table(AssetKind kind) {
+  static const RoleTable character = [] {
+    std::vector<std::string> names{"hips",        "spine",      "chest",      "neck",
+                                   "head",        "shoulder_l", "shoulder_r", "upper_arm_l",
+                                   "upper_arm_r", "forearm_l",  "forearm_r",  "hand_l",
+                                   "hand_r",      "thigh_l",    "thigh_r",    "shin_l",
+                                   "shin_r",      "foot_l",     "foot_r"};
+    for (std::string& finger : finger_roles()) names.push_back(std::move(finger));
+    for (const char* attach : {"mouth", "grip_l", "grip_r"}) names.emplace_back(attach);
+    return make_table(std::move(names), {"hips", "spine", "head", "upper_arm_l", "upper_arm_r",
+                                         "forearm_l", "forearm_r", "hand_l", "hand_r"});
+  }();
+  static const RoleTable hand = [] {
+    std::vector<std::string> names{"forearm_l", "forearm_r", "hand_l", "hand_r"};
+    std::vector<std::string> required{"hand_l", "hand_r"};
+    for (std::string& finger : finger_roles()) {
+      required.push_back(finger);
+      names.push_back(std::move(finger));
+    }
+    return make_table(std::move(names), std::move(required));
+  }();
+  static const RoleTable trumpet =
+      make_table({"valve_1", "valve_2", "valve_3", "mouthpiece", "grip_left", "grip_right"},
+                 {"valve_1", "valve_2", "valve_3", "mouthpiece"});
+  static const RoleTable trombone = make_table(
+      {"slide", "bell_section", "mouthpiece", "grip_left", "grip_right"}, {"slide", "mouthpiece"});
+  switch (kind) {
+    case AssetKind::character:
+      return character;
+    case AssetKind::hand:
+      return hand;
+    case AssetKind::trumpet:
+      return trumpet;
+    case AssetKind::trombone:
+      return trombone;
+  }
+  return character;
+}
+
+constexpr std::array<std::string_view, 2> kCharacterMorphs{"tension", "open"};
+
+std::string join(std::span<const std::string_view> items) {
+  std::string text;
+  for (std::string_view item : items) {
+    if (!text.empty()) text += ", ";
+    text += item;
+  }
+  return text;
+}
+
+std::string article(AssetKind kind) { return "a " + std::string(asset_kind_name(kind)); }
+
+// An object of role -> name strings; every role one of `known`, every name non-empty.
+Result<std::vector<std::pair<std::string, std::string>>> read_roles(
+    const FieldReader& reader, const nlohmann::json& object, const std::string& path,
+    std::span<const std::string_view> known, AssetKind kind) {
+  if (!object.is_object()) return reader.error(path, "expected an object");
+  std::vector<std::pair<std::string, std::string>> roles;
+  for (const auto& item : object.items()) {
+    const std::string where = join_path(path, item.key());
+    const bool is_known = std::find(known.begin(), known.end(), item.key()) != known.end();
+    if (!is_known) {
+      if (known.empty())
+        return reader.error(where, "unknown role (" + article(kind) + " has none)");
+      return reader.error(where,
+                          "unknown role (known for " + article(kind) + ": " + join(known) + ")");
+    }
+    if (!item.value().is_string()) return reader.error(where, "expected a string");
+    std::string name = item.value().get<std::string>();
+    if (name.empty()) return reader.error(where, "must not be empty");
+    roles.emplace_back(item.key(), std::move(name));
+  }
+  std::sort(roles.begin(), roles.end());
+  return roles;
+}
+
+std::string_view lookup(const std::vector<std::pair<std::string, std::string>>& roles,
+                        std::string_view role) {
+  for (const auto& [name, value] : roles) {
+    if (name == role) return value;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string_view asset_kind_name(AssetKind kind) {
+  switch (kind) {
+    case AssetKind::character:
+      return "character";
+    case AssetKind::hand:
+      return "hand";
+    case AssetKind::trumpet:
+      return "trumpet";
+    case AssetKind::trombone:
+      return "trombone";
+  }
+  return "character";
+}
+
+std::span<const std::string_view> node_roles(AssetKind kind) { return table(kind).roles; }
+
+std::span<const std::string_view> required_node_roles(AssetKind kind) {
+  return table(kind).required;
+}
+
+std::span<const std::string_view> morph_roles(AssetKind kind) {
+  if (kind == AssetKind::character) return kCharacterMorphs;
+  return {};
+}
+
+std::string_view AssetMapping::node(std::string_view role) const { return lookup(nodes, role); }
+std::string_view AssetMapping::morph(std::string_view role) const { return lookup(morphs, role); }
+
+Result<AssetMapping> load_asset_mapping(const std::filesystem::path& path) {
+  auto document = read_scene_json(path);
+  if (!document) return document.error();
+  return parse_asset_mapping(*document, path.filename().string(), path.parent_path());
+}
+
+Result<AssetMapping> parse_asset_mapping(const nlohmann::json& document,
+                                         const std::string& file_name,
+                                         const std::filesystem::path& base_dir) {
+  const FieldReader reader(file_name);
+  if (auto ok = reader.json().check_keys(document, "",
+                                         {"description", "model", "kind", "scale", "rotation_deg",
+                                          "translation_m", "nodes", "morphs"});
+      !ok) {
+    return ok.error();
+  }
+  AssetMapping mapping;
+  mapping.source = file_name;
+  if (document.contains("description") && !document.at("description").is_string()) {
+    return reader.error("/description", "expected a string");
+  }
+
+  auto model = reader.string(document, "", "model");
+  if (!model) return model.error();
+  std::string extension = std::filesystem::path(*model).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".glb" && extension != ".gltf") {
+    return reader.error("/model", "expected a .glb or .gltf file");
+  }
+  mapping.model = (base_dir / *model).lexically_normal();
+
+  auto kind = reader.string(document, "", "kind");
+  if (!kind) return kind.error();
+  bool kind_known = false;
+  std::string kinds;
+  for (AssetKind k : kKinds) {
+    kinds += (kinds.empty() ? "" : ", ") + std::string(asset_kind_name(k));
+    if (asset_kind_name(k) == *kind) {
+      mapping.kind = k;
+      kind_known = true;
+    }
+  }
+  if (!kind_known) return reader.error("/kind", "must be one of " + kinds);
+
+  auto scale = reader.number_or(document, "", "scale", 0.0, 1000.0, 1.0);
+  if (!scale) return scale.error();
+  if (*scale <= 0.0) return reader.error("/scale", "must be positive");
+  mapping.scale = *scale;
+  auto rotation = reader.vec3_or(document, "", "rotation_deg", 360.0, {});
+  if (!rotation) return rotation.error();
+  mapping.rotation_deg = *rotation;
+  auto translation = reader.vec3_or(document, "", "translation_m", 100.0, {});
+  if (!translation) return translation.error();
+  mapping.translation_m = *translation;
+
+  if (!document.contains("nodes")) return reader.error("/nodes", "missing");
+  auto nodes =
+      read_roles(reader, document.at("nodes"), "/nodes", node_roles(mapping.kind), mapping.kind);
+  if (!nodes) return nodes.error();
+  mapping.nodes = std::move(*nodes);
+  for (std::string_view role : required_node_roles(mapping.kind)) {
+    if (mapping.node(role).empty()) {
+      return reader.error("/nodes", "missing role \"" + std::string(role) + "\" (required for " +
+                                        article(mapping.kind) + ": " +
+                                        join(required_node_roles(mapping.kind)) + ")");
+    }
+  }
+  if (document.contains("morphs")) {
+    auto morphs = read_roles(reader, document.at("morphs"), "/morphs", morph_roles(mapping.kind),
+                             mapping.kind);
+    if (!morphs) return morphs.error();
+    mapping.morphs = std::move(*morphs);
+  }
+  return mapping;
+}
+
+}  // namespace tutti::scene

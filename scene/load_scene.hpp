@@ -1,0 +1,48 @@
+#pragma once
+// Reading a scene file (format: scene/README.md) into a Scene, strictly: every object is
+// checked for unknown keys, every value for its type and range, every referenced file for
+// existence (music, asset mappings; mappings are parsed and their kind checked), every
+// instrument id against content/instruments/, the hand size against content/piano/hands.json,
+// every shot's camera by name, the shot order. Errors are one line, "FILE: /json/path: reason",
+// e.g. "quartet.json: /performers/2/variation/sway_amount: must be in [0, 1]".
+//
+// Score parts are not looked up here (the music is not parsed); load_scene_music does that.
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
+#include <tutti/scene/scene.hpp>
+
+namespace tutti::scene {
+
+// Messages use the file's name (not its folder). Missing file: "<path>: no such file"; bad JSON:
+// "<name>: not valid JSON (... at byte N)"; empty file: "<name>: empty file".
+Result<Scene> load_scene(const std::filesystem::path& path);
+
+// `file_name` is used in messages; relative paths in the scene resolve against `base_dir`.
+// Content (instruments, hands) comes from content::default_content_dir().
+Result<Scene> parse_scene(const nlohmann::json& document, const std::string& file_name,
+                          const std::filesystem::path& base_dir);
+
+// Reads a JSON document with one-line errors naming `path.filename()` (shared with the mapping
+// loader): missing file, empty file, not valid JSON (with the byte offset).
+Result<nlohmann::json> read_scene_json(const std::filesystem::path& path);
+
+// The index of the part named `wanted` (case-insensitive, whole name) or with that id; -1 if none.
+int find_part(const music::Score& score, std::string_view wanted);
+
+// Loads every music file of the scene (tutti::music::load_score) and checks that every
+// performer's part and the pianist's parts exist in their music file, e.g.
+// "quartet.json: /performers/1/part: no part "Trumpet 3" in quartet.musicxml (parts: Trumpet in
+// B♭ 1, ...)". Returns the scores in Scene::music order.
+Result<std::vector<music::Score>> load_scene_music(const Scene& scene);
+// The same check on scores already loaded (one per Scene::music entry).
+Status check_scene_parts(const Scene& scene, std::span<const music::Score> scores);
+
+}  // namespace tutti::scene

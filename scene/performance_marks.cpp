@@ -1,0 +1,146 @@
+#include <tutti/scene/performance_marks.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tutti::scene {
+namespace {
+
+// The range every scene time is in (as output.start_s).
+constexpr double kEarliest_s = -60.0;
+constexpr double kLatest_s = 86400.0;
+
+Result<double> time_at(const FieldReader& reader, const nlohmann::json& value,
+                       const std::string& where) {
+  if (!value.is_number()) return reader.error(where, "expected a time in seconds");
+  const double t = value.get<double>();
+  if (!std::isfinite(t) || t < kEarliest_s || t > kLatest_s) {
+    return reader.error(where, "must be in [" + format_number(kEarliest_s) + ", " +
+                                   format_number(kLatest_s) + "] s");
+  }
+  return t;
+}
+
+// An array of times, sorted on reading (the order in the file does not matter).
+Status time_list(const FieldReader& reader, const nlohmann::json& object, const std::string& path,
+                 const char* key, std::vector<double>& out) {
+  if (!object.contains(key)) return Status::success();
+  const std::string where = join_path(path, key);
+  const nlohmann::json& list = object.at(key);
+  if (!list.is_array()) return reader.error(where, "expected an array of times in seconds");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    auto t = time_at(reader, list[i], where + "/" + std::to_string(i));
+    if (!t) return t.error();
+    out.push_back(*t);
+  }
+  std::sort(out.begin(), out.end());
+  return Status::success();
+}
+
+Status parse_expression(const FieldReader& reader, const nlohmann::json& object,
+                        const std::string& path, Expression& out) {
+  if (auto ok = reader.json().check_keys(object, path, {"kind", "start_s", "end_s", "amount"});
+      !ok) {
+    return ok;
+  }
+  auto kind = reader.string(object, path, "kind");
+  if (!kind) return kind.error();
+  if (*kind == "strain") {
+    out.kind = ExpressionKind::strain;
+  } else if (*kind == "relaxed") {
+    out.kind = ExpressionKind::relaxed;
+  } else {
+    return reader.error(join_path(path, "kind"), "must be \"strain\" or \"relaxed\"");
+  }
+  auto start = reader.number(object, path, "start_s", kEarliest_s, kLatest_s);
+  if (!start) return start.error();
+  auto end = reader.number(object, path, "end_s", kEarliest_s, kLatest_s);
+  if (!end) return end.error();
+  if (*end <= *start) {
+    return reader.error(join_path(path, "end_s"),
+                        "must be later than start_s (" + format_number(*start) + " s)");
+  }
+  auto amount = reader.number_or(object, path, "amount", 0.0, 1.0, 1.0);
+  if (!amount) return amount.error();
+  out.start_s = *start;
+  out.end_s = *end;
+  out.amount = *amount;
+  return Status::success();
+}
+
+}  // namespace
+
+Status parse_performer_marks(const FieldReader& reader, const nlohmann::json& performer,
+                             const std::string& path, Performer& out) {
+  if (performer.contains("breaths")) {
+    const std::string where = path + "/breaths";
+    const nlohmann::json& breaths = performer.at("breaths");
+    if (auto ok = reader.json().check_keys(breaths, where, {"add", "remove"}); !ok) return ok;
+    if (auto ok = time_list(reader, breaths, where, "add", out.breaths.add_s); !ok) return ok;
+    if (auto ok = time_list(reader, breaths, where, "remove", out.breaths.remove_s); !ok) {
+      return ok;
+    }
+  }
+  if (performer.contains("expressions")) {
+    const std::string where = path + "/expressions";
+    const nlohmann::json& list = performer.at("expressions");
+    if (!list.is_array()) return reader.error(where, "expected an array");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      Expression expression;
+      if (auto ok = parse_expression(reader, list[i], where + "/" + std::to_string(i), expression);
+          !ok) {
+        return ok;
+      }
+      out.expressions.push_back(expression);
+    }
+    std::stable_sort(
+        out.expressions.begin(), out.expressions.end(),
+        [](const Expression& a, const Expression& b) { return a.start_s < b.start_s; });
+  }
+  return Status::success();
+}
+
+Status parse_finger_pins(const FieldReader& reader, const nlohmann::json& pianist,
+                         const std::string& path, std::vector<FingerPin>& out) {
+  if (!pianist.contains("pins")) return Status::success();
+  const std::string where = path + "/pins";
+  const nlohmann::json& list = pianist.at("pins");
+  if (!list.is_array()) return reader.error(where, "expected an array");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string item = where + "/" + std::to_string(i);
+    if (auto ok = reader.json().check_keys(list[i], item, {"time_s", "key", "finger"}); !ok) {
+      return ok;
+    }
+    auto time = reader.number(list[i], item, "time_s", kEarliest_s, kLatest_s);
+    if (!time) return time.error();
+    if (!list[i].contains("key")) return reader.error(join_path(item, "key"), "missing");
+    auto key = reader.integer_or(list[i], item, "key", 0, 127, 0);
+    if (!key) return key.error();
+    if (!list[i].contains("finger")) return reader.error(join_path(item, "finger"), "missing");
+    auto finger = reader.integer_or(list[i], item, "finger", 1, 5, 1);
+    if (!finger) return finger.error();
+    FingerPin pin;
+    pin.time_s = *time;
+    pin.key = static_cast<int>(*key);
+    pin.finger = static_cast<int>(*finger);
+    for (std::size_t j = 0; j < out.size(); ++j) {
+      if (out[j].key == pin.key && std::abs(out[j].time_s - pin.time_s) < 1e-6) {
+        return reader.error(
+            item, "a second pin on the same note (also " + where + "/" + std::to_string(j) + ")");
+      }
+    }
+    out.push_back(pin);
+  }
+  return Status::success();
+}
+
+Status parse_cues(const FieldReader& reader, const nlohmann::json& document,
+                  std::optional<std::vector<double>>& out) {
+  if (!document.contains("cues")) return Status::success();
+  std::vector<double> cues;
+  if (auto ok = time_list(reader, document, "", "cues", cues); !ok) return ok;
+  out = std::move(cues);
+  return Status::success();
+}
+
+}  // namespace tutti::scene

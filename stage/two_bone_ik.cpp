@@ -1,0 +1,94 @@
+#include <tutti/stage/two_bone_ik.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+
+namespace tutti::stage {
+namespace {
+
+glm::vec3 origin(const glm::mat4& m) { return glm::vec3(m[3]); }
+
+glm::quat world_rotation(const glm::mat4& m) {
+  // Uniform scale only (tutti's rigs): normalise the columns before reading the rotation.
+  glm::mat3 r(m);
+  r[0] = glm::normalize(r[0]);
+  r[1] = glm::normalize(r[1]);
+  r[2] = glm::normalize(r[2]);
+  return glm::normalize(glm::quat_cast(r));
+}
+
+// Sets node's local rotation so that its world rotation becomes `wanted`.
+void set_world_rotation(const model::ModelAsset& asset, int node, const glm::quat& wanted,
+                        std::span<const glm::mat4> world, const glm::mat4& root,
+                        model::ModelPose& pose) {
+  const int parent = asset.nodes[static_cast<std::size_t>(node)].parent;
+  const glm::quat parent_rotation =
+      parent >= 0 ? world_rotation(world[static_cast<std::size_t>(parent)]) : world_rotation(root);
+  pose.local[static_cast<std::size_t>(node)].rotation =
+      glm::normalize(glm::inverse(parent_rotation) * wanted);
+}
+
+}  // namespace
+
+glm::quat rotation_between(const glm::vec3& from, const glm::vec3& to) {
+  const float cosine = std::clamp(glm::dot(from, to), -1.0f, 1.0f);
+  if (cosine > 0.999999f) return glm::quat(1, 0, 0, 0);
+  if (cosine < -0.999999f) {
+    glm::vec3 axis = glm::cross(glm::vec3(1, 0, 0), from);
+    if (glm::dot(axis, axis) < 1e-8f) axis = glm::cross(glm::vec3(0, 1, 0), from);
+    return glm::angleAxis(3.14159265f, glm::normalize(axis));
+  }
+  const glm::vec3 axis = glm::normalize(glm::cross(from, to));
+  return glm::angleAxis(std::acos(cosine), axis);
+}
+
+void solve_two_bone_ik(const model::ModelAsset& asset, const TwoBoneChain& chain,
+                       const glm::vec3& target, const glm::vec3& pole, const glm::mat4& root,
+                       model::ModelPose& pose, std::span<glm::mat4> world) {
+  if (chain.upper < 0 || chain.lower < 0 || chain.end < 0) return;
+  const auto u = static_cast<std::size_t>(chain.upper);
+  const auto l = static_cast<std::size_t>(chain.lower);
+  const auto e = static_cast<std::size_t>(chain.end);
+  const glm::vec3 a = origin(world[u]);
+  const glm::vec3 b = origin(world[l]);
+  const glm::vec3 c = origin(world[e]);
+  const float upper_length = glm::length(b - a);
+  const float lower_length = glm::length(c - b);
+  const glm::vec3 to_target = target - a;
+  const float reach = glm::length(to_target);
+  if (upper_length < 1e-5f || lower_length < 1e-5f || reach < 1e-5f) return;
+
+  const float d = std::clamp(reach, std::abs(upper_length - lower_length) + 1e-4f,
+                             upper_length + lower_length - 1e-4f);
+  const glm::vec3 axis = to_target / reach;
+  glm::vec3 bend = pole - glm::dot(pole, axis) * axis;
+  if (glm::dot(bend, bend) < 1e-10f) {
+    bend = (b - a) - glm::dot(b - a, axis) * axis;
+    if (glm::dot(bend, bend) < 1e-10f) return;
+  }
+  bend = glm::normalize(bend);
+  const float cos_shoulder =
+      std::clamp((upper_length * upper_length + d * d - lower_length * lower_length) /
+                     (2.0f * upper_length * d),
+                 -1.0f, 1.0f);
+  const float shoulder_angle = std::acos(cos_shoulder);
+  const glm::vec3 elbow =
+      a + upper_length * (std::cos(shoulder_angle) * axis + std::sin(shoulder_angle) * bend);
+
+  const glm::quat turn_upper = rotation_between(glm::normalize(b - a), glm::normalize(elbow - a));
+  const glm::quat upper_world = turn_upper * world_rotation(world[u]);
+  set_world_rotation(asset, chain.upper, upper_world, world, root, pose);
+  model::compute_world_matrices(asset, pose, root, world);
+
+  const glm::vec3 new_elbow = origin(world[l]);
+  const glm::vec3 new_end = origin(world[e]);
+  const glm::vec3 wanted_end = a + axis * d;
+  const glm::quat turn_lower =
+      rotation_between(glm::normalize(new_end - new_elbow), glm::normalize(wanted_end - new_elbow));
+  const glm::quat lower_world = turn_lower * world_rotation(world[l]);
+  set_world_rotation(asset, chain.lower, lower_world, world, root, pose);
+  model::compute_world_matrices(asset, pose, root, world);
+}
+
+}  // namespace tutti::stage
