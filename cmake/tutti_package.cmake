@@ -13,7 +13,7 @@ include(CMakePackageConfigHelpers)
 set(TUTTI_EXPORTED_TARGETS
   tutti_core tutti_ecs tutti_components tutti_music tutti_audio tutti_content tutti_image
   tutti_model tutti_render tutti_render_window tutti_shader_compiler tutti_scene tutti_stage
-  tutti_export
+  tutti_piano_plugin tutti_brass_plugin tutti_performance tutti_export
   tutti_runtime tutti_runtime_imgui tutti_live
   tutti_piano_model tutti_fingering_planner tutti_brass_planner tutti_spline_motion
   tutti_piano_performance tutti_finger_motion tutti_key_action tutti_note_sounding

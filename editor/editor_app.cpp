@@ -222,7 +222,7 @@ int Editor::run() {
   if (const char* pause = std::getenv("TUTTI_EDITOR_TEST_SAVE_PAUSE_MS")) {
     session_->document().set_save_pause_ms(std::atoi(pause));
   }
-  for (const std::string& note : session_->stage().notes) err_ << "note: " << note << "\n";
+  for (const std::string& note : session_->stage().notes()) err_ << "note: " << note << "\n";
 
   render::WindowOptions window_options;
   window_options.width = width;

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <tutti/performance/families.hpp>
+
 namespace tutti::editor {
 
 Result<std::unique_ptr<Session>> Session::open(const std::filesystem::path& scene,
@@ -19,7 +21,7 @@ Status Session::replan(const scene::Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   stage::StageOptions options = options_;
   options.reuse_models = stage_.get();
-  auto stage = stage::build_stage(scene, options);
+  auto stage = performance::build_stage(scene, options);
   if (!stage) return stage.error();
   next_ = std::move(*stage);
   last_replan_ms_ =
@@ -28,7 +30,7 @@ Status Session::replan(const scene::Scene& scene) {
 }
 
 void Session::adopt() {
-  models_changed_ = !stage_ || stage_->models != next_->models;
+  models_changed_ = !stage_ || stage_->models() != next_->models();
   stage_ = std::move(next_);
   timeline_ = build_timeline(*stage_);
   ++stage_revision_;
@@ -59,9 +61,14 @@ Status Session::redo() {
 }
 
 double Session::breath_boundary(std::size_t performer, double t) const {
-  if (performer >= stage_->brass.size()) return t;
-  for (const stage::LineNoteTime& note : stage_->brass[performer].line) {
-    if (note.playable && note.onset_s >= t - 1e-9) return note.onset_s;
+  // The first playable note of theirs starting at or after t (the notes are in time order).
+  const ecs::Entity player = stage_->find_performer("brass", performer);
+  if (player.is_null()) return t;
+  for (const TimelineLane& lane : timeline_.lanes) {
+    if (lane.pianist || lane.performer != performer) continue;
+    for (const TimelineNote& note : lane.notes) {
+      if (note.playable && note.start_s >= t - 1e-9) return note.start_s;
+    }
   }
   return t;
 }

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tutti/brass_motion/plan_brass_player.hpp>
-#include <tutti/ensemble_variation/ensemble_plan.hpp>
+#include <tutti/components/breath_schedule.hpp>
+#include <tutti/components/note.hpp>
+#include <tutti/components/performer.hpp>
+#include <tutti/ensemble_variation/ensemble_variation_system.hpp>
 #include <tutti/finger_motion/finger_pose_system.hpp>
 #include <tutti/music/meter.hpp>
+#include <tutti/piano/piano_components.hpp>
 
 namespace tutti::editor {
 namespace {
@@ -26,62 +29,52 @@ void add_grid(const music::Score& score, double end_s, Timeline& out) {
   }
 }
 
-TimelineLane brass_lane(const stage::Stage& stage, std::size_t i) {
-  const stage::BrassSeat& seat = stage.brass[i];
+// A performer's lane: their notes (as written; the pianist's with the planned or pinned finger
+// and hand), their planned breaths, their expressions.
+TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
+  const ecs::World& world = stage.world();
+  const auto& seat = world.get<stage::Seat>(performer);
   TimelineLane lane;
-  lane.name = seat.name;
-  lane.performer = i;
-  for (const stage::LineNoteTime& note : seat.line) {
-    TimelineNote n;
-    n.start_s = note.onset_s;
-    n.end_s = note.offset_s;
-    n.key = note.pitch;
-    n.playable = note.playable;
-    lane.notes.push_back(n);
-    lane.lowest_key = std::min(lane.lowest_key, note.pitch);
-    lane.highest_key = std::max(lane.highest_key, note.pitch);
+  lane.pianist = seat.family == "piano";
+  lane.performer = seat.index;
+  const auto* about = world.try_get<components::Performer>(performer);
+  lane.name = lane.pianist ? "Pianist" : about != nullptr ? about->name : std::string();
+  for (std::size_t s = 0; s < stage.scores().size(); ++s) {
+    for (std::size_t i = 0; i < stage.scores()[s].notes.size(); ++i) {
+      const auto* note = world.try_get<components::Note>(stage.note_entity(s, i));
+      if (note == nullptr || note->performer != performer) continue;
+      TimelineNote n;
+      n.start_s = note->written_onset_s;
+      n.end_s = note->written_offset_s;
+      n.key = note->pitch;
+      n.playable = note->playable;
+      if (lane.pianist) {
+        n.finger = note->finger;
+        n.right_hand = note->hand != components::HandSide::left;
+      }
+      lane.notes.push_back(n);
+      lane.lowest_key = std::min(lane.lowest_key, note->pitch);
+      lane.highest_key = std::max(lane.highest_key, note->pitch);
+    }
   }
-  if (i < stage.ensemble_players.size() && stage.ensemble_players[i]) {
-    for (const brass::BreathEvent& event : stage.ensemble_players[i]->breaths.events) {
+  if (const auto* schedule = world.try_get<components::BreathSchedule>(performer)) {
+    for (const components::BreathSpan& span : schedule->breaths) {
       TimelineBreath b;
-      b.prepare_s = event.prepare_start_s;
-      b.start_s = event.start_s;
-      b.end_s = event.end_s;
-      b.catch_breath = event.kind == brass::BreathKind::catch_breath;
-      b.marked = event.marked;
-      b.boundary_s =
-          event.before_note >= 0 && static_cast<std::size_t>(event.before_note) < seat.line.size()
-              ? seat.line[static_cast<std::size_t>(event.before_note)].onset_s
-              : event.end_s;
+      b.prepare_s = span.prepare_s;
+      b.start_s = span.start_s;
+      b.end_s = span.end_s;
+      b.catch_breath = span.catch_breath;
+      b.marked = span.marked;
+      b.boundary_s = span.boundary_s;
       lane.breaths.push_back(b);
     }
   }
-  if (i < stage.scene.performers.size()) {
-    const scene::Performer& performer = stage.scene.performers[i];
-    lane.expressions = performer.expressions;
+  const scene::Scene& scene = stage.scene();
+  if (!lane.pianist && lane.performer < scene.performers.size()) {
+    lane.expressions = scene.performers[lane.performer].expressions;
   }
-  return lane;
-}
-
-TimelineLane pianist_lane(const stage::Stage& stage) {
-  const stage::PianistSeat& seat = *stage.pianist;
-  TimelineLane lane;
-  lane.name = "Pianist";
-  lane.pianist = true;
-  for (std::size_t i = 0; i < seat.score.notes.size(); ++i) {
-    const music::Note& note = seat.score.notes[i];
-    TimelineNote n;
-    n.start_s = note.onset_s;
-    n.end_s = note.offset_s;
-    n.key = note.pitch;
-    n.finger = i < seat.fingering.fingers.size() ? seat.fingering.fingers[i] : 0;
-    n.right_hand = i >= seat.fingering.hands.size() || seat.fingering.hands[i] != music::Hand::left;
-    lane.notes.push_back(n);
-    lane.lowest_key = std::min(lane.lowest_key, note.pitch);
-    lane.highest_key = std::max(lane.highest_key, note.pitch);
-  }
-  if (stage.scene.pianist) {
-    for (const scene::FingerPin& pin : stage.scene.pianist->pins) {
+  if (lane.pianist && scene.pianist) {
+    for (const scene::FingerPin& pin : scene.pianist->pins) {
       for (TimelineNote& n : lane.notes) {
         if (n.key == pin.key && std::abs(n.start_s - pin.time_s) < 1e-3) n.pinned = true;
       }
@@ -90,38 +83,49 @@ TimelineLane pianist_lane(const stage::Stage& stage) {
   return lane;
 }
 
-}  // namespace
-
-Timeline build_timeline(const stage::Stage& stage) {
-  Timeline out;
-  out.start_s = stage.start_s;
-  out.end_s = stage.end_s;
-  if (!stage.scores.empty()) add_grid(stage.scores.front(), out.end_s, out);
-  for (std::size_t i = 0; i < stage.brass.size(); ++i) out.lanes.push_back(brass_lane(stage, i));
-  if (stage.pianist) {
-    out.lanes.push_back(pianist_lane(stage));
-    const piano::HandPlan* hands[2] = {&stage.pianist->fingering.right,
-                                       &stage.pianist->fingering.left};
+// The pianist's allowed hand areas and the hand paths planned through them.
+void add_hand_paths(const stage::Stage& stage, ecs::Entity pianist, Timeline& out) {
+  const ecs::World& world = stage.world();
+  if (const auto* plan = world.try_get<piano_family::PianistPlan>(pianist)) {
+    const piano::HandPlan* hands[2] = {&plan->fingering.right, &plan->fingering.left};
     for (std::size_t side = 0; side < 2; ++side) {
       for (const piano::HandCorridor& c : hands[side]->corridors) {
         out.corridors[side].push_back({c.start_s, c.end_s, c.lo_mm, c.hi_mm});
       }
     }
-    if (const auto& motion = stage.pianist->motion) {
-      const motion::HandPath* paths[2] = {&motion->right_path, &motion->left_path};
-      for (std::size_t side = 0; side < 2; ++side) {
-        if (paths[side]->empty()) continue;
-        for (double t = paths[side]->start_s(); t <= paths[side]->end_s() + 1e-9;
-             t += kHandPathStep_s) {
-          out.hand_path[side].push_back({t, motion::evaluate(*paths[side], t).x_mm});
-        }
-      }
+  }
+  const auto* handle = world.try_get<finger_motion::PianistMotionHandle>(pianist);
+  if (handle == nullptr || !handle->motion) return;
+  const motion::HandPath* paths[2] = {&handle->motion->right_path, &handle->motion->left_path};
+  for (std::size_t side = 0; side < 2; ++side) {
+    if (paths[side]->empty()) continue;
+    for (double t = paths[side]->start_s(); t <= paths[side]->end_s() + 1e-9;
+         t += kHandPathStep_s) {
+      out.hand_path[side].push_back({t, motion::evaluate(*paths[side], t).x_mm});
     }
   }
-  out.cues_automatic = !stage.scene.cues_s.has_value();
-  if (stage.ensemble) out.cues_s = stage.ensemble->cue_entrances_s;
-  for (const scene::Shot& shot : stage.scene.shots) {
-    out.shots.push_back({shot.start_s, stage.scene.cameras[shot.camera].name});
+}
+
+}  // namespace
+
+Timeline build_timeline(const stage::Stage& stage) {
+  Timeline out;
+  out.start_s = stage.start_s();
+  out.end_s = stage.end_s();
+  if (!stage.scores().empty()) add_grid(stage.scores().front(), out.end_s, out);
+  const ecs::World& world = stage.world();
+  for (ecs::Entity performer : stage.performers()) {
+    out.lanes.push_back(performer_lane(stage, performer));
+    if (out.lanes.back().pianist) add_hand_paths(stage, performer, out);
+    if (const auto* ensemble = world.try_get<ensemble::EnsembleMotionHandle>(performer);
+        ensemble != nullptr && ensemble->plan && out.cues_s.empty()) {
+      out.cues_s = ensemble->plan->cue_entrances_s;
+    }
+  }
+  const scene::Scene& scene = stage.scene();
+  out.cues_automatic = !scene.cues_s.has_value();
+  for (const scene::Shot& shot : scene.shots) {
+    out.shots.push_back({shot.start_s, scene.cameras[shot.camera].name});
   }
   return out;
 }

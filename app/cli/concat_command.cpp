@@ -13,6 +13,7 @@
 #include <tutti/cli/slice_tag.hpp>
 #include <tutti/audio/wav_file.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::app {
@@ -126,7 +127,7 @@ int run_concat(const ConcatOptions& o, std::ostream& out, std::ostream& err) {
     if (!scene) return fail(scene.error().message);
     stage::StageOptions stage_options;
     stage_options.asset_dir = o.assets;
-    auto stage = stage::build_stage(*scene, stage_options);
+    auto stage = performance::build_stage(*scene, stage_options);
     if (!stage) return fail(scene->source + ": " + stage.error().message);
     SceneAudioOptions audio_options;
     audio_options.sound_font = o.soundfont;

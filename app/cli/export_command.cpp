@@ -10,6 +10,7 @@
 #include <tutti/core/file_io.hpp>
 #include <tutti/export/scene_export.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::app {
@@ -29,19 +30,19 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   if (!scene) return fail(scene.error().message);
   stage::StageOptions stage_options;
   stage_options.asset_dir = o.assets;
-  auto staged = stage::build_stage(*scene, stage_options);
+  auto staged = performance::build_stage(*scene, stage_options);
   if (!staged) return fail(scene->source + ": " + staged.error().message);
   stage::Stage& stage = **staged;
 
   const int fps = o.fps != 0 ? o.fps : scene->output.fps;
-  const std::int64_t total = frame_count(stage.start_s, stage.end_s, fps);
+  const std::int64_t total = frame_count(stage.start_s(), stage.end_s(), fps);
   FrameRange range{0, total};
   if (!o.frames.empty()) {
     auto parsed = parse_frame_range(o.frames, total);
     if (!parsed) return fail(parsed.error().message);
     range = *parsed;
   } else if (!o.seconds.empty()) {
-    auto parsed = parse_seconds_range(o.seconds, stage.start_s, fps, total);
+    auto parsed = parse_seconds_range(o.seconds, stage.start_s(), fps, total);
     if (!parsed) return fail(parsed.error().message);
     range = *parsed;
   }

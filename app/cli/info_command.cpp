@@ -1,15 +1,64 @@
 #include <tutti/cli/info_command.hpp>
 
 #include <ostream>
+#include <string>
+#include <utility>
 
 #include <tutti/cli/exit_codes.hpp>
 #include <tutti/cli/score_summary.hpp>
 #include <tutti/core/file_io.hpp>
+#include <tutti/components/breath.hpp>
+#include <tutti/components/finger.hpp>
+#include <tutti/components/hand.hpp>
+#include <tutti/components/instrument.hpp>
+#include <tutti/components/mouth.hpp>
+#include <tutti/components/note.hpp>
+#include <tutti/components/performer.hpp>
+#include <tutti/components/slide.hpp>
+#include <tutti/components/valve.hpp>
 #include <tutti/music/load_score.hpp>
+#include <tutti/performance/families.hpp>
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::app {
 
+namespace {
+
+int run_schedule_info(const InfoOptions& options, std::ostream& out, std::ostream& err) {
+  auto scene = scene::load_scene(options.file);
+  if (!scene) {
+    err << "error: " << scene.error().message << "\n";
+    return kExitBadInput;
+  }
+  auto stage = performance::build_stage(*scene);
+  if (!stage) {
+    err << "error: " << scene->source << ": " << stage.error().message << "\n";
+    return kExitBadInput;
+  }
+  const ecs::World& world = (*stage)->world();
+  out << "schedule of " << scene->source << " (phases in run order, systems in order):\n"
+      << (*stage)->schedule().describe_access();
+  const std::pair<const char*, std::size_t> counts[] = {
+      {"Performer", world.size<components::Performer>()},
+      {"Note", world.size<components::Note>()},
+      {"Hand", world.size<components::Hand>()},
+      {"Finger", world.size<components::Finger>()},
+      {"Instrument", world.size<components::Instrument>()},
+      {"Valve", world.size<components::Valve>()},
+      {"Slide", world.size<components::Slide>()},
+      {"Mouth", world.size<components::Mouth>()},
+      {"Breath", world.size<components::Breath>()},
+      {"PlacedModel", (*stage)->instances().size()}};
+  out << "entities:";
+  for (const auto& [name, count] : counts) out << " " << count << " " << name << ",";
+  out << " " << world.alive() << " in all\n";
+  return kExitOk;
+}
+
+}  // namespace
+
 int run_info(const InfoOptions& options, std::ostream& out, std::ostream& err) {
+  if (options.schedule) return run_schedule_info(options, out, err);
   auto score = music::load_score(options.file);
   if (!score) {
     err << "error: " << score.error().message << "\n";

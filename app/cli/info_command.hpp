@@ -1,5 +1,7 @@
 #pragma once
 // `tutti info FILE [--json]`: what is in a score file.
+// `tutti info --schedule SCENE`: the frame of a staged scene — each phase of the schedule with its
+// systems in run order and what each reads and writes, then the entities by component.
 
 #include <filesystem>
 #include <iosfwd>
@@ -9,6 +11,7 @@ namespace tutti::app {
 struct InfoOptions {
   std::filesystem::path file;
   bool json = false;
+  bool schedule = false;  // FILE is a scene: print its stage's schedule
 };
 
 // Prints the report to `out`, or one "error: ..." line to `err`. Returns the exit code.

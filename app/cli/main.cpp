@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
                                           "MIDI, MusicXML (.xml/.musicxml/.mxl) or PIG file");
   info_cmd->add_option("FILE", info.file, "score file")->required();
   info_cmd->add_flag("--json", info.json, "print JSON instead of text");
+  info_cmd->add_flag("--schedule", info.schedule,
+                     "FILE is a scene: print the frame (phases, systems, components)");
 
   tutti::app::ConcatOptions concat;
   bool concat_no_audio = false;

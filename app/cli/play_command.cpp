@@ -181,7 +181,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   if (!created) return fail(created.error().message);
   runtime::ScenePlayer& player = **created;
   runtime::Transport& transport = player.transport();
-  for (const std::string& note : player.stage().notes) err << "note: " << note << "\n";
+  for (const std::string& note : player.stage().notes()) err << "note: " << note << "\n";
   if (live.enabled()) {
     std::string notice;
     if (Status s = live.attach(player.stage(), *scene, notice); !s) return fail(s.error().message);

@@ -32,7 +32,9 @@ Result<std::unique_ptr<LivePlay>> LivePlay::open(const LivePlayOptions& options,
 
 Status LivePlay::attach(stage::Stage& stage, const scene::Scene& scene, std::string& notice) {
   if (!enabled()) return {};
-  if (!stage.pianist) return Error{scene.source + ": the stage has no pianist"};
+  if (stage.find_performer("piano", 0).is_null()) {
+    return Error{scene.source + ": the stage has no pianist"};
+  }
   auto model = piano::load_fingering_model("default", scene.pianist->hand_size);
   if (!model) return model.error();
   auto params = finger_motion::load_finger_motion_params(
@@ -65,9 +67,9 @@ void LivePlay::frame(stage::Stage& stage, double host_s) {
 }
 
 void LivePlay::hand_to(stage::Stage& stage) const {
-  if (!stage.pianist) return;
-  stage.pianist->motion = pianist_->motion();
-  auto* handle = stage.world.try_get<finger_motion::PianistMotionHandle>(stage.pianist->pianist);
+  // The live motion drives the pianist's hands from now on (the finger-motion system reads it).
+  auto* handle = stage.world().try_get<finger_motion::PianistMotionHandle>(
+      stage.find_performer("piano", 0));
   if (handle != nullptr) handle->motion = pianist_->motion();
 }
 

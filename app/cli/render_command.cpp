@@ -16,10 +16,14 @@
 #include <tutti/audio/wav_file.hpp>
 #include <tutti/image/png.hpp>
 #include <tutti/render/frame_target.hpp>
+#include <tutti/audio_sync/audio_sync_system.hpp>
 #include <tutti/render/model_renderer.hpp>
 #include <tutti/render/offscreen_target.hpp>
 #include <tutti/render/vulkan_context.hpp>
+#include <tutti/runtime/stage_renderer.hpp>
+#include <tutti/runtime/stage_view.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::app {
@@ -134,11 +138,11 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
 
   stage::StageOptions stage_options;
   stage_options.asset_dir = o.assets;
-  auto stage = stage::build_stage(*scene, stage_options);
+  auto stage = performance::build_stage(*scene, stage_options);
   if (!stage) return fail((*scene).source + ": " + stage.error().message);
   stage::Stage& st = **stage;
 
-  const std::int64_t total = frame_count(0.0, (st.end_s - st.start_s) / o.tempo, fps);
+  const std::int64_t total = frame_count(0.0, (st.end_s() - st.start_s()) / o.tempo, fps);
   FrameRange range{0, total};
   if (!o.still.empty()) {
     char* end = nullptr;
@@ -154,7 +158,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     if (!parsed) return fail(parsed.error().message);
     range = *parsed;
   } else if (!o.seconds.empty()) {
-    auto parsed = parse_seconds_range(o.seconds, st.start_s, fps, total, o.tempo);
+    auto parsed = parse_seconds_range(o.seconds, st.start_s(), fps, total, o.tempo);
     if (!parsed) return fail(parsed.error().message);
     range = *parsed;
   }
@@ -169,10 +173,9 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
                                                 static_cast<std::uint32_t>(height), 2,
                                                 render::sample_count_flag(msaa));
   if (!target) return fail(target.error().message);
-  const std::vector<const model::ModelAsset*> models = st.model_list();
   render::ModelRendererOptions renderer_options;
   renderer_options.shadow_taps = soft_shadows ? 4 : 1;
-  auto renderer = render::ModelRenderer::create(**context, **target, models, renderer_options);
+  auto renderer = runtime::StageRenderer::create(**context, **target, st, renderer_options);
   if (!renderer) return fail(renderer.error().message);
 
   // Sound first: ffmpeg reads the WAV while the frames arrive. Without --wav the track goes
@@ -218,12 +221,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     if (ec) return fail(o.output.string() + ": cannot create the folder (" + ec.message() + ")");
   }
 
-  const scene::Color& bg = scene->output.background;
-  const render::ClearColor clear{static_cast<float>(bg.r), static_cast<float>(bg.g),
-                                 static_cast<float>(bg.b), 1.0f};
-  const render::Lighting lighting = stage::lighting_of(st);
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  std::vector<render::ModelInstance> instances;
   std::vector<std::uint8_t> rgba;
   Progress progress(err, range.end - range.first, o.progress && o.still.empty());
 
@@ -254,19 +252,26 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     pending_frame = -1;
     return Status::success();
   };
+  // Frame k's time comes from the offline frame clock (the sync phase); a still shows its time.
+  audio_sync::FrameClock clock;
+  if (o.still.empty()) {
+    clock.source = audio_sync::FrameClock::Source::offline;
+    clock.start_s = st.start_s();
+    clock.fps = fps;
+    clock.tempo_factor = o.tempo;
+  }
   for (std::int64_t k = range.first; k < range.end; ++k) {
-    const double t = o.still.empty() ? frame_time(st.start_s, fps, k, o.tempo)
-                                     : std::strtod(o.still.c_str(), nullptr);
-    stage::evaluate_stage(st, t);
-    stage::collect_instances(st, instances);
+    clock.frame = k;
+    st.world().set_resource(clock);
+    st.run({o.still.empty() ? 0.0 : std::strtod(o.still.c_str(), nullptr), 0.0});
+    const double t = st.world().resource<ecs::FrameTime>()->t_s;
     auto frame = (*target)->begin_frame();
     if (!frame) return fail(frame.error().message);
     if (Status s = (*renderer)->record(
-            *frame, **target, instances,
+            *frame, **target, st,
             fixed_camera >= 0
-                ? stage::scene_camera(st, static_cast<std::size_t>(fixed_camera), aspect)
-                : stage::camera_at(st, t, aspect),
-            lighting, clear);
+                ? runtime::scene_camera(st, static_cast<std::size_t>(fixed_camera), aspect)
+                : runtime::camera_at(st, t, aspect));
         !s) {
       return fail(s.error().message);
     }
@@ -280,7 +285,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (video) {
     if (Status s = video->finish(); !s) return fail(s.error().message);
   }
-  for (const std::string& note : st.notes) err << "note: " << note << "\n";
+  for (const std::string& note : st.notes()) err << "note: " << note << "\n";
   out << "render: wrote " << o.output.string() << " (" << (range.end - range.first) << " frame"
       << (range.end - range.first == 1 ? "" : "s") << ", " << width << "x" << height << ", " << fps
       << " fps" << (*kind == OutputKind::video && with_audio && o.audio ? ", AAC audio" : "")

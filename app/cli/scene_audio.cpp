@@ -22,14 +22,13 @@ Result<audio::AudioBuffer> render_scene_audio(const stage::Stage& stage, int fps
                                               const SceneAudioOptions& options) {
   auto font = audio::find_sound_font(options.sound_font);
   if (!font) return font.error();
+  // The notes as played (catch breaths leave gaps, the keys' own timing), from the Note entities.
+  const std::vector<music::Score> heard = stage.heard_scores();
   std::vector<const music::Score*> scores;
-  // The notes as played (catch breaths leave gaps), not as written.
-  for (const music::Score& score : stage.sounding.empty() ? stage.scores : stage.sounding) {
-    scores.push_back(&score);
-  }
+  for (const music::Score& score : heard) scores.push_back(&score);
   audio::TimelineOptions timeline_options;
   timeline_options.sample_rate = options.sample_rate;
-  timeline_options.start_s = stage.start_s;
+  timeline_options.start_s = stage.start_s();
   timeline_options.tempo_factor = options.tempo_factor;
   auto timeline = audio::build_synth_timeline(scores, timeline_options);
   if (!timeline) return timeline.error();

@@ -5,6 +5,8 @@
 #include <limits>
 
 #include <tutti/components/finger.hpp>
+#include <tutti/components/hand.hpp>
+#include <tutti/components/instrument.hpp>
 #include <tutti/components/mouth.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/components/slide.hpp>
@@ -22,14 +24,16 @@ double crossing(double t0, double v0, double t1, double v1, double level) {
   return t0 + (t1 - t0) * std::clamp((level - v0) / (v1 - v0), 0.0, 1.0);
 }
 
-std::string performer_name(stage::Stage& stage, ecs::Entity entity, const char* fallback) {
-  const auto* performer = stage.world.try_get<components::Performer>(entity);
+std::string performer_name(const ecs::World& world, ecs::Entity entity, const char* fallback) {
+  const auto* performer = world.try_get<components::Performer>(entity);
   return performer != nullptr && !performer->name.empty() ? performer->name : fallback;
 }
 
 struct FingerTrack {
   ecs::Entity entity = ecs::Entity::null;
+  std::string name;  // the pianist's
   double depth = 0.0;
+  std::uint32_t entity_index() const { return entity.index; }
 };
 
 struct BrassTrack {
@@ -41,6 +45,7 @@ struct BrassTrack {
   bool buzzing = false;
   // Valve releases and slide arrivals wait one sample to see whether the player sounds.
   std::vector<Contact> pending;
+  std::uint32_t entity_index() const { return instrument.index; }
 };
 
 }  // namespace
@@ -65,42 +70,49 @@ std::vector<Contact> sample_contacts(stage::Stage& stage, double from_s, double 
                                      double step_s) {
   std::vector<Contact> contacts;
   if (!(step_s > 0.0) || !(to_s > from_s)) return contacts;
+  // Every finger and every instrument on stage, in the order they were spawned.
+  ecs::World& world = stage.world();
   std::vector<FingerTrack> fingers;
-  std::string pianist;
-  if (stage.pianist) {
-    pianist = performer_name(stage, stage.pianist->pianist, "pianist");
-    for (const auto& hand : stage.pianist->fingers) {
-      for (ecs::Entity finger : hand) fingers.push_back({finger, 0.0});
-    }
-  }
+  world.view<const components::Finger>().each([&](ecs::Entity e, const components::Finger& f) {
+    const auto* hand = world.try_get<components::Hand>(f.hand);
+    fingers.push_back(
+        {e, performer_name(world, hand != nullptr ? hand->performer : ecs::Entity::null, "pianist"),
+         0.0});
+  });
   std::vector<BrassTrack> brass;
-  for (const stage::BrassSeat& seat : stage.brass) {
-    BrassTrack track;
-    track.performer = seat.performer;
-    track.instrument = seat.instrument;
-    track.name = seat.name;
-    brass.push_back(std::move(track));
-  }
+  world.view<const components::Instrument>().each(
+      [&](ecs::Entity e, const components::Instrument& instrument) {
+        BrassTrack track;
+        track.performer = instrument.performer;
+        track.instrument = e;
+        track.name = performer_name(world, instrument.performer, "");
+        brass.push_back(std::move(track));
+      });
+  const auto by_spawn = [](const auto& a, const auto& b) {
+    return a.entity_index() < b.entity_index();
+  };
+  std::sort(fingers.begin(), fingers.end(), by_spawn);
+  std::sort(brass.begin(), brass.end(), by_spawn);
 
   const auto steps = static_cast<std::int64_t>(std::ceil((to_s - from_s) / step_s));
   double previous_t = from_s;
   for (std::int64_t i = 0; i < steps; ++i) {
     const double t = from_s + static_cast<double>(i) * step_s;
-    stage.schedule.run(stage.world, {t, step_s});
+    stage.run({t, step_s}, ecs::Phase::evaluate);
     const bool first = i == 0;
     for (FingerTrack& track : fingers) {
-      const auto* finger = stage.world.try_get<components::Finger>(track.entity);
+      const auto* finger = world.try_get<components::Finger>(track.entity);
       if (finger == nullptr) continue;
       if (!first && track.depth < kFullyDown && finger->press_depth >= kFullyDown) {
         contacts.push_back({crossing(previous_t, track.depth, t, finger->press_depth, kFullyDown),
-                            ContactKind::key_bottom, pianist, finger->key});
+                            ContactKind::key_bottom, track.name, finger->key});
       }
       track.depth = finger->press_depth;
     }
     for (BrassTrack& track : brass) {
-      const auto* mouth = stage.world.try_get<components::Mouth>(track.performer);
-      const auto* valve = stage.world.try_get<components::Valve>(track.instrument);
-      const auto* slide = stage.world.try_get<components::Slide>(track.instrument);
+      const auto* mouth = world.try_get<components::Mouth>(track.performer);
+      const auto* valve = world.try_get<components::Valve>(track.instrument);
+      const auto* slide = world.try_get<components::Slide>(track.instrument);
       const bool buzzing = mouth != nullptr && mouth->buzzing;
       // Last sample's releases and arrivals happened while the player sounds (or did not).
       if (buzzing && track.buzzing) {

@@ -11,6 +11,7 @@
 #include <tutti/cli/scene_audio.hpp>
 #include <tutti/cli/sync_report.hpp>
 #include <tutti/audio/wav_file.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
 
 namespace tutti::app {
@@ -48,12 +49,12 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
   if (!scene) return fail(scene.error().message);
   stage::StageOptions stage_options;
   stage_options.asset_dir = o.assets;
-  auto built = stage::build_stage(*scene, stage_options);
+  auto built = performance::build_stage(*scene, stage_options);
   if (!built) return fail(scene->source + ": " + built.error().message);
   stage::Stage& stage = **built;
 
   const int fps = scene->output.fps;
-  const std::int64_t frames = frame_count(0.0, (stage.end_s - stage.start_s) / o.tempo, fps);
+  const std::int64_t frames = frame_count(0.0, (stage.end_s() - stage.start_s()) / o.tempo, fps);
   SceneAudioOptions audio_options;
   audio_options.sound_font = o.soundfont;
   audio_options.tempo_factor = o.tempo;
@@ -69,8 +70,8 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
   sync.tolerance_s = o.tolerance_ms / 1000.0;
   sync.tempo_factor = o.tempo;
   const std::vector<Contact> contacts =
-      sample_contacts(stage, stage.start_s, stage.end_s, sync.step_s);
-  const SyncFigures f = measure_sync(contacts, *audio, stage.start_s, sync);
+      sample_contacts(stage, stage.start_s(), stage.end_s(), sync.step_s);
+  const SyncFigures f = measure_sync(contacts, *audio, stage.start_s(), sync);
 
   out << "sync report: " << scene->source << "\n";
   out << "  contacts (animation): " << f.contacts << " events, " << f.expected

@@ -7,6 +7,8 @@
 #include <set>
 
 #include <tutti/audio_sync/audio_clock.hpp>
+#include <tutti/audio_sync/audio_sync_system.hpp>
+#include <tutti/components/performer.hpp>
 #include <tutti/export/glb_builder.hpp>
 
 namespace tutti::gltf_export {
@@ -52,20 +54,26 @@ struct InstanceSamples {
 };
 
 std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& range) {
-  std::vector<InstanceSamples> samples(stage.placed.size());
+  const std::size_t instances = stage.instances().size();
+  std::vector<InstanceSamples> samples(instances);
   const auto frames = static_cast<std::size_t>(range.frame_count);
-  for (std::size_t i = 0; i < stage.placed.size(); ++i) {
-    const stage::PlacedModel& placed = stage.placed[i];
+  for (std::size_t i = 0; i < instances; ++i) {
+    const stage::PlacedModel& placed = stage.placed(i);
     samples[i].roots.reserve(frames);
     samples[i].locals.reserve(frames * placed.pose.local.size());
     samples[i].weights.reserve(frames * placed.pose.morph_weights.size());
   }
+  // Frame k's time comes from the offline frame clock (the sync phase).
+  audio_sync::FrameClock clock;
+  clock.source = audio_sync::FrameClock::Source::offline;
+  clock.start_s = stage.start_s();
+  clock.fps = range.fps;
   for (std::int64_t k = 0; k < range.frame_count; ++k) {
-    const double t =
-        audio_sync::offline_frame_time(stage.start_s, range.fps, range.first_frame + k);
-    stage::evaluate_stage(stage, t);
-    for (std::size_t i = 0; i < stage.placed.size(); ++i) {
-      const stage::PlacedModel& placed = stage.placed[i];
+    clock.frame = range.first_frame + k;
+    stage.world().set_resource(clock);
+    stage.run({});
+    for (std::size_t i = 0; i < instances; ++i) {
+      const stage::PlacedModel& placed = stage.placed(i);
       InstanceSamples& s = samples[i];
       s.roots.push_back(decompose(placed.root));
       for (NodeTransform local : placed.pose.local) {
@@ -76,6 +84,7 @@ std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& rang
                        placed.pose.morph_weights.end());
     }
   }
+  stage.world().set_resource(audio_sync::FrameClock{});
   return samples;
 }
 
@@ -99,11 +108,11 @@ class Writer {
     json& asset = builder_.document()["asset"];
     asset = {{"version", "2.0"}, {"generator", "tutti export"}};
     asset["extras"] = {{"tutti",
-                        {{"scene", stage_.scene.source},
+                        {{"scene", stage_.scene().source},
                          {"fps", range_.fps},
                          {"first_frame", range_.first_frame},
                          {"frames", range_.frame_count},
-                         {"start_s", audio_sync::offline_frame_time(stage_.start_s, range_.fps,
+                         {"start_s", audio_sync::offline_frame_time(stage_.start_s(), range_.fps,
                                                                     range_.first_frame)},
                          {"tolerances",
                           {{"translation_m", tolerances_.translation_m},
@@ -111,17 +120,16 @@ class Writer {
                            {"scale", tolerances_.scale},
                            {"weight", tolerances_.weight}}}}}};
 
-    written_.resize(stage_.models.size());
+    written_.resize(stage_.models().size());
     std::vector<int> scene_roots;
     std::vector<std::string> clip_order;
-    for (const stage::BrassSeat& seat : stage_.brass) clip_order.push_back(seat.name);
-    if (stage_.pianist) clip_order.push_back(pianist_clip_name(stage_));
+    for (const std::string& clip : clip_names(stage_)) clip_order.push_back(clip);
 
-    for (std::size_t i = 0; i < stage_.placed.size(); ++i) {
+    for (std::size_t i = 0; i < stage_.instances().size(); ++i) {
       write_instance(i, labels[i], samples[i], scene_roots);
     }
     builder_.document()["scenes"] =
-        json::array({{{"name", stem_of(stage_.scene.source)}, {"nodes", scene_roots}}});
+        json::array({{{"name", stem_of(stage_.scene().source)}, {"nodes", scene_roots}}});
     builder_.document()["scene"] = 0;
 
     // Per-performer clips (scene order), then the whole scene with every channel.
@@ -161,7 +169,7 @@ class Writer {
     WrittenModel& w = written_[m];
     if (w.written) return w;
     w.written = true;
-    const ModelAsset& asset = *stage_.models[m];
+    const ModelAsset& asset = *stage_.models()[m];
     std::vector<bool> skinned(asset.meshes.size(), false);
     for (const model::Node& node : asset.nodes) {
       if (node.mesh >= 0 && node.skin >= 0) skinned[static_cast<std::size_t>(node.mesh)] = true;
@@ -282,8 +290,8 @@ class Writer {
 
   void write_instance(std::size_t i, const InstanceLabel& label, const InstanceSamples& s,
                       std::vector<int>& scene_roots) {
-    const stage::PlacedModel& placed = stage_.placed[i];
-    const ModelAsset& asset = *stage_.models[placed.model];
+    const stage::PlacedModel& placed = stage_.placed(i);
+    const ModelAsset& asset = *stage_.models()[placed.model];
     const WrittenModel& data = model_data(placed.model);
     json& nodes = builder_.document()["nodes"];
     if (!nodes.is_array()) nodes = json::array();
@@ -507,26 +515,41 @@ class Writer {
 
 }  // namespace
 
-std::vector<InstanceLabel> label_instances(const stage::Stage& stage) {
-  std::vector<InstanceLabel> labels(stage.placed.size());
-  std::vector<bool> named(stage.placed.size(), false);
-  const auto set = [&](std::size_t placed, std::string name, std::string performer) {
-    if (placed >= labels.size()) return;
-    labels[placed] = {std::move(name), std::move(performer)};
-    named[placed] = true;
-  };
-  for (const stage::BrassSeat& seat : stage.brass) {
-    if (seat.body) set(*seat.body, seat.name, seat.name);
-    set(seat.horn, seat.name + " " + stem_of(stage.model_files[stage.placed[seat.horn].model]),
-        seat.name);
+std::vector<std::string> clip_names(const stage::Stage& stage) {
+  std::vector<std::string> names;
+  const ecs::World& world = stage.world();
+  for (ecs::Entity performer : stage.performers()) {
+    const auto* about = world.try_get<components::Performer>(performer);
+    const auto* seat = world.try_get<stage::Seat>(performer);
+    std::string name = about != nullptr ? about->name : std::string();
+    if (std::find(names.begin(), names.end(), name) != names.end() && seat != nullptr) {
+      name += " (" + seat->family + ")";
+    }
+    names.push_back(std::move(name));
   }
-  if (stage.pianist) {
-    const stage::PianistSeat& p = *stage.pianist;
-    const std::string pianist = pianist_clip_name(stage);
-    set(p.piano, "piano", pianist);
-    set(p.hand_models[0], pianist + " hand_r", pianist);
-    set(p.hand_models[1], pianist + " hand_l", pianist);
-    if (p.body) set(*p.body, pianist, pianist);
+  return names;
+}
+
+std::string clip_name(const stage::Stage& stage, ecs::Entity performer) {
+  const std::vector<std::string> names = clip_names(stage);
+  for (std::size_t i = 0; i < stage.performers().size(); ++i) {
+    if (stage.performers()[i] == performer) return names[i];
+  }
+  return {};
+}
+
+std::vector<InstanceLabel> label_instances(const stage::Stage& stage) {
+  const std::size_t count = stage.instances().size();
+  std::vector<InstanceLabel> labels(count);
+  std::vector<bool> named(count, false);
+  for (std::size_t i = 0; i < count; ++i) {
+    const stage::PlacedModel& placed = stage.placed(i);
+    if (placed.performer.is_null()) continue;
+    const std::string clip = clip_name(stage, placed.performer);
+    std::string name = placed.label;
+    if (placed.after_performer) name = placed.label.empty() ? clip : clip + " " + placed.label;
+    labels[i] = {std::move(name), clip};
+    named[i] = true;
   }
   std::set<std::string> taken;
   for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -535,7 +558,7 @@ std::vector<InstanceLabel> label_instances(const stage::Stage& stage) {
   std::map<std::string, int> counts;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (named[i]) continue;
-    const std::string stem = stem_of(stage.model_files[stage.placed[i].model]);
+    const std::string stem = stem_of(stage.model_files()[stage.placed(i).model]);
     std::string name;
     do {
       name = stem + " " + std::to_string(++counts[stem]);
@@ -546,22 +569,16 @@ std::vector<InstanceLabel> label_instances(const stage::Stage& stage) {
   return labels;
 }
 
-std::string pianist_clip_name(const stage::Stage& stage) {
-  const bool taken = std::any_of(stage.brass.begin(), stage.brass.end(),
-                                 [](const stage::BrassSeat& s) { return s.name == "pianist"; });
-  return taken ? "pianist (piano)" : "pianist";
-}
-
 std::string whole_scene_clip_name(const stage::Stage& stage) {
-  const bool taken = std::any_of(stage.brass.begin(), stage.brass.end(),
-                                 [](const stage::BrassSeat& s) { return s.name == "scene"; });
+  const std::vector<std::string> clips = clip_names(stage);
+  const bool taken = std::find(clips.begin(), clips.end(), "scene") != clips.end();
   return taken ? "scene (all)" : "scene";
 }
 
 Result<ExportSummary> export_performance(stage::Stage& stage, const ExportRange& range,
                                          const KeyTolerances& tolerances) {
-  if (range.frame_count <= 0) return Error{stage.scene.source + ": nothing to export"};
-  if (range.fps <= 0) return Error{stage.scene.source + ": fps must be positive"};
+  if (range.frame_count <= 0) return Error{stage.scene().source + ": nothing to export"};
+  if (range.fps <= 0) return Error{stage.scene().source + ": fps must be positive"};
   return Writer(stage, range, tolerances).run();
 }
 

@@ -27,7 +27,7 @@ namespace tutti::gltf_export {
 
 struct ExportRange {
   int fps = 30;
-  std::int64_t first_frame = 0;  // frame k shows offline_frame_time(stage.start_s, fps, k)
+  std::int64_t first_frame = 0;  // frame k shows offline_frame_time(stage.start_s(), fps, k)
   std::int64_t frame_count = 0;
 };
 
@@ -37,7 +37,7 @@ struct InstanceLabel {
   std::string name;  // unique in the file: "Anna", "Anna trumpet", "piano", "chair 2", ...
   std::string performer;
 };
-// In Stage::placed order.
+// In Stage::instances() order.
 std::vector<InstanceLabel> label_instances(const stage::Stage& stage);
 
 struct ClipSummary {
@@ -60,9 +60,10 @@ struct ExportSummary {
 Result<ExportSummary> export_performance(stage::Stage& stage, const ExportRange& range,
                                          const KeyTolerances& tolerances = {});
 
-// The pianist's clip (and their instances' name): "pianist", or "pianist (piano)" when a brass
-// performer is called "pianist".
-std::string pianist_clip_name(const stage::Stage& stage);
+// Each performer's clip name, in Stage::performers() order: the performer's name, followed by
+// " (<family>)" when an earlier performer has the same name ("pianist (piano)" after a brass
+// player called "pianist").
+std::vector<std::string> clip_names(const stage::Stage& stage);
 // The name of the whole-scene clip: "scene", or "scene (all)" when a performer is called "scene".
 std::string whole_scene_clip_name(const stage::Stage& stage);
 

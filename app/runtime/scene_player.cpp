@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <tutti/audio_sync/audio_sync_system.hpp>
+#include <tutti/performance/families.hpp>
+#include <tutti/runtime/stage_view.hpp>
+
 namespace tutti::runtime {
 
 Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& context,
@@ -10,7 +14,7 @@ Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& 
                                                          const scene::Scene& scene,
                                                          const ScenePlayerOptions& options) {
   std::unique_ptr<ScenePlayer> player(new ScenePlayer());
-  auto stage = stage::build_stage(scene, options.stage);
+  auto stage = performance::build_stage(scene, options.stage);
   if (!stage) return Error{scene.source + ": " + stage.error().message};
   player->owned_stage_ = std::move(*stage);
   player->stage_ = player->owned_stage_.get();
@@ -29,30 +33,21 @@ Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& 
   return player;
 }
 
-Status ScenePlayer::make_renderer(render::VulkanContext& context,
-                                  const render::FrameTarget& target) {
-  const std::vector<const model::ModelAsset*> models = stage_->model_list();
-  if (renderer_) vkDeviceWaitIdle(context.device());  // frames in flight still read its buffers
-  renderer_.reset();
-  auto renderer = render::ModelRenderer::create(context, target, models, renderer_options_);
-  if (!renderer) return renderer.error();
-  renderer_ = std::move(*renderer);
-  return Status::success();
-}
-
 Status ScenePlayer::init(render::VulkanContext& context, const render::FrameTarget& target,
                          const ScenePlayerOptions& options) {
   stage::Stage& st = *stage_;
-  const scene::Scene& scene = st.scene;
-  renderer_options_ = options.renderer;
-  if (renderer_options_.shadow_taps == 0) {
-    renderer_options_.shadow_taps = scene.output.soft_shadows ? 4 : 1;
+  const scene::Scene& scene = st.scene();
+  render::ModelRendererOptions renderer_options = options.renderer;
+  if (renderer_options.shadow_taps == 0) {
+    renderer_options.shadow_taps = scene.output.soft_shadows ? 4 : 1;
   }
-  if (Status s = make_renderer(context, target); !s) return s;
+  auto stage_renderer = StageRenderer::create(context, target, st, renderer_options);
+  if (!stage_renderer) return stage_renderer.error();
+  stage_renderer_ = std::move(*stage_renderer);
 
   TransportOptions transport_options;
-  transport_options.start_s = st.start_s;
-  transport_options.end_s = st.end_s;
+  transport_options.start_s = st.start_s();
+  transport_options.end_s = st.end_s();
   transport_options.tempo = options.tempo;
   transport_options.sample_rate = options.sound_options.sample_rate;
   OpenAudio open_audio;
@@ -67,11 +62,8 @@ Status ScenePlayer::init(render::VulkanContext& context, const render::FrameTarg
   if (!transport) return transport.error();
   transport_ = std::move(*transport);
 
-  lighting_ = stage::lighting_of(st);
-  const scene::Color& bg = scene.output.background;
-  clear_ = {static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f};
-  orbit_ = OrbitCamera::from(scene.camera_at(st.start_s));
-  show(st.start_s);
+  orbit_ = OrbitCamera::from(scene.camera_at(st.start_s()));
+  show(st.start_s());
   return Status::success();
 }
 
@@ -79,10 +71,12 @@ namespace {
 
 // The notes heard, as (onset, offset, key) of every score: what the sound is made from.
 bool same_sound(const stage::Stage& a, const stage::Stage& b) {
-  if (a.sounding.size() != b.sounding.size()) return false;
-  for (std::size_t s = 0; s < a.sounding.size(); ++s) {
-    const auto& x = a.sounding[s].notes;
-    const auto& y = b.sounding[s].notes;
+  const std::vector<music::Score> heard_a = a.heard_scores();
+  const std::vector<music::Score> heard_b = b.heard_scores();
+  if (heard_a.size() != heard_b.size()) return false;
+  for (std::size_t s = 0; s < heard_a.size(); ++s) {
+    const auto& x = heard_a[s].notes;
+    const auto& y = heard_b[s].notes;
     if (x.size() != y.size()) return false;
     for (std::size_t i = 0; i < x.size(); ++i) {
       if (x[i].onset_s != y[i].onset_s || x[i].offset_s != y[i].offset_s ||
@@ -103,13 +97,8 @@ Status ScenePlayer::use_stage(render::VulkanContext& context, const render::Fram
   const bool sound_changed = !same_sound(*stage_, stage);
   stage_ = &stage;
   owned_stage_ = std::move(next);  // the previous stage may go now
-  if (models_changed) {
-    if (Status s = make_renderer(context, target); !s) return s;
-  }
-  lighting_ = stage::lighting_of(stage);
-  const scene::Color& bg = stage.scene.output.background;
-  clear_ = {static_cast<float>(bg.r), static_cast<float>(bg.g), static_cast<float>(bg.b), 1.0f};
-  if (camera_index_ >= stage.scene.cameras.size()) mode_ = CameraMode::director;
+  if (Status s = stage_renderer_->use_stage(context, target, stage, models_changed); !s) return s;
+  if (camera_index_ >= stage.scene().cameras.size()) mode_ = CameraMode::director;
   if (sound_changed) {
     if (Status s = transport_->reopen_sound(host_s); !s) return s;
   }
@@ -118,42 +107,48 @@ Status ScenePlayer::use_stage(render::VulkanContext& context, const render::Fram
 }
 
 double ScenePlayer::update(double host_s) {
-  const double t = transport_->update(host_s);
-  show(t);
-  return t;
+  transport_->update(host_s);
+  // The frame's time comes from the transport's audio clock (the sync phase).
+  audio_sync::FrameClock clock;
+  clock.source = audio_sync::FrameClock::Source::live;
+  clock.clock = &transport_->clock();
+  stage_->world().set_resource(clock);
+  stage_->run({shown_s_, 0.0});
+  stage_->world().set_resource(audio_sync::FrameClock{});
+  shown_s_ = stage_->world().resource<ecs::FrameTime>()->t_s;
+  return shown_s_;
 }
 
 void ScenePlayer::show(double t_s) {
   shown_s_ = t_s;
-  stage::evaluate_stage(*stage_, t_s);
-  stage::collect_instances(*stage_, instances_);
+  stage_->run({t_s, 0.0});
 }
 
 render::Camera ScenePlayer::camera(float aspect) const {
   switch (mode_) {
     case CameraMode::scene_camera:
-      return stage::scene_camera(*stage_, camera_index_, aspect);
+      return scene_camera(*stage_, camera_index_, aspect);
     case CameraMode::free:
       return orbit_.camera(aspect);
     case CameraMode::director:
       break;
   }
-  return stage::camera_at(*stage_, shown_s_, aspect);
+  return camera_at(*stage_, shown_s_, aspect);
 }
 
 Status ScenePlayer::record(const render::RecordingFrame& frame, render::FrameTarget& target) {
   const VkExtent2D extent = target.extent();
   const float aspect =
       static_cast<float>(extent.width) / static_cast<float>(std::max(1u, extent.height));
-  return renderer_->record(frame, target, instances_, camera(aspect), lighting_, clear_);
+  return stage_renderer_->record(frame, target, *stage_, camera(aspect));
 }
 
 void ScenePlayer::set_director() { mode_ = CameraMode::director; }
 
 Status ScenePlayer::set_scene_camera(std::size_t index) {
-  if (index >= stage_->scene.cameras.size()) {
-    return Error{stage_->scene.source + ": no camera " + std::to_string(index + 1) + " (it has " +
-                 std::to_string(stage_->scene.cameras.size()) + ")"};
+  if (index >= stage_->scene().cameras.size()) {
+    return Error{stage_->scene().source + ": no camera " + std::to_string(index + 1) + " (it has " +
+                 std::to_string(stage_->scene().cameras.size()) + ")"};
   }
   mode_ = CameraMode::scene_camera;
   camera_index_ = index;
@@ -163,8 +158,8 @@ Status ScenePlayer::set_scene_camera(std::size_t index) {
 void ScenePlayer::set_free_camera() {
   if (mode_ == CameraMode::free) return;
   const scene::Camera& from = mode_ == CameraMode::scene_camera
-                                  ? stage_->scene.cameras[camera_index_]
-                                  : stage_->scene.camera_at(shown_s_);
+                                  ? stage_->scene().cameras[camera_index_]
+                                  : stage_->scene().camera_at(shown_s_);
   orbit_ = OrbitCamera::from(from);
   mode_ = CameraMode::free;
 }
@@ -230,11 +225,11 @@ std::string ScenePlayer::status_line() const {
   std::string camera_text;
   switch (mode_) {
     case CameraMode::director:
-      camera_text = "director (" + stage_->scene.camera_at(shown_s_).name + ")";
+      camera_text = "director (" + stage_->scene().camera_at(shown_s_).name + ")";
       break;
     case CameraMode::scene_camera:
       camera_text = "camera " + std::to_string(camera_index_ + 1) + " (" +
-                    stage_->scene.cameras[camera_index_].name + ")";
+                    stage_->scene().cameras[camera_index_].name + ")";
       break;
     case CameraMode::free:
       camera_text = "free camera";

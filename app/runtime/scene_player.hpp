@@ -27,6 +27,7 @@
 #include <tutti/runtime/scene_sound.hpp>
 #include <tutti/runtime/transport.hpp>
 #include <tutti/scene/scene.hpp>
+#include <tutti/runtime/stage_renderer.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::runtime {
@@ -87,7 +88,7 @@ class ScenePlayer {
   const Transport& transport() const { return *transport_; }
   stage::Stage& stage() { return *stage_; }
   const stage::Stage& stage() const { return *stage_; }
-  const render::ModelRenderer& renderer() const { return *renderer_; }
+  const render::ModelRenderer& renderer() const { return stage_renderer_->renderer(); }
 
   // "12.3 / 95.0 s  playing  camera 2 (wide)  tempo 0.75  loop 10.0-20.0" for a title bar.
   std::string status_line() const;
@@ -97,16 +98,11 @@ class ScenePlayer {
 
   Status init(render::VulkanContext& context, const render::FrameTarget& target,
               const ScenePlayerOptions& options);
-  Status make_renderer(render::VulkanContext& context, const render::FrameTarget& target);
 
   std::shared_ptr<stage::Stage> owned_stage_;  // what stage_ points into, kept alive
   stage::Stage* stage_ = nullptr;
-  render::ModelRendererOptions renderer_options_;
-  std::unique_ptr<render::ModelRenderer> renderer_;
+  std::unique_ptr<StageRenderer> stage_renderer_;
   std::unique_ptr<Transport> transport_;
-  render::Lighting lighting_;
-  render::ClearColor clear_;
-  std::vector<render::ModelInstance> instances_;
   CameraMode mode_ = CameraMode::director;
   std::size_t camera_index_ = 0;
   OrbitCamera orbit_;

@@ -1,5 +1,5 @@
 #pragma once
-// The scene's sound for live playback: the stage's scores as played (Stage::sounding) as one
+// The scene's sound for live playback: the stage's scores as played (Stage::heard_scores) as one
 // SynthTimeline at a practice tempo, wind attacks compensated (as `tutti render` does), opened
 // on a LiveOutput. A tempo change opens a new one: the events are re-timed at the new factor.
 
@@ -21,7 +21,7 @@ struct SceneSoundOptions {
   bool compensate_attacks = true;
 };
 
-// Frame 0 is score time stage.start_s; tempo_factor in [0.1, 4].
+// Frame 0 is score time stage.start_s(); tempo_factor in [0.1, 4].
 Result<audio::SynthTimeline> scene_timeline(const stage::Stage& stage, double tempo_factor,
                                             const std::filesystem::path& sound_font,
                                             const SceneSoundOptions& options = {});

@@ -68,6 +68,8 @@ class Transport {
 
   bool playing() const { return clock_.playing(); }
   double time() const { return clock_.time(); }
+  // The audio clock the frame follows (audio_sync::FrameClock::Source::live).
+  const audio_sync::AudioClock& clock() const { return clock_; }
   double tempo() const { return options_.tempo; }
   double start_s() const { return options_.start_s; }
   double end_s() const { return options_.end_s; }

@@ -1,5 +1,6 @@
 #include <tutti/ecs/schedule.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -23,7 +24,7 @@ std::string_view phase_name(Phase phase) noexcept {
   return "unknown";
 }
 
-void Schedule::add(Phase phase, std::string name, System system) {
+void Schedule::add(Phase phase, std::string name, System system, Access access) {
   const auto index = static_cast<std::size_t>(phase);
   if (index >= kPhaseCount) {
     throw std::invalid_argument("ecs: system '" + name + "': no phase numbered " +
@@ -37,10 +38,10 @@ void Schedule::add(Phase phase, std::string name, System system) {
   if (running_) {
     throw std::logic_error("ecs: cannot add system '" + name + "' while the schedule runs");
   }
-  phases_[index].push_back(Entry{std::move(name), std::move(system)});
+  phases_[index].push_back(Entry{std::move(name), std::move(system), std::move(access)});
 }
 
-void Schedule::run(World& world, const FrameTime& frame) {
+void Schedule::run(World& world, const FrameTime& frame, Phase last) {
   struct Running {
     bool& flag;
     explicit Running(bool& f) : flag(f) {
@@ -52,8 +53,12 @@ void Schedule::run(World& world, const FrameTime& frame) {
     Running& operator=(const Running&) = delete;
   };
   const Running running(running_);
-  for (const auto& phase : phases_) {
-    for (const Entry& entry : phase) entry.system(world, frame);
+  world.set_resource<FrameTime>(frame);
+  const auto end = std::min(static_cast<std::size_t>(last) + 1, kPhaseCount);
+  for (std::size_t p = 0; p < end; ++p) {
+    // A copy: a system that writes the resource changes the next phase's time, not its own.
+    const FrameTime now = *world.resource<FrameTime>();
+    for (const Entry& entry : phases_[p]) entry.system(world, now);
     world.flush();
   }
 }
@@ -69,6 +74,37 @@ std::string Schedule::describe() const {
       text += phases_[i][k].name;
     }
     text += '\n';
+  }
+  return text;
+}
+
+std::string Schedule::describe_access() const {
+  std::size_t width = 0;
+  for (const auto& phase : phases_) {
+    for (const Entry& entry : phase) width = std::max(width, entry.name.size());
+  }
+  const auto list = [](const std::vector<std::string>& names) {
+    std::string text;
+    for (std::size_t k = 0; k < names.size(); ++k) text += (k != 0 ? ", " : "") + names[k];
+    return text;
+  };
+  std::string text;
+  for (std::size_t i = 0; i < kPhaseCount; ++i) {
+    if (phases_[i].empty()) continue;
+    text += phase_name(static_cast<Phase>(i));
+    text += '\n';
+    for (const Entry& entry : phases_[i]) {
+      std::string line = "  " + entry.name;
+      if (!entry.access.reads.empty() || !entry.access.writes.empty()) {
+        line.resize(2 + width + 2, ' ');
+        if (!entry.access.reads.empty()) line += "reads " + list(entry.access.reads);
+        if (!entry.access.writes.empty()) {
+          line += (entry.access.reads.empty() ? "" : "; ") + std::string("writes ") +
+                  list(entry.access.writes);
+        }
+      }
+      text += line + '\n';
+    }
   }
   return text;
 }

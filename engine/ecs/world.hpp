@@ -157,6 +157,32 @@ class World {
   void flush();
   [[nodiscard]] std::size_t deferred() const noexcept { return commands_.size(); }
 
+  // Resources (Bevy's): at most one T per World, owned by no entity — the frame's time, the
+  // clock it comes from. set_resource replaces the previous value; resource<T>() is nullptr
+  // until one is set.
+  template <typename T>
+  T& set_resource(T value) {
+    static_assert(std::is_same_v<T, std::remove_cvref_t<T>>, "resources are unqualified types");
+    const std::size_t id = type_index<T>();
+    if (id >= resources_.size()) resources_.resize(id + 1);
+    if (resources_[id] == nullptr) {
+      resources_[id] = std::make_shared<T>(std::move(value));
+    } else {
+      *static_cast<T*>(resources_[id].get()) = std::move(value);
+    }
+    return *static_cast<T*>(resources_[id].get());
+  }
+  template <typename T>
+  [[nodiscard]] T* resource() noexcept {
+    const std::size_t id = type_index<T>();
+    return id < resources_.size() ? static_cast<T*>(resources_[id].get()) : nullptr;
+  }
+  template <typename T>
+  [[nodiscard]] const T* resource() const noexcept {
+    const std::size_t id = type_index<T>();
+    return id < resources_.size() ? static_cast<const T*>(resources_[id].get()) : nullptr;
+  }
+
  private:
   struct Slot {
     std::uint32_t generation = 0;
@@ -188,6 +214,7 @@ class World {
   std::size_t alive_ = 0;
   std::vector<std::unique_ptr<SparseSet>> pools_;  // by type_index<T>()
   std::vector<Command> commands_;
+  std::vector<std::shared_ptr<void>> resources_;  // by type_index<T>()
 };
 
 }  // namespace tutti::ecs

@@ -60,7 +60,8 @@ void brass_pose_system(ecs::World& world, const ecs::FrameTime& frame) {
 }
 
 void register_brass_motion(ecs::Schedule& schedule) {
-  schedule.add(ecs::Phase::evaluate, kBrassPoseSystemName, brass_pose_system);
+  schedule.add(ecs::Phase::evaluate, kBrassMotionSystemName, brass_pose_system,
+               {{"BrassPlayerMotionHandle", "Instrument"}, {"Mouth", "Breath", "Valve", "Slide"}});
 }
 
 }  // namespace tutti::brass

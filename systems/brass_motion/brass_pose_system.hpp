@@ -31,7 +31,7 @@ struct BrassPlayerMotionHandle {
 // Allocation-free per frame; reads only plan data and the links above.
 void brass_pose_system(ecs::World& world, const ecs::FrameTime& frame);
 
-inline constexpr const char* kBrassPoseSystemName = "brass_pose";
+inline constexpr const char* kBrassMotionSystemName = "brass_motion";
 void register_brass_motion(ecs::Schedule& schedule);
 
 }  // namespace tutti::brass

@@ -20,7 +20,8 @@ void ensemble_variation_system(ecs::World& world, const ecs::FrameTime& frame) {
 }
 
 void register_ensemble_variation(ecs::Schedule& schedule) {
-  schedule.add(ecs::Phase::express, kEnsembleVariationSystemName, ensemble_variation_system);
+  schedule.add(ecs::Phase::express, kEnsembleVariationSystemName, ensemble_variation_system,
+               {{"EnsembleMotionHandle", "Breath"}, {"BodyMotion"}});
 }
 
 }  // namespace tutti::ensemble

@@ -47,7 +47,8 @@ void finger_pose_system(ecs::World& world, const ecs::FrameTime& frame) {
 }
 
 void register_finger_motion(ecs::Schedule& schedule) {
-  schedule.add(ecs::Phase::evaluate, kFingerPoseSystemName, finger_pose_system);
+  schedule.add(ecs::Phase::evaluate, kFingerMotionSystemName, finger_pose_system,
+               {{"PianistMotionHandle"}, {"Hand", "Finger"}});
 }
 
 }  // namespace tutti::finger_motion

@@ -38,9 +38,9 @@ struct PianistMotionHandle {
 // Allocation-free per frame; reads only plan data and the links above.
 void finger_pose_system(ecs::World& world, const ecs::FrameTime& frame);
 
-inline constexpr const char* kFingerPoseSystemName = "finger_pose";
+inline constexpr const char* kFingerMotionSystemName = "finger_motion";
 
-// Adds finger_pose_system to Phase::evaluate under kFingerPoseSystemName.
+// Adds finger_pose_system to Phase::evaluate under kFingerMotionSystemName.
 void register_finger_motion(ecs::Schedule& schedule);
 
 }  // namespace tutti::finger_motion

@@ -7,12 +7,13 @@ namespace tutti::note_sounding {
 void note_sounding_system(ecs::World& world, const ecs::FrameTime& frame) {
   const double t_s = frame.t_s;
   world.view<components::Note>().each([t_s](components::Note& note) {
-    note.sounding = sounds_at(note.onset_s, note.offset_s, t_s);
+    note.sounding = !note.silent && sounds_at(note.onset_s, note.offset_s, t_s);
   });
 }
 
 void register_note_sounding(ecs::Schedule& schedule) {
-  schedule.add(ecs::Phase::evaluate, kNoteSoundingSystemName, note_sounding_system);
+  schedule.add(ecs::Phase::evaluate, kNoteSoundingSystemName, note_sounding_system,
+               {{"Note"}, {"Note.sounding"}});
 }
 
 }  // namespace tutti::note_sounding

@@ -1,6 +1,6 @@
 #pragma once
 // Which notes sound at the frame time: note_sounding_system sets components::Note::sounding =
-// (onset_s <= t < offset_s) on every Note entity, in Phase::evaluate.
+// (onset_s <= t < offset_s and not silent) on every Note entity, in Phase::evaluate.
 //
 // A pure function of the frame time and each note's own onset/offset: nothing carries over from
 // the previous frame, so seeking backwards, jumping or replaying a frame gives the same flags.
@@ -23,6 +23,7 @@ void note_sounding_system(ecs::World& world, const ecs::FrameTime& frame);
 inline constexpr const char* kNoteSoundingSystemName = "note_sounding";
 
 // Adds note_sounding_system to Phase::evaluate under kNoteSoundingSystemName.
+// (Reads and writes Note.)
 void register_note_sounding(ecs::Schedule& schedule);
 
 }  // namespace tutti::note_sounding

@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <tutti/cli/exit_codes.hpp>
 #include "testdata.hpp"
@@ -125,6 +128,56 @@ TEST_F(InfoCommandTest, AgreesWithMidoOnEveryValidMidiFile) {
   // Every file mido reads is compared; a shrinking count would mean the check went hollow.
   EXPECT_GE(compared_counts, 60);
   EXPECT_GE(compared_durations, 55);
+}
+
+}  // namespace
+}  // namespace tutti::app
+
+namespace tutti::app {
+namespace {
+
+// `tutti info --schedule SCENE`: the frame's phases with their systems, in run order, and what
+// each reads and writes; the audio-sync system in the sync phase.
+TEST(InfoSchedule, ListsEachPhaseWithItsSystems) {
+  std::ostringstream out;
+  std::ostringstream err;
+  InfoOptions options;
+  options.file = fs::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / "quartet.json";
+  options.schedule = true;
+  ASSERT_EQ(run_info(options, out, err), kExitOk) << err.str();
+  const std::string text = out.str();
+  std::vector<std::string> phases;
+  std::map<std::string, std::vector<std::string>> systems;
+  std::istringstream lines(text);
+  std::string line;
+  std::getline(lines, line);  // the heading
+  while (std::getline(lines, line)) {
+    if (line.rfind("entities:", 0) == 0) break;
+    if (line.rfind("  ", 0) != 0) {
+      phases.push_back(line);
+    } else {
+      systems[phases.back()].push_back(line.substr(2, line.find(' ', 2) - 2));
+    }
+  }
+  EXPECT_EQ(phases, (std::vector<std::string>{"sync", "evaluate", "express", "pose"}));
+  EXPECT_EQ(systems["sync"], std::vector<std::string>{"audio_sync"});
+  for (const std::string& phase : phases) EXPECT_FALSE(systems[phase].empty()) << phase;
+  EXPECT_NE(std::find(systems["evaluate"].begin(), systems["evaluate"].end(), "note_sounding"),
+            systems["evaluate"].end());
+  EXPECT_NE(text.find("writes Mouth, Breath, Valve, Slide"), std::string::npos) << text;
+  EXPECT_NE(text.find("4 Performer, 128 Note"), std::string::npos) << text;
+}
+
+TEST(InfoSchedule, ABrokenSceneIsOneLine) {
+  std::ostringstream out;
+  std::ostringstream err;
+  InfoOptions options;
+  options.file = "no_such_scene.json";
+  options.schedule = true;
+  EXPECT_EQ(run_info(options, out, err), kExitBadInput);
+  const std::string message = err.str();
+  EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+  EXPECT_NE(message.find("no_such_scene.json"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tutti/performance/families.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
@@ -33,24 +35,24 @@ Measured measure(const char* scene_name) {
   auto scene = scene::load_scene(scene_file(scene_name));
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return m;
-  auto built = stage::build_stage(*scene, {});
+  auto built = performance::build_stage(*scene, {});
   EXPECT_TRUE(built) << built.error().message;
   if (!built) return m;
   m.stage = std::move(*built);
   const int fps = scene->output.fps;
-  const std::int64_t frames = frame_count(0.0, m.stage->end_s - m.stage->start_s, fps);
+  const std::int64_t frames = frame_count(0.0, m.stage->end_s() - m.stage->start_s(), fps);
   auto audio = render_scene_audio(*m.stage, fps, 0, frames);
   EXPECT_TRUE(audio) << audio.error().message;
   if (audio) m.audio = std::move(*audio);
-  m.start_s = m.stage->start_s;
-  m.contacts = sample_contacts(*m.stage, m.stage->start_s, m.stage->end_s, 0.0005);
+  m.start_s = m.stage->start_s();
+  m.contacts = sample_contacts(*m.stage, m.stage->start_s(), m.stage->end_s(), 0.0005);
   return m;
 }
 
 TEST(SyncReport, EveryPianoKeyBottomIsAtItsNoteOnset) {
   Measured m = measure("piano.json");
   ASSERT_FALSE(m.contacts.empty());
-  const music::Score& score = m.stage->scores.front();
+  const music::Score& score = m.stage->scores().front();
   for (const Contact& c : m.contacts) {
     ASSERT_EQ(c.kind, ContactKind::key_bottom);
     double nearest = 1e9;

@@ -8,6 +8,7 @@
 
 #include <tutti/export/keyframe_reduction.hpp>
 #include <tutti/export/scene_export.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
 
 namespace {
@@ -18,7 +19,7 @@ stage::Stage* staged(const char* scene_name) {
   auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" /
                                  scene_name);
   if (!scene) return nullptr;
-  auto stage = stage::build_stage(*scene, {});
+  auto stage = performance::build_stage(*scene, {});
   return stage ? stage->release() : nullptr;
 }
 

@@ -15,6 +15,8 @@
 #include <tutti/render/offscreen_target.hpp>
 #include <tutti/render/vulkan_context.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
+#include <tutti/runtime/stage_view.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace {
@@ -40,7 +42,7 @@ std::unique_ptr<Fixture> make_fixture(benchmark::State& state, const char* scene
     return nullptr;
   }
   auto fixture = std::make_unique<Fixture>();
-  auto stage = tutti::stage::build_stage(*scene, {});
+  auto stage = tutti::performance::build_stage(*scene, {});
   if (!stage) {
     state.SkipWithError(stage.error().message.c_str());
     return nullptr;
@@ -88,15 +90,15 @@ void run_frames(benchmark::State& state, const char* scene_name, Work work) {
     }
     video = std::move(*opened);
   }
-  const tutti::render::Lighting lighting = tutti::stage::lighting_of(stage);
+  const tutti::render::Lighting lighting = tutti::runtime::lighting_of(stage);
   std::vector<tutti::render::ModelInstance> instances;
   std::vector<std::uint8_t> rgba;
-  const double span = stage.end_s - stage.start_s;
+  const double span = stage.end_s() - stage.start_s();
   std::int64_t frame = 0;
   for (auto _ : state) {
-    const double t = stage.start_s + std::fmod(static_cast<double>(frame++) / kFps, span);
+    const double t = stage.start_s() + std::fmod(static_cast<double>(frame++) / kFps, span);
     tutti::stage::evaluate_stage(stage, t);
-    tutti::stage::collect_instances(stage, instances);
+    tutti::runtime::collect_instances(stage, instances);
     if (work == Work::pose) {
       benchmark::DoNotOptimize(instances.data());
       continue;
@@ -108,7 +110,7 @@ void run_frames(benchmark::State& state, const char* scene_name, Work work) {
     }
     tutti::Status s = fixture->renderer->record(
         *recording, *fixture->target, instances,
-        tutti::stage::camera_at(stage, t, static_cast<float>(kWidth) / kHeight), lighting,
+        tutti::runtime::camera_at(stage, t, static_cast<float>(kWidth) / kHeight), lighting,
         {0.02f, 0.02f, 0.03f, 1.0f});
     auto id = fixture->target->end_frame();
     if (!s || !id || !fixture->target->read_pixels(*id, rgba)) {

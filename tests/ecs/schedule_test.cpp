@@ -164,3 +164,61 @@ TEST(ScheduleTest, ASystemExceptionPropagatesAndTheScheduleStaysUsable) {
 
 }  // namespace
 }  // namespace tutti::ecs
+
+namespace tutti::ecs {
+namespace {
+
+// A consumer runs the frame only as far as it needs: later phases are left alone.
+TEST(ScheduleTest, RunStopsAfterTheLastPhaseAsked) {
+  Schedule schedule;
+  std::vector<std::string> log;
+  for (Phase phase : {Phase::sync, Phase::evaluate, Phase::express, Phase::pose, Phase::render}) {
+    schedule.add(phase, std::string(phase_name(phase)),
+                 [&log, phase](World&, const FrameTime&) { log.emplace_back(phase_name(phase)); });
+  }
+  World world;
+  schedule.run(world, FrameTime{}, Phase::evaluate);
+  EXPECT_THAT(log, ElementsAre("sync", "evaluate"));
+  log.clear();
+  schedule.run(world, FrameTime{}, Phase::pose);
+  EXPECT_THAT(log, ElementsAre("sync", "evaluate", "express", "pose"));
+}
+
+// The sync phase may replace the frame's time (the World's FrameTime resource): every later phase
+// is given the new one, the sync phase's own systems the requested one.
+TEST(ScheduleTest, TheSyncPhaseSetsTheTimeTheLaterPhasesSee) {
+  Schedule schedule;
+  std::vector<double> seen;
+  schedule.add(Phase::sync, "clock", [&seen](World& world, const FrameTime& frame) {
+    seen.push_back(frame.t_s);
+    world.set_resource(FrameTime{frame.t_s + 10.0, 0.25});
+  });
+  schedule.add(Phase::sync, "after_clock",
+               [&seen](World&, const FrameTime& frame) { seen.push_back(frame.t_s); });
+  schedule.add(Phase::evaluate, "hands", [&seen](World&, const FrameTime& frame) {
+    seen.push_back(frame.t_s);
+    seen.push_back(frame.dt_s);
+  });
+  World world;
+  schedule.run(world, FrameTime{1.0, 0.5});
+  EXPECT_THAT(seen, ElementsAre(1.0, 1.0, 11.0, 0.25));
+  ASSERT_NE(world.resource<FrameTime>(), nullptr);
+  EXPECT_EQ(world.resource<FrameTime>()->t_s, 11.0);
+}
+
+TEST(ScheduleTest, DescribeAccessListsEachSystemWithWhatItReadsAndWrites) {
+  Schedule schedule;
+  const auto nothing = [](World&, const FrameTime&) {};
+  schedule.add(Phase::evaluate, "hand_pose", nothing, {{"Plan"}, {"Hand", "Finger"}});
+  schedule.add(Phase::evaluate, "bow", nothing);
+  schedule.add(Phase::pose, "skeleton", nothing, {{"Hand"}, {}});
+  EXPECT_EQ(schedule.describe_access(),
+            "evaluate\n"
+            "  hand_pose  reads Plan; writes Hand, Finger\n"
+            "  bow\n"
+            "pose\n"
+            "  skeleton   reads Hand\n");
+}
+
+}  // namespace
+}  // namespace tutti::ecs

@@ -291,3 +291,31 @@ TEST(WorldTest, MovingAWorldKeepsItsContent) {
 
 }  // namespace
 }  // namespace tutti::ecs
+
+namespace tutti::ecs {
+namespace {
+
+struct Clock {
+  double t_s = 0.0;
+};
+
+TEST(WorldTest, AResourceIsOnePerWorldAndReplaced) {
+  World world;
+  EXPECT_EQ(world.resource<Clock>(), nullptr);
+  Clock& clock = world.set_resource(Clock{1.5});
+  EXPECT_EQ(clock.t_s, 1.5);
+  world.set_resource(Clock{2.5});
+  ASSERT_NE(world.resource<Clock>(), nullptr);
+  EXPECT_EQ(world.resource<Clock>(), &clock);  // replaced in place
+  EXPECT_EQ(world.resource<Clock>()->t_s, 2.5);
+  const World& view = world;
+  EXPECT_EQ(view.resource<Clock>()->t_s, 2.5);
+  World other;
+  EXPECT_EQ(other.resource<Clock>(), nullptr);  // not shared between worlds
+  World moved = std::move(world);
+  ASSERT_NE(moved.resource<Clock>(), nullptr);
+  EXPECT_EQ(moved.resource<Clock>()->t_s, 2.5);
+}
+
+}  // namespace
+}  // namespace tutti::ecs

@@ -17,8 +17,8 @@ using test::ScratchDir;
 
 components::BodyMotion body_at(Session& session, std::size_t performer, double t) {
   stage::evaluate_stage(session.stage(), t);
-  return session.stage().world.get<components::BodyMotion>(
-      session.stage().brass[performer].performer);
+  return session.stage().world().get<components::BodyMotion>(
+      session.stage().find_performer("brass", performer));
 }
 
 TEST(Session, AVariationEditReplansThatPlayersMotion) {
@@ -75,10 +75,10 @@ TEST(Session, PinningAFingerReplansTheFingering) {
   EXPECT_EQ(s.timeline().lanes.back().notes[12].finger, finger);
   EXPECT_TRUE(s.timeline().lanes.back().notes[12].pinned);
   // Only the span around the pin was searched again; the unpinned fingering was shared.
-  ASSERT_EQ(s.stage().replanned.size(), 2u);
-  EXPECT_EQ(s.stage().replanned[0].rfind("pianist fingering around the pins (", 0), 0u)
-      << s.stage().replanned[0];
-  EXPECT_EQ(s.stage().replanned[1], "pianist motion");
+  ASSERT_EQ(s.stage().replanned().size(), 2u);
+  EXPECT_EQ(s.stage().replanned()[0].rfind("pianist fingering around the pins (", 0), 0u)
+      << s.stage().replanned()[0];
+  EXPECT_EQ(s.stage().replanned()[1], "pianist motion");
   EXPECT_FALSE(s.timeline().corridors[0].empty());
   // The hand's path, as the panel draws it, keeps to the allowed areas.
   int inside = 0, samples = 0;
@@ -121,7 +121,7 @@ TEST(Session, AnEditReplansOnlyWhatItTouches) {
   }
   ASSERT_GT(boundary, 0.0);
   ASSERT_TRUE(s.apply(add_breath(s.document().json(), 2, s.breath_boundary(2, boundary - 0.01))));
-  EXPECT_EQ(s.stage().replanned, (std::vector<std::string>{"Trombone 1", "ensemble"}));
+  EXPECT_EQ(s.stage().replanned(), (std::vector<std::string>{"Trombone 1", "ensemble"}));
   const auto& breaths = s.timeline().lanes[2].breaths;
   const auto marked = std::find_if(breaths.begin(), breaths.end(), [&](const auto& b) {
     return std::abs(b.boundary_s - boundary) < 1e-6;
@@ -131,7 +131,7 @@ TEST(Session, AnEditReplansOnlyWhatItTouches) {
   EXPECT_TRUE(marked->catch_breath) << "legato: a catch-breath";
   const bool marked_only = marked->marked;  // the timeline is replaced by the next edit
   ASSERT_TRUE(s.apply(set_variation(s.document().json(), {false, 0}, "sway_amount", 0.1)));
-  EXPECT_EQ(s.stage().replanned, std::vector<std::string>{"ensemble"});
+  EXPECT_EQ(s.stage().replanned(), std::vector<std::string>{"ensemble"});
   // Deleting the marked breath leaves no mark behind.
   ASSERT_TRUE(s.apply(delete_breath(s.document().json(), 2, boundary, marked_only)));
   EXPECT_FALSE(s.document().json()["performers"][2].contains("breaths"));

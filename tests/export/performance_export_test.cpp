@@ -19,6 +19,9 @@
 #include <set>
 
 #include <tutti/audio_sync/audio_clock.hpp>
+#include <tutti/brass/brass_components.hpp>
+#include <tutti/components/performer.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/export/keyframe_reduction.hpp>
 #include <tutti/export/scene_export.hpp>
 #include <tutti/scene/asset_mapping.hpp>
@@ -34,7 +37,7 @@ std::unique_ptr<stage::Stage> build(const std::filesystem::path& scene_file) {
   auto scene = scene::load_scene(scene_file);
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return nullptr;
-  auto staged = stage::build_stage(*scene, {});
+  auto staged = performance::build_stage(*scene, {});
   EXPECT_TRUE(staged) << staged.error().message;
   return staged ? std::move(*staged) : nullptr;
 }
@@ -179,12 +182,12 @@ float worst_world_error(stage::Stage& stage, int fps, std::int64_t first, std::i
   float worst = 0.0f;
   std::vector<glm::mat4> expected;
   for (std::int64_t k = 0; k < frames; ++k) {
-    stage::evaluate_stage(stage, audio_sync::offline_frame_time(stage.start_s, fps, first + k));
+    stage::evaluate_stage(stage, audio_sync::offline_frame_time(stage.start_s(), fps, first + k));
     const std::vector<glm::mat4> world =
         world_of(glb, play(glb, *whole, static_cast<float>(static_cast<double>(k) / fps)));
-    for (std::size_t i = 0; i < stage.placed.size(); ++i) {
-      const stage::PlacedModel& placed = stage.placed[i];
-      const model::ModelAsset& asset = *stage.models[placed.model];
+    for (std::size_t i = 0; i < stage.instances().size(); ++i) {
+      const stage::PlacedModel& placed = stage.placed(i);
+      const model::ModelAsset& asset = *placed.asset;
       expected.assign(asset.nodes.size(), glm::mat4(1.0f));
       model::compute_world_matrices(asset, placed.pose, placed.root, expected);
       for (std::size_t j = 0; j < asset.nodes.size(); ++j) {
@@ -226,9 +229,10 @@ TEST(PerformanceExport, TheQuartetPlaysBackWithinHalfAMillimetre) {
   EXPECT_LT(worst, 5e-4f);
   std::printf("quartet: worst node error %.4f mm, %zu of %zu samples kept\n", worst * 1000.0f,
               summary.keys, summary.samples);
-  ASSERT_EQ(summary.clips.size(), stage->brass.size() + 1);
-  for (std::size_t i = 0; i < stage->brass.size(); ++i) {
-    EXPECT_EQ(summary.clips[i].name, stage->brass[i].name);
+  ASSERT_EQ(summary.clips.size(), stage->performers().size() + 1);
+  for (std::size_t i = 0; i < stage->performers().size(); ++i) {
+    EXPECT_EQ(summary.clips[i].name,
+              stage->world().get<components::Performer>(stage->performers()[i]).name);
     EXPECT_GT(summary.clips[i].channels, 10u);
   }
 }
@@ -259,7 +263,7 @@ TEST(PerformanceExport, TheFileLoadsWithTuttisModelLoader) {
   auto loaded = model::load_model_from_memory(exported->glb, "export.glb");
   ASSERT_TRUE(loaded) << loaded.error().message;
   std::size_t vertices = 0;
-  for (const auto& m : stage->models) vertices += m->vertices.size();
+  for (const auto& m : stage->models()) vertices += m->vertices.size();
   EXPECT_GT(loaded->vertices.size(), 0u);
   EXPECT_LE(loaded->vertices.size(), vertices) << "each model's meshes are written once";
   EXPECT_EQ(loaded->skins.size(), exported->skins);
@@ -288,7 +292,10 @@ TEST(PerformanceExport, ClipNamesStayDistinct) {
   document["performers"][1]["name"] = "pianist";
   const std::filesystem::path file = std::filesystem::temp_directory_path() /
                                      ("tutti-export-names-" + std::to_string(getpid()) + ".json");
-  document["music"] = (kSource / "content" / "music" / "quartet.musicxml").string();
+  // ... and a pianist, playing a second piece.
+  document["music"] = json::array({(kSource / "content" / "music" / "quartet.musicxml").string(),
+                                   (kSource / "content" / "music" / "ode_to_joy.musicxml").string()});
+  document["pianist"] = {{"parts", {"Piano"}}, {"music_file", 1}, {"position_m", {0, 0, 3}}};
   std::ofstream(file) << document.dump();
   auto stage = build(file);
   std::filesystem::remove(file);
@@ -298,8 +305,9 @@ TEST(PerformanceExport, ClipNamesStayDistinct) {
   std::set<std::string> names;
   for (const ClipSummary& clip : exported->clips) names.insert(clip.name);
   EXPECT_EQ(names.size(), exported->clips.size());
-  EXPECT_TRUE(names.count("scene") && names.count("pianist") && names.count("scene (all)"));
-  EXPECT_EQ(pianist_clip_name(*stage), "pianist (piano)");
+  EXPECT_TRUE(names.count("scene") && names.count("pianist") && names.count("scene (all)") &&
+              names.count("pianist (piano)"));
+  EXPECT_EQ(clip_names(*stage).back(), "pianist (piano)");
 }
 
 TEST(PerformanceExport, AnEmptyRangeIsAnError) {
@@ -354,7 +362,9 @@ TEST(PerformanceExport, AUsersCharacterExportsOnItsOwnSkeleton) {
              .dump();
   auto stage = build(dir / "scene.json");
   ASSERT_TRUE(stage);
-  ASSERT_TRUE(stage->brass[0].body_nodes.mapped);
+  ASSERT_TRUE(stage->world()
+                  .get<brass_family::BrassRig>(stage->find_performer("brass", 0))
+                  .body_nodes.mapped);
   const float worst = worst_world_error(*stage, 15, 0, 300);
   EXPECT_LT(worst, 5e-4f);
   auto exported = export_performance(*stage, {15, 0, 300});

@@ -2,6 +2,7 @@
 // host clock): camera modes through the key bindings, the transport through them, and a drawn
 // frame. Skipped without a Vulkan device.
 #include <tutti/runtime/scene_player.hpp>
+#include <tutti/runtime/stage_view.hpp>
 
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
@@ -56,18 +57,18 @@ class ScenePlayerTest : public render::test::VulkanTest {
 
 TEST_F(ScenePlayerTest, CameraModesFollowTheKeys) {
   ScenePlayer& p = *player_;
-  ASSERT_GE(p.stage().scene.cameras.size(), 2u);
+  ASSERT_GE(p.stage().scene().cameras.size(), 2u);
   EXPECT_EQ(p.camera_mode(), CameraMode::director);
-  expect_same_view(p.camera(kAspect), stage::camera_at(p.stage(), p.shown_time(), kAspect));
+  expect_same_view(p.camera(kAspect), runtime::camera_at(p.stage(), p.shown_time(), kAspect));
 
   EXPECT_TRUE(p.apply(key_action(GLFW_KEY_2, 0), 0.0, 90.0f));
   EXPECT_EQ(p.camera_mode(), CameraMode::scene_camera);
   EXPECT_EQ(p.camera_index(), 1u);
-  expect_same_view(p.camera(kAspect), stage::scene_camera(p.stage(), 1, kAspect));
+  expect_same_view(p.camera(kAspect), runtime::scene_camera(p.stage(), 1, kAspect));
   EXPECT_NE(p.status_line().find("camera 2"), std::string::npos) << p.status_line();
 
   // A camera the scene does not have: nothing changes.
-  if (p.stage().scene.cameras.size() < 9) {
+  if (p.stage().scene().cameras.size() < 9) {
     p.apply(key_action(GLFW_KEY_9, 0), 0.0, 90.0f);
     EXPECT_EQ(p.camera_index(), 1u);
   }
@@ -75,9 +76,9 @@ TEST_F(ScenePlayerTest, CameraModesFollowTheKeys) {
   // A drag: the free camera, starting where camera 2 is, then orbiting.
   p.apply(drag_action(GLFW_MOUSE_BUTTON_LEFT, 0, 0.0f, 0.0f), 0.0, 90.0f);
   EXPECT_EQ(p.camera_mode(), CameraMode::free);
-  expect_same_view(p.camera(kAspect), stage::scene_camera(p.stage(), 1, kAspect));
+  expect_same_view(p.camera(kAspect), runtime::scene_camera(p.stage(), 1, kAspect));
   p.apply(drag_action(GLFW_MOUSE_BUTTON_LEFT, 0, 50.0f, 0.0f), 0.0, 90.0f);
-  EXPECT_NE(p.camera(kAspect).position, stage::scene_camera(p.stage(), 1, kAspect).position);
+  EXPECT_NE(p.camera(kAspect).position, runtime::scene_camera(p.stage(), 1, kAspect).position);
 
   p.apply(key_action(GLFW_KEY_0, 0), 0.0, 90.0f);
   EXPECT_EQ(p.camera_mode(), CameraMode::director);
@@ -86,7 +87,7 @@ TEST_F(ScenePlayerTest, CameraModesFollowTheKeys) {
 
 TEST_F(ScenePlayerTest, TransportFollowsTheKeys) {
   ScenePlayer& p = *player_;
-  const double start = p.stage().start_s;
+  const double start = p.stage().start_s();
   EXPECT_EQ(p.update(0.0), start);
   p.apply(key_action(GLFW_KEY_SPACE, 0), 0.0, 90.0f);
   EXPECT_TRUE(p.transport().playing());
@@ -109,7 +110,7 @@ TEST_F(ScenePlayerTest, TransportFollowsTheKeys) {
 
 TEST_F(ScenePlayerTest, RecordsAFrame) {
   ScenePlayer& p = *player_;
-  p.show(p.stage().start_s + 2.0);
+  p.show(p.stage().start_s() + 2.0);
   auto frame = target_->begin_frame();
   ASSERT_TRUE(frame) << frame.error().message;
   ASSERT_TRUE(p.record(*frame, *target_));

@@ -18,12 +18,44 @@
 #include <tutti/components/valve.hpp>
 #include <tutti/ensemble_variation/ensemble_plan.hpp>
 #include <tutti/ensemble_variation/ensemble_variation_system.hpp>
+#include <tutti/brass/brass_components.hpp>
+#include <tutti/performance/families.hpp>
+#include <tutti/piano/piano_components.hpp>
 #include <tutti/scene/load_scene.hpp>
 
 namespace tutti::stage {
 namespace {
 
 const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
+
+using brass_family::BrassRig;
+using piano_family::PianistPlan;
+using piano_family::PianoRig;
+
+Result<std::unique_ptr<Stage>> build_stage(const scene::Scene& scene, const StageOptions& options) {
+  return performance::build_stage(scene, options);
+}
+
+// The families' components on their performers.
+ecs::Entity brass_player(const Stage& stage, std::size_t seat) {
+  return stage.find_performer("brass", seat);
+}
+const BrassRig& brass_rig(const Stage& stage, std::size_t seat) {
+  return stage.world().get<BrassRig>(brass_player(stage, seat));
+}
+ecs::Entity pianist(const Stage& stage) { return stage.find_performer("piano", 0); }
+const PianoRig& piano_rig(const Stage& stage) { return stage.world().get<PianoRig>(pianist(stage)); }
+const PianistPlan& pianist_plan(const Stage& stage) {
+  return stage.world().get<PianistPlan>(pianist(stage));
+}
+const ensemble::EnsemblePlan* ensemble_of(const Stage& stage) {
+  const auto* handle =
+      stage.world().try_get<ensemble::EnsembleMotionHandle>(brass_player(stage, 0));
+  return handle != nullptr ? handle->plan.get() : nullptr;
+}
+const PlacedModel& placed(const Stage& stage, ecs::Entity instance) {
+  return stage.world().get<PlacedModel>(instance);
+}
 
 std::unique_ptr<Stage> build(const std::filesystem::path& scene_file) {
   auto scene = scene::load_scene(scene_file);
@@ -36,7 +68,9 @@ std::unique_ptr<Stage> build(const std::filesystem::path& scene_file) {
 
 std::vector<std::vector<model::NodeTransform>> poses(const Stage& stage) {
   std::vector<std::vector<model::NodeTransform>> out;
-  for (const PlacedModel& p : stage.placed) out.push_back(p.pose.local);
+  for (std::size_t i = 0; i < stage.instances().size(); ++i) {
+    out.push_back(stage.placed(i).pose.local);
+  }
   return out;
 }
 
@@ -53,9 +87,9 @@ bool same(const std::vector<std::vector<model::NodeTransform>>& a,
   return true;
 }
 
-glm::vec3 node_world(const Stage& stage, std::size_t placed, int node) {
-  const PlacedModel& p = stage.placed[placed];
-  const model::ModelAsset& asset = *stage.models[p.model];
+glm::vec3 node_world(const Stage& stage, ecs::Entity instance, int node) {
+  const PlacedModel& p = placed(stage, instance);
+  const model::ModelAsset& asset = *p.asset;
   std::vector<glm::mat4> world(asset.nodes.size());
   model::compute_world_matrices(asset, p.pose, p.root, world);
   return glm::vec3(world[static_cast<std::size_t>(node)][3]);
@@ -81,31 +115,32 @@ TEST(Stage, PoseAtTIsAPureFunctionOfT) {
 TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
   auto stage = build(kSource / "content" / "scenes" / "quartet.json");
   ASSERT_TRUE(stage);
-  ASSERT_TRUE(stage->ensemble);
-  ASSERT_EQ(stage->ensemble->performers.size(), 4u);
-  EXPECT_EQ(stage->ensemble->lead, 0);  // "Trumpet 1 leads"
+  const ensemble::EnsemblePlan* plan = ensemble_of(*stage);
+  ASSERT_TRUE(plan);
+  ASSERT_EQ(plan->performers.size(), 4u);
+  EXPECT_EQ(plan->lead, 0);  // "Trumpet 1 leads"
   // No cue list in the scene: one cue, at the first entrance.
-  ASSERT_EQ(stage->ensemble->performers[0].cues.size(), 1u);
-  const ensemble::CueMotion& cue = stage->ensemble->performers[0].cues.front();
-  EXPECT_NEAR(cue.dip_s, stage->ensemble->entrance_s, 1e-9);
+  ASSERT_EQ(plan->performers[0].cues.size(), 1u);
+  const ensemble::CueMotion& cue = plan->performers[0].cues.front();
+  EXPECT_NEAR(cue.dip_s, plan->entrance_s, 1e-9);
   // The lead's bell at the top of the cue, in the rendered pose: the generated trumpet's bell
   // points along its -Z, which rises in the world as the bell lifts.
-  const BrassSeat& lead = stage->brass[0];
+  const BrassRig& lead = brass_rig(*stage, 0);
   const auto bell_rise = [&](double t) {
     evaluate_stage(*stage, t);
-    return (stage->placed[lead.horn].root * glm::vec4(0, 0, -1, 0)).y;
+    return (placed(*stage, lead.horn).root * glm::vec4(0, 0, -1, 0)).y;
   };
   const float before = bell_rise(cue.start_s - 0.01);
   const float lifted = bell_rise(cue.lift_s);
   EXPECT_GT(lifted - before, 0.1f) << "bell direction y " << before << " -> " << lifted;
   std::printf("quartet: first entrance %.3f s, the lead's cue %.3f .. %.3f s\n",
-              stage->ensemble->entrance_s, cue.start_s, cue.end_s);
+              plan->entrance_s, cue.start_s, cue.end_s);
   // Over the piece the four bodies move differently: their hips and spines differ.
   int differing = 0;
   for (double t = 5.0; t < 35.0; t += 1.0) {
     evaluate_stage(*stage, t);
-    const auto* a = stage->world.try_get<components::BodyMotion>(stage->brass[0].performer);
-    const auto* b = stage->world.try_get<components::BodyMotion>(stage->brass[1].performer);
+    const auto* a = stage->world().try_get<components::BodyMotion>(brass_player(*stage, 0));
+    const auto* b = stage->world().try_get<components::BodyMotion>(brass_player(*stage, 1));
     ASSERT_TRUE(a && b);
     differing += std::abs(a->sway_rad - b->sway_rad) > 0.005f ? 1 : 0;
   }
@@ -113,17 +148,21 @@ TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
 }
 
 // What is heard is what is played: a note cut short for a catch breath ends early in
-// Stage::sounding, exactly where that player's breath starts; nothing else changes.
+// Stage::heard_scores, exactly where that player's breath starts; nothing else changes.
 TEST(Stage, TheSoundStopsWhereAPlayerTakesACatchBreath) {
   auto stage = build(kSource / "content" / "scenes" / "quartet.json");
   ASSERT_TRUE(stage);
-  ASSERT_EQ(stage->sounding.size(), stage->scores.size());
-  const music::Score& written = stage->scores.front();
-  const music::Score& heard = stage->sounding.front();
+  const std::vector<music::Score> heard_scores = stage->heard_scores();
+  ASSERT_EQ(heard_scores.size(), stage->scores().size());
+  const music::Score& written = stage->scores().front();
+  const music::Score& heard = heard_scores.front();
   ASSERT_EQ(heard.notes.size(), written.notes.size());
   std::vector<double> breath_starts;
-  for (const auto& player : stage->ensemble_players) {
-    for (const brass::BreathEvent& e : player->breaths.events) breath_starts.push_back(e.start_s);
+  for (std::size_t seat = 0; seat < 4; ++seat) {
+    const auto& player = stage->world().get<brass::BrassPlayerMotionHandle>(brass_player(*stage, seat));
+    for (const brass::BreathEvent& e : player.motion->breaths.events) {
+      breath_starts.push_back(e.start_s);
+    }
   }
   std::size_t shortened = 0;
   for (std::size_t i = 0; i < heard.notes.size(); ++i) {
@@ -141,20 +180,20 @@ TEST(Stage, TheSoundStopsWhereAPlayerTakesACatchBreath) {
 
 TEST(Stage, PressedKeysTurnTheirNodes) {
   auto stage = build(kSource / "content" / "scenes" / "piano.json");
-  ASSERT_TRUE(stage && stage->pianist);
-  const PianistSeat& seat = *stage->pianist;
+  ASSERT_TRUE(stage && !pianist(*stage).is_null());
+  const PianoRig& seat = piano_rig(*stage);
   int pressed_frames = 0;
   for (double t = 0.0; t < 12.0; t += 1.0 / 30) {
     evaluate_stage(*stage, t);
     for (const auto& hand : seat.fingers) {
       for (ecs::Entity e : hand) {
-        const auto& finger = stage->world.get<components::Finger>(e);
+        const auto& finger = stage->world().get<components::Finger>(e);
         if (finger.key < 0 || finger.press_depth < 1.0) continue;
         ++pressed_frames;
         const int node = seat.key_nodes[static_cast<std::size_t>(finger.key)];
         ASSERT_GE(node, 0);
         const glm::quat r =
-            stage->placed[seat.piano].pose.local[static_cast<std::size_t>(node)].rotation;
+            placed(*stage, seat.piano).pose.local[static_cast<std::size_t>(node)].rotation;
         const float angle = 2.0f * std::acos(std::min(1.0f, std::abs(r.w)));
         EXPECT_NEAR(angle, seat.key_dip_rad[static_cast<std::size_t>(finger.key)], 1e-4) << t;
       }
@@ -169,8 +208,8 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
   auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json");
   ASSERT_TRUE(scene) << scene.error().message;
   auto plain = build_stage(*scene, {});
-  ASSERT_TRUE(plain && (*plain)->pianist) << plain.error().message;
-  const PianistSeat& before = *(*plain)->pianist;
+  ASSERT_TRUE(plain) << plain.error().message;
+  const PianistPlan& before = pianist_plan(**plain);
   // The 10th note, pinned to a finger the planner did not choose.
   const std::size_t i = 9;
   const music::Note note = before.score.notes[i];
@@ -180,13 +219,13 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
   scene->pianist->pins.push_back(scene::FingerPin{note.onset_s, note.pitch, pinned});
   auto stage = build_stage(*scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
-  const PianistSeat& seat = *(*stage)->pianist;
+  const PianistPlan& seat = pianist_plan(**stage);
   EXPECT_EQ(seat.fingering.fingers[i], pinned);
   // That finger is on the note's key, pressed, just after its onset.
   const std::size_t side = seat.fingering.hands[i] == music::Hand::left ? 1 : 0;
   evaluate_stage(**stage, note.onset_s + 0.01);
-  const auto& finger = (*stage)->world.get<components::Finger>(
-      seat.fingers[side][static_cast<std::size_t>(pinned - 1)]);
+  const auto& finger = (*stage)->world().get<components::Finger>(
+      piano_rig(**stage).fingers[side][static_cast<std::size_t>(pinned - 1)]);
   EXPECT_EQ(finger.key, note.pitch);
   EXPECT_GT(finger.press_depth, 0.9);
 
@@ -205,17 +244,17 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
   ASSERT_TRUE(scene) << scene.error().message;
   auto written = build_stage(*scene, {});
   ASSERT_TRUE(written) << written.error().message;
-  EXPECT_FALSE((*written)->pianist->played) << "no style: no key simulation";
-  ASSERT_EQ((*written)->sounding[0].notes.size(), (*written)->scores[0].notes.size());
+  EXPECT_FALSE(pianist_plan(**written).played) << "no style: no key simulation";
+  ASSERT_EQ((*written)->heard_scores()[0].notes.size(), (*written)->scores()[0].notes.size());
 
   scene->pianist->style = "beginner";
   scene->pianist->sound_from_keys = true;
   auto stage = build_stage(*scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
-  const PianistSeat& seat = *(*stage)->pianist;
+  const PianistPlan& seat = pianist_plan(**stage);
   ASSERT_TRUE(seat.played);
   ASSERT_EQ(seat.played->size(), seat.score.notes.size());
-  const music::Score& heard = (*stage)->sounding[0];
+  const music::Score heard = (*stage)->heard_scores()[0];
   EXPECT_EQ(heard.notes.size(), seat.performance.sounded);
   // Every heard piano note is one the keys sounded, at the time and velocity they sounded it.
   std::size_t moved = 0;
@@ -236,8 +275,8 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
     if (p.outcome != key_action::KeyOutcome::sounded) continue;
     evaluate_stage(**stage, p.onset_s);
     const std::size_t side = seat.fingering.hands[i] == music::Hand::left ? 1 : 0;
-    const auto& finger = (*stage)->world.get<components::Finger>(
-        seat.fingers[side][static_cast<std::size_t>(seat.fingering.fingers[i] - 1)]);
+    const auto& finger = (*stage)->world().get<components::Finger>(
+        piano_rig(**stage).fingers[side][static_cast<std::size_t>(seat.fingering.fingers[i] - 1)]);
     EXPECT_EQ(finger.key, seat.score.notes[i].pitch) << "note " << i;
     EXPECT_GT(finger.press_depth, 0.6) << "note " << i;  // past escapement, short of the bed
     EXPECT_LT(finger.press_depth, 1.0) << "note " << i;
@@ -247,12 +286,12 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
   again.reuse_models = stage->get();
   auto same = build_stage(*scene, again);
   ASSERT_TRUE(same) << same.error().message;
-  EXPECT_EQ((*same)->pianist->played, seat.played);
+  EXPECT_EQ(pianist_plan(**same).played, seat.played);
   scene->pianist->seed += 1;
   again.reuse_models = same->get();
   auto reseeded = build_stage(*scene, again);
   ASSERT_TRUE(reseeded) << reseeded.error().message;
-  EXPECT_NE((*reseeded)->pianist->played, seat.played);
+  EXPECT_NE(pianist_plan(**reseeded).played, seat.played);
 }
 
 // The generated trumpet with every node renamed, its root scaled to centimetres: a "user's" model.
@@ -297,14 +336,14 @@ TEST(Stage, AUsersInstrumentThroughAMappingMovesLikeTheGeneratedOne) {
   auto generated = build(dir / "generated.json");
   auto user = build(dir / "user.json");
   ASSERT_TRUE(generated && user);
-  const BrassSeat& g = generated->brass[0];
-  const BrassSeat& u = user->brass[0];
+  const BrassRig& g = brass_rig(*generated, 0);
+  const BrassRig& u = brass_rig(*user, 0);
   ASSERT_GE(u.valves[0], 0);
   int pressed = 0;
   for (double t = 3.0; t < 20.0; t += 0.25) {
     evaluate_stage(*generated, t);
     evaluate_stage(*user, t);
-    const auto& valve = generated->world.get<components::Valve>(g.instrument);
+    const auto& valve = generated->world().get<components::Valve>(g.instrument);
     pressed += valve.press[0] > 0.5f ? 1 : 0;
     for (std::size_t v = 0; v < 3; ++v) {
       const glm::vec3 a = node_world(*generated, g.horn, g.valves[v]);
@@ -337,31 +376,31 @@ TEST(Stage, AUsersInstrumentThroughAMappingMovesLikeTheGeneratedOne) {
 TEST(Stage, AStrainExpressionTightensTheFace) {
   auto stage = build(kSource / "content" / "scenes" / "quartet.json");
   ASSERT_TRUE(stage);
-  ASSERT_TRUE(stage->ensemble);
-  const BrassSeat& seat = stage->brass[1];
-  ASSERT_TRUE(seat.body);
+  ASSERT_TRUE(ensemble_of(*stage));
+  const BrassRig& seat = brass_rig(*stage, 1);
+  ASSERT_FALSE(seat.body.is_null());
   ASSERT_GE(seat.body_nodes.morph_tension, 0);
   const auto tension = [&](double t) {
     evaluate_stage(*stage, t);
-    return stage->placed[*seat.body]
+    return placed(*stage, seat.body)
         .pose.morph_weights[static_cast<std::size_t>(seat.body_nodes.morph_tension)];
   };
   const auto bell_rise = [&] {  // the generated trumpet's bell points along its -Z
-    return (stage->placed[seat.horn].root * glm::vec4(0, 0, -1, 0)).y;
+    return (placed(*stage, seat.horn).root * glm::vec4(0, 0, -1, 0)).y;
   };
   const float plain = tension(12.0);
   const float plain_bell = bell_rise();
   evaluate_stage(*stage, 20.0);
   const auto outside = poses(*stage);
 
-  ensemble::EnsemblePlan edited = *stage->ensemble;
+  ensemble::EnsemblePlan edited = *ensemble_of(*stage);
   ensemble::ExpressionSpan span;
   span.kind = ensemble::ExpressionKind::strain;
   span.start_s = 10.0;
   span.end_s = 14.0;
   span.amount = 1.0;
   edited.performers[1].expressions = {span};
-  auto* handle = stage->world.try_get<ensemble::EnsembleMotionHandle>(seat.performer);
+  auto* handle = stage->world().try_get<ensemble::EnsembleMotionHandle>(brass_player(*stage, 1));
   ASSERT_NE(handle, nullptr);
   handle->plan = std::make_shared<const ensemble::EnsemblePlan>(std::move(edited));
   const float strained = tension(12.0);

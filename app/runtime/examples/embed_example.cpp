@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   std::vector<std::uint8_t> rgba;
   std::uint64_t last_id = 0;
   for (int k = 0; k < frames; ++k) {
-    const double music_s = (*player)->stage().start_s + k / 30.0;
+    const double music_s = (*player)->stage().start_s() + k / 30.0;
     (*player)->show(music_s);  // pose every performer at that time (deterministic)
 
     auto frame = (*target)->begin_frame();

@@ -45,7 +45,7 @@ TEST(FingerPoseSystem, WritesHandAndFingersFromThePianistsPlan) {
 
   ecs::Schedule schedule;
   register_finger_motion(schedule);
-  EXPECT_EQ(schedule.describe(), "evaluate: finger_pose\n");
+  EXPECT_EQ(schedule.describe(), "evaluate: finger_motion\n");
   schedule.run(world, {1.0, 1.0 / 60});
 
   EXPECT_EQ(world.get<components::Hand>(hand).x_mm, x);

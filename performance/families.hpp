@@ -1,0 +1,21 @@
+#pragma once
+// The instrument families tutti stages, in order (brass players, then the pianist): the one place
+// that lists them. A program with families of its own passes its list to stage::build_stage.
+
+#include <memory>
+#include <span>
+
+#include <tutti/core/result.hpp>
+#include <tutti/scene/scene.hpp>
+#include <tutti/stage/family_plugin.hpp>
+#include <tutti/stage/stage.hpp>
+
+namespace tutti::performance {
+
+std::span<const stage::FamilyPlugin* const> default_families();
+
+// stage::build_stage with default_families().
+Result<std::unique_ptr<stage::Stage>> build_stage(const scene::Scene& scene,
+                                                  const stage::StageOptions& options = {});
+
+}  // namespace tutti::performance

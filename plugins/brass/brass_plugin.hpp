@@ -1,0 +1,21 @@
+#pragma once
+// The brass family: each brass player of the scene (plan_brass_player.hpp) as a performer entity
+// driven by the brass-motion system (Mouth, Breath, and the Valve or Slide of their instrument
+// entity) and by ensemble variation (BodyMotion), and their instrument, body, chair and stand
+// posed by brass_skeleton_system (pose_brass.hpp).
+//
+// Systems: brass_motion (Phase::evaluate), ensemble_variation (Phase::express), brass_skeleton
+// (Phase::pose).
+
+#include <tutti/stage/family_plugin.hpp>
+
+namespace tutti::brass_family {
+
+class BrassPlugin final : public stage::FamilyPlugin {
+ public:
+  std::string_view name() const override { return "brass"; }
+  void add_systems(ecs::Schedule& schedule) const override;
+  Status build(stage::StageBuilder& builder) const override;
+};
+
+}  // namespace tutti::brass_family

@@ -1,0 +1,85 @@
+#include <tutti/brass/plan_brass_player.hpp>
+
+#include <cstdio>
+
+#include <tutti/brass_motion/plan_brass_player.hpp>
+#include <tutti/fingering_planner/brass_lines.hpp>
+#include <tutti/scene/load_scene.hpp>
+
+namespace tutti::brass_family {
+namespace {
+
+std::string times_key(const std::vector<double>& times) {
+  std::string out;
+  char text[32];
+  for (double t : times) {
+    std::snprintf(text, sizeof text, "%.17g,", t);
+    out += text;
+  }
+  return out;
+}
+
+// Everything a brass player's own plan (line, fingering, breaths, valves / slide) depends on.
+std::string brass_plan_key(const scene::Scene& scene, const scene::Performer& performer) {
+  return performer.instrument + "|" + performer.part + "|" + std::to_string(performer.voice) + "|" +
+         scene.music[performer.music_file].string() + "|" + times_key(performer.breaths.add_s) +
+         "|" + times_key(performer.breaths.remove_s);
+}
+
+}  // namespace
+
+Result<BrassPlanningData> load_brass_planning_data() {
+  auto weights = brass::load_planner_weights();
+  if (!weights) return weights.error();
+  auto motion = brass::load_brass_motion_params();
+  if (!motion) return motion.error();
+  auto breath = brass::load_breath_params();
+  if (!breath) return breath.error();
+  return BrassPlanningData{std::move(*weights), std::move(*motion), std::move(*breath)};
+}
+
+Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat,
+                                  const BrassPlanningData& data) {
+  const scene::Scene& scene = builder.scene();
+  const scene::Performer& performer = scene.performers[seat];
+  const music::Score& score = builder.scores()[performer.music_file];
+  BrassPlan plan;
+  plan.plan_key = brass_plan_key(scene, performer);
+  if (const stage::Stage* reuse = builder.previous(); reuse != nullptr) {
+    const ecs::Entity previous_entity = reuse->find_performer("brass", seat);
+    const auto* previous = previous_entity.is_null()
+                               ? nullptr
+                               : reuse->world().try_get<BrassPlan>(previous_entity);
+    if (previous != nullptr && previous->plan_key == plan.plan_key && previous->line != nullptr) {
+      return *previous;
+    }
+  }
+  auto instrument = brass::load_instrument_by_id(performer.instrument);
+  if (!instrument) return instrument.error();
+  plan.instrument = std::make_shared<const brass::Instrument>(std::move(*instrument));
+  const int part = scene::find_part(score, performer.part);
+  if (part < 0) {
+    return Error{scene.source + ": performer \"" + performer.name + "\": no part \"" +
+                 performer.part + "\" in " +
+                 scene.music[performer.music_file].filename().string()};
+  }
+  auto extracted = brass::extract_line(score, part, performer.voice - 1, *plan.instrument);
+  if (!extracted) {
+    return Error{scene.source + ": performer \"" + performer.name +
+                 "\": " + extracted.error().message};
+  }
+  const brass::BrassPlanSummary summary = brass::plan_line(*extracted, data.weights, &score);
+  for (const brass::BrassDiagnostic& d : summary.diagnostics) {
+    plan.plan_notes.push_back(performer.name + ": " + d.message);
+  }
+  brass::BreathMarks marks;
+  marks.add_s = performer.breaths.add_s;
+  marks.remove_s = performer.breaths.remove_s;
+  plan.player = std::make_shared<const brass::BrassPlayerMotion>(brass::plan_brass_player(
+      *extracted, score, data.motion, data.breath, data.weights.change, marks));
+  plan.line = std::make_shared<const brass::BrassLine>(std::move(*extracted));
+  builder.replanned(performer.name);
+  return plan;
+}
+
+}  // namespace tutti::brass_family

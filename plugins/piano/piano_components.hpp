@@ -1,0 +1,65 @@
+#pragma once
+// The piano family's own components, on the pianist's performer entity: what was planned
+// (PianistPlan: the editor pins fingers on its notes, a re-plan shares it when nothing it depends
+// on changed) and how the plan drives the models (PianoRig: the pose system's bindings).
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <tutti/ecs/entity.hpp>
+#include <tutti/finger_motion/finger_pose_system.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/key_action/key_simulation.hpp>
+#include <tutti/key_action/performance_report.hpp>
+#include <tutti/music/score.hpp>
+#include <tutti/stage/performer_rig.hpp>
+
+namespace tutti::piano_family {
+
+struct PianistPlan {
+  // What the pianist plays (their parts, pins applied) and the fingering planned for it: the
+  // editor shows and pins fingers on these notes.
+  music::Score score;
+  piano::ScorePlan fingering;
+  std::shared_ptr<const finger_motion::PianistMotion> motion;
+  // `score.notes[i]` is the stage score's note full_index[i].
+  std::vector<std::size_t> full_index;
+  // Everything the plan depends on (parts, music, hand size, style, pins): a re-plan with the
+  // same key shares the plan.
+  std::string plan_key;
+  // The fingering before the scene's pins (the file's own marks pinned) and what it depends on:
+  // pins re-plan only the span around them from it.
+  piano::ScorePlan base_fingering;
+  std::string base_key;
+  std::vector<std::string> plan_notes;
+  // With a performance style (scene pianist "style" / "sound": "keys"): what the simulated keys
+  // did with each note of `score` (systems/key_action), and its summary. Empty without a style.
+  std::shared_ptr<const std::vector<key_action::PlayedNote>> played;
+  key_action::PerformanceReport performance;
+};
+
+struct PianoRig {
+  std::array<ecs::Entity, 2> hands{ecs::Entity::null, ecs::Entity::null};  // right, left
+  std::array<std::array<ecs::Entity, 5>, 2> fingers{};
+  ecs::Entity piano = ecs::Entity::null;                                     // PlacedModel
+  std::array<ecs::Entity, 2> hand_models{ecs::Entity::null, ecs::Entity::null};  // right, left
+  // The seated performer rig (when generated): arms reach the hand models' wrists; the rig's
+  // own hands are folded away (scale 0) because the hand models draw them.
+  ecs::Entity body = ecs::Entity::null;
+  stage::BodyNodes body_nodes;
+  std::array<int, 2> rig_hands{-1, -1};  // right, left
+  std::array<int, 128> key_nodes{};      // piano node per MIDI key, -1 = none
+  std::array<double, 128> key_dip_rad{};
+  glm::mat4 keyboard_to_world{1.0f};  // the piano's `keyboard` node (metres, glTF axes)
+  // Bones of each hand model, [finger 0..4][segment 0..2]; -1 = missing.
+  std::array<std::array<std::array<int, 3>, 5>, 2> finger_bones{};
+  std::array<int, 2> hand_root{-1, -1};
+  std::vector<glm::mat4> scratch_world;  // reused every frame by the pose system
+};
+
+}  // namespace tutti::piano_family

@@ -1,0 +1,195 @@
+#include <tutti/piano/piano_plugin.hpp>
+
+#include <cmath>
+#include <string>
+
+#include <tutti/components/finger.hpp>
+#include <tutti/components/hand.hpp>
+#include <tutti/components/note.hpp>
+#include <tutti/components/performer.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/key_action/key_action_params.hpp>
+#include <tutti/piano/plan_pianist.hpp>
+#include <tutti/piano/pose_piano.hpp>
+#include <tutti/stage/model_binding.hpp>
+
+namespace tutti::piano_family {
+namespace {
+
+// The pianist's notes on the stage: who plays them with which hand and finger, and, when the
+// keys make the sound, what was heard (missed notes are silent).
+void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const PianistPlan& plan,
+                 ecs::Entity pianist, bool sound_from_keys) {
+  ecs::World& world = builder.world();
+  for (std::size_t i = 0; i < plan.full_index.size(); ++i) {
+    auto* note = world.try_get<components::Note>(builder.note_entity(music_file, plan.full_index[i]));
+    if (note == nullptr) continue;
+    note->performer = pianist;
+    if (i < plan.fingering.hands.size()) {
+      note->hand = plan.fingering.hands[i] == music::Hand::left ? components::HandSide::left
+                                                                 : components::HandSide::right;
+    }
+    if (i < plan.fingering.fingers.size()) note->finger = plan.fingering.fingers[i];
+    if (!sound_from_keys || !plan.played || i >= plan.played->size()) continue;
+    const key_action::PlayedNote& p = (*plan.played)[i];
+    if (p.outcome == key_action::KeyOutcome::not_played) continue;
+    if (p.outcome != key_action::KeyOutcome::sounded) {
+      note->silent = true;
+      continue;
+    }
+    // As key_action::performed_score: nothing sounds before the music's time 0.
+    note->onset_s = std::max(p.onset_s, 0.0);
+    note->offset_s = std::max(note->onset_s, p.offset_s);
+    note->velocity = p.velocity;
+  }
+}
+
+// How far key node `node` turns at the bed: the key action's dip at the key's front over the
+// model key's length from its pivot to its front (its mesh's extent toward the player, to 0.1 mm).
+double key_dip_rad(const model::ModelAsset& piano, int node, const key_action::KeyLever& lever) {
+  const int mesh = piano.nodes[static_cast<std::size_t>(node)].mesh;
+  if (mesh < 0) return 0.0;
+  float front_m = 0.0f;
+  for (const model::Primitive& primitive : piano.meshes[static_cast<std::size_t>(mesh)].primitives) {
+    for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
+      front_m = std::max(front_m, piano.vertices[primitive.first_vertex + v].position.z);
+    }
+  }
+  const double length_mm = std::round(static_cast<double>(front_m) * 10000.0) / 10.0;
+  return length_mm > 0.0 ? std::atan(lever.front_dip_mm / length_mm) : 0.0;
+}
+
+Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
+                  const key_action::KeyAction& action, PianoRig& rig) {
+  auto piano_model = builder.generated_model("piano.glb");
+  if (!piano_model) return piano_model.error();
+  rig.piano = builder.place(*piano_model, glm::mat4(1.0f));
+  const model::ModelAsset& piano = builder.model(*piano_model);
+  rig.key_nodes.fill(-1);
+  rig.key_dip_rad.fill(0.0);
+  for (int key = 0; key < 128; ++key) {
+    const int node = piano.find_node("key_" + std::to_string(key));
+    rig.key_nodes[static_cast<std::size_t>(key)] = node;
+    if (node < 0) continue;
+    const bool black = keyboard.contains(key) && keyboard.is_black(key);
+    rig.key_dip_rad[static_cast<std::size_t>(key)] = key_dip_rad(piano, node, action.lever(black));
+  }
+  {
+    std::vector<glm::mat4> world(piano.nodes.size());
+    model::compute_world_matrices(piano, builder.placed(rig.piano).pose, glm::mat4(1.0f), world);
+    const int keyboard_node = piano.find_node("keyboard");
+    if (keyboard_node >= 0) rig.keyboard_to_world = world[static_cast<std::size_t>(keyboard_node)];
+  }
+  const char* finger_names[5] = {"thumb", "index", "middle", "ring", "little"};
+  for (int side = 0; side < 2; ++side) {
+    auto hand_model = builder.generated_model(side == 0 ? "hand_right.glb" : "hand_left.glb");
+    if (!hand_model) return hand_model.error();
+    rig.hand_models[static_cast<std::size_t>(side)] = builder.place(*hand_model, glm::mat4(1.0f));
+    const model::ModelAsset& hand = builder.model(*hand_model);
+    rig.hand_root[static_cast<std::size_t>(side)] = hand.roots.empty() ? -1 : hand.roots[0];
+    for (int f = 0; f < 5; ++f) {
+      for (int s = 0; s < 3; ++s) {
+        rig.finger_bones[static_cast<std::size_t>(side)][static_cast<std::size_t>(f)]
+                        [static_cast<std::size_t>(s)] = hand.find_node(
+            std::string(finger_names[f]) + "_" + std::to_string(s + 1) + (side == 0 ? "_r" : "_l"));
+      }
+    }
+  }
+  return Status::success();
+}
+
+Status bind_pianist_body(stage::StageBuilder& builder, const scene::Pianist& pianist,
+                         PianoRig& rig) {
+  auto chair_model = builder.generated_model("chair.glb");
+  if (!chair_model) return chair_model.error();
+  // The chair's front (+Z) toward the keys, like the pianist.
+  const glm::mat4 bench = stage::placement_matrix(pianist.position_m, pianist.facing_deg);
+  builder.place(*chair_model, bench);
+  if (!builder.generated_model_exists("performer.glb")) return Status::success();
+  auto body = stage::load_mapped(builder, {}, "performer.glb");
+  if (!body) return body.error();
+  rig.body = builder.place(body->model, bench);
+  const model::ModelAsset& asset = builder.model(body->model);
+  auto nodes = stage::find_body_nodes(asset, *body);
+  if (!nodes) return nodes.error();
+  rig.body_nodes = *nodes;
+  for (int side = 0; side < 2; ++side) {
+    auto hand = stage::find_role(asset, *body, side == 0 ? "hand_r" : "hand_l");
+    if (!hand) return hand.error();
+    rig.rig_hands[static_cast<std::size_t>(side)] = *hand;
+  }
+  return Status::success();
+}
+
+}  // namespace
+
+void PianoPlugin::add_systems(ecs::Schedule& schedule) const {
+  finger_motion::register_finger_motion(schedule);
+  schedule.add(ecs::Phase::pose, kPianoSkeletonSystemName, piano_skeleton_system,
+               {{"PianoRig", "Hand", "Finger"}, {"PlacedModel (piano, hands, pianist)"}});
+}
+
+Status PianoPlugin::build(stage::StageBuilder& builder) const {
+  const scene::Scene& scene = builder.scene();
+  if (!scene.pianist) return Status::success();
+  const scene::Pianist& pianist = *scene.pianist;
+  if (!pianist.hands_mapping.empty() || !pianist.character_mapping.empty()) {
+    return Error{scene.source +
+                 ": pianist: user hand and character models are not "
+                 "supported yet (the brass players' are); remove \"hands\" / \"character\""};
+  }
+  auto planned = plan_pianist(builder);
+  if (!planned) return planned.error();
+  PianistPlan& plan = *planned;
+  for (const std::string& note : plan.plan_notes) builder.note(note);
+  // The keyboard and its key levers, for the keys' dip.
+  auto model = piano::load_fingering_model("default", pianist.hand_size, builder.content_dir());
+  if (!model) return model.error();
+  auto action = key_action::load_key_action(key_action::key_action_path(builder.content_dir()));
+  if (!action) return action.error();
+
+  ecs::World& world = builder.world();
+  const ecs::Entity performer =
+      builder.add_performer(name(), 0, components::Performer{"pianist", pianist.seed});
+  claim_notes(builder, pianist.music_file, plan, performer, pianist.sound_from_keys);
+  world.add<finger_motion::PianistMotionHandle>(performer,
+                                                finger_motion::PianistMotionHandle{plan.motion});
+  PianoRig rig;
+  for (int side = 0; side < 2; ++side) {
+    const auto hand_side = side == 0 ? components::HandSide::right : components::HandSide::left;
+    const ecs::Entity hand = world.create();
+    components::Hand hand_value;
+    hand_value.side = hand_side;
+    hand_value.performer = performer;
+    world.add<components::Hand>(hand, hand_value);
+    rig.hands[static_cast<std::size_t>(side)] = hand;
+    for (int f = 0; f < 5; ++f) {
+      const ecs::Entity finger = world.create();
+      components::Finger finger_value;
+      finger_value.hand = hand;
+      finger_value.side = hand_side;
+      finger_value.finger = f + 1;
+      world.add<components::Finger>(finger, finger_value);
+      rig.fingers[static_cast<std::size_t>(side)][static_cast<std::size_t>(f)] = finger;
+    }
+  }
+  if (Status s = bind_piano(builder, model->keyboard, *action, rig); !s) return s;
+  if (Status s = bind_pianist_body(builder, pianist, rig); !s) return s;
+  // Export names: "piano", "<pianist> hand_r", "<pianist> hand_l", the pianist's body.
+  const auto label = [&](ecs::Entity instance, std::string text, bool after_performer) {
+    if (instance.is_null()) return;
+    stage::PlacedModel& placed = builder.placed(instance);
+    placed.performer = performer;
+    placed.label = std::move(text);
+    placed.after_performer = after_performer;
+  };
+  label(rig.piano, "piano", false);
+  label(rig.hand_models[0], "hand_r", true);
+  label(rig.hand_models[1], "hand_l", true);
+  label(rig.body, "", true);
+  world.add<PianoRig>(performer, std::move(rig));
+  world.add<PianistPlan>(performer, std::move(plan));
+  return Status::success();
+}
+
+}  // namespace tutti::piano_family

@@ -1,0 +1,20 @@
+#pragma once
+// The piano family: the scene's pianist (plan_pianist.hpp), their hands and fingers as entities
+// driven by the finger-motion system, and the piano, hand models, bench and performer rig posed
+// by piano_skeleton_system (pose_piano.hpp).
+//
+// Systems: finger_motion (Phase::evaluate: Hand, Finger from the planned motion), piano_skeleton
+// (Phase::pose: keys, hands, the seated pianist).
+
+#include <tutti/stage/family_plugin.hpp>
+
+namespace tutti::piano_family {
+
+class PianoPlugin final : public stage::FamilyPlugin {
+ public:
+  std::string_view name() const override { return "piano"; }
+  void add_systems(ecs::Schedule& schedule) const override;
+  Status build(stage::StageBuilder& builder) const override;
+};
+
+}  // namespace tutti::piano_family

@@ -1,0 +1,197 @@
+#include <tutti/piano/plan_pianist.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/finger_motion/plan_finger_motion.hpp>
+#include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/key_action/humane_performance.hpp>
+#include <tutti/piano_performance/performance_plan.hpp>
+#include <tutti/scene/load_scene.hpp>
+
+namespace tutti::piano_family {
+namespace {
+
+// What the pianist's fingering without the scene's pins depends on.
+std::string pianist_base_key(const scene::Scene& scene, const scene::Pianist& pianist) {
+  std::string key = scene.music[pianist.music_file].string() + "|" + pianist.hand_size + "|";
+  for (const std::string& part : pianist.parts) key += part + ",";
+  return key;
+}
+
+// Everything the pianist's plan depends on.
+std::string pianist_plan_key(const scene::Scene& scene, const scene::Pianist& pianist) {
+  std::string key = pianist_base_key(scene, pianist);
+  if (!pianist.style.empty() || pianist.sound_from_keys) {
+    key += "|style " + pianist.style + (pianist.sound_from_keys ? " keys " : " score ") +
+           std::to_string(pianist.seed);
+  }
+  char text[64];
+  for (const scene::FingerPin& pin : pianist.pins) {
+    std::snprintf(text, sizeof text, "|%.17g:%d:%d", pin.time_s, pin.key, pin.finger);
+    key += text;
+  }
+  return key;
+}
+
+// The editor's pins become the planner's pins (Note::finger, plan_score's pins_from_marks). A
+// pin names its note by key and onset; one that matches no note is an error, not ignored.
+Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianist,
+                         music::Score& score) {
+  constexpr double kSameOnset_s = 1e-3;
+  for (std::size_t i = 0; i < pianist.pins.size(); ++i) {
+    const scene::FingerPin& pin = pianist.pins[i];
+    music::Note* pinned = nullptr;
+    for (music::Note& note : score.notes) {
+      if (note.pitch == pin.key && std::abs(note.onset_s - pin.time_s) < kSameOnset_s) {
+        pinned = &note;
+        break;
+      }
+    }
+    if (pinned == nullptr) {
+      char time[32];
+      std::snprintf(time, sizeof time, "%.3f", pin.time_s);
+      return Error{scene.source + ": /pianist/pins/" + std::to_string(i) + ": no note of key " +
+                   std::to_string(pin.key) + " starts at " + time +
+                   " s in the pianist's parts of " +
+                   scene.music[pianist.music_file].filename().string()};
+    }
+    pinned->finger = pin.finger;
+  }
+  return Status::success();
+}
+
+// The pianist's motion in the scene's performance style, and what the keys make of it.
+Result<key_action::HumanePerformance> perform_in_style(
+    const scene::Scene& scene, const scene::Pianist& pianist, const music::Score& score,
+    const performance::PianoPerformancePlan& paths, const piano::FingeringModel& model,
+    const finger_motion::FingerMotionParams& params, const std::filesystem::path& content_dir) {
+  auto styles = key_action::load_styles(key_action::styles_path(content_dir));
+  if (!styles) return styles.error();
+  auto style = styles->find(pianist.style.empty() ? "precise" : pianist.style);
+  if (!style) return Error{scene.source + ": /pianist/style: " + style.error().message};
+  auto action = key_action::load_key_action(key_action::key_action_path(content_dir));
+  if (!action) return action.error();
+  key_action::HumaneInputs in;
+  in.score = &score;
+  in.fingering = &paths.fingering;
+  in.right_path = &paths.right_path;
+  in.left_path = &paths.left_path;
+  in.keyboard = &model.keyboard;
+  in.hand_model = &model.hand;
+  in.params = &params;
+  in.action = &*action;
+  in.style = &*style;
+  in.seed = pianist.seed;
+  return key_action::perform(in);
+}
+
+}  // namespace
+
+Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
+  const scene::Scene& scene = builder.scene();
+  const scene::Pianist& pianist = *scene.pianist;
+  const std::filesystem::path& content_dir = builder.content_dir();
+  const music::Score& full = builder.scores()[pianist.music_file];
+  PianistPlan plan;
+  // Only the parts the pianist plays.
+  music::Score score = full;
+  std::vector<bool> played(full.parts.size(), false);
+  for (const std::string& name : pianist.parts) {
+    const int part = scene::find_part(full, name);
+    if (part < 0) {
+      return Error{scene.source + ": pianist: no part \"" + name + "\" in " +
+                   scene.music[pianist.music_file].filename().string()};
+    }
+    played[static_cast<std::size_t>(part)] = true;
+  }
+  score.notes.clear();
+  for (std::size_t i = 0; i < full.notes.size(); ++i) {
+    if (played[static_cast<std::size_t>(full.notes[i].part)]) {
+      score.notes.push_back(full.notes[i]);
+      plan.full_index.push_back(i);
+    }
+  }
+  // The editor's pins act locally: the fingering without them (the file's own marks are pins
+  // there too) is planned once, then only the span around the pinned notes is searched again
+  // (piano::replan_score_locally). A pure function of the score and the pins, so the editor and
+  // `tutti render` get the same fingering whatever order the pins were placed in.
+  const music::Score unpinned = score;
+  if (Status s = apply_finger_pins(scene, pianist, score); !s) return s.error();
+  std::vector<int> pinned_notes;
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    if (score.notes[i].finger != unpinned.notes[i].finger)
+      pinned_notes.push_back(static_cast<int>(i));
+  }
+  auto model = piano::load_fingering_model("default", pianist.hand_size, content_dir);
+  if (!model) return model.error();
+  plan.base_key = pianist_base_key(scene, pianist);
+  plan.plan_key = pianist_plan_key(scene, pianist);
+  const stage::Stage* reuse = builder.previous();
+  const ecs::Entity previous_entity =
+      reuse != nullptr ? reuse->find_performer("piano", 0) : ecs::Entity::null;
+  const PianistPlan* previous =
+      previous_entity.is_null() ? nullptr : reuse->world().try_get<PianistPlan>(previous_entity);
+  if (previous != nullptr && previous->plan_key == plan.plan_key && previous->motion) {
+    plan.motion = previous->motion;
+    plan.fingering = previous->fingering;
+    plan.base_fingering = previous->base_fingering;
+    plan.plan_notes = previous->plan_notes;
+    plan.played = previous->played;
+    plan.performance = previous->performance;
+  } else {
+    if (previous != nullptr && previous->base_key == plan.base_key) {
+      plan.base_fingering = previous->base_fingering;
+    } else {
+      auto planned = piano::plan_score(unpinned, *model);
+      if (!planned) return planned.error();
+      plan.base_fingering = std::move(*planned);
+      builder.replanned("pianist fingering");
+    }
+    plan.fingering = plan.base_fingering;
+    if (!pinned_notes.empty()) {
+      piano::ScoreReplanSpan span;
+      auto replanned = piano::replan_score_locally(score, *model, {}, plan.base_fingering,
+                                                   pinned_notes, &span);
+      if (!replanned) return replanned.error();
+      plan.fingering = std::move(*replanned);
+      builder.replanned("pianist fingering around the pins (" +
+                        std::to_string(span.searched_events) + " of " +
+                        std::to_string(span.event_count) + " events)");
+    }
+    performance::PianoPerformancePlan performance =
+        performance::plan_performance_paths(plan.fingering);
+    for (const performance::HandReport* hand :
+         {&performance.report.right, &performance.report.left}) {
+      if (!hand->path_error.empty()) plan.plan_notes.push_back("pianist: " + hand->path_error);
+    }
+    auto params = finger_motion::load_finger_motion_params(
+        finger_motion::finger_motion_params_path(content_dir));
+    if (!params) return params.error();
+    if (!pianist.style.empty() || pianist.sound_from_keys) {
+      auto humane =
+          perform_in_style(scene, pianist, score, performance, *model, *params, content_dir);
+      if (!humane) return humane.error();
+      plan.motion = std::move(humane->motion);
+      plan.performance = humane->report;
+      plan.played =
+          std::make_shared<const std::vector<key_action::PlayedNote>>(std::move(humane->played));
+    } else {
+      auto fingers = finger_motion::plan_finger_motion(
+          score, performance.fingering, performance.right_path, performance.left_path,
+          model->keyboard, model->hand, *params);
+      if (!fingers) return fingers.error();
+      auto planned_motion = std::make_shared<finger_motion::PianistMotion>();
+      planned_motion->fingers = std::move(*fingers);
+      planned_motion->right_path = std::move(performance.right_path);
+      planned_motion->left_path = std::move(performance.left_path);
+      plan.motion = std::move(planned_motion);
+    }
+    builder.replanned("pianist motion");
+  }
+  plan.score = std::move(score);
+  return plan;
+}
+
+}  // namespace tutti::piano_family
