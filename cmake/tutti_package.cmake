@@ -7,17 +7,26 @@
 include(CMakePackageConfigHelpers)
 
 # The libraries a game links, exported as tutti::<name> (tutti_core -> tutti::core). Their
-# include directories are $<BUILD_INTERFACE:...> / $<INSTALL_INTERFACE:include/tutti> and
+# include directories are $<BUILD_INTERFACE:...> / $<INSTALL_INTERFACE:include> and
 # tutti_warnings is $<BUILD_INTERFACE:...> in their link lines, so neither the source tree nor
-# the warning flags reach a consumer.
-set(TUTTI_EXPORTED_TARGETS
-  tutti_core tutti_ecs tutti_components tutti_music tutti_audio tutti_content tutti_image
-  tutti_model tutti_render tutti_render_window tutti_shader_compiler tutti_scene tutti_stage
-  tutti_piano_plugin tutti_brass_plugin tutti_performance tutti_export
-  tutti_runtime tutti_runtime_imgui tutti_live
+# the warning flags reach a consumer. Three export sets, so a machine needs only the packages of
+# what it uses:
+#  - tuttiTargets: staging and sampling performances (tutti::performance, the C API tutti::c,
+#    tutti::export, the systems): no Vulkan, no window, no sound device;
+#  - tuttiSoundTargets: FluidSynth sound and live MIDI input (tutti::audio, tutti::live);
+#  - tuttiRenderTargets: the Vulkan renderer, windows, the runtime and tutti::tutti.
+set(TUTTI_PERFORMANCE_TARGETS
+  tutti_core tutti_ecs tutti_components tutti_music tutti_content tutti_image tutti_model
+  tutti_scene tutti_stage tutti_piano_plugin tutti_brass_plugin tutti_performance tutti_c
+  tutti_export
   tutti_piano_model tutti_fingering_planner tutti_brass_planner tutti_spline_motion
   tutti_piano_performance tutti_finger_motion tutti_key_action tutti_note_sounding
   tutti_brass_model tutti_brass_motion tutti_ensemble_variation tutti_audio_sync)
+set(TUTTI_SOUND_TARGETS tutti_audio tutti_live)
+set(TUTTI_RENDER_TARGETS
+  tutti_render tutti_render_window tutti_shader_compiler tutti_runtime tutti_runtime_imgui)
+set(TUTTI_EXPORTED_TARGETS
+  ${TUTTI_PERFORMANCE_TARGETS} ${TUTTI_SOUND_TARGETS} ${TUTTI_RENDER_TARGETS})
 # Libraries of the programs and the tests, not installed.
 set(TUTTI_INTERNAL_TARGETS
   tutti_warnings tutti_app tutti_app_play tutti_app_stream_report tutti_content_generator_lib
@@ -30,7 +39,7 @@ add_library(tutti_all INTERFACE)
 add_library(tutti::tutti ALIAS tutti_all)
 set_target_properties(tutti_all PROPERTIES EXPORT_NAME tutti)
 set(_tutti_umbrella ${TUTTI_EXPORTED_TARGETS})
-list(REMOVE_ITEM _tutti_umbrella tutti_runtime_imgui tutti_shader_compiler)
+list(REMOVE_ITEM _tutti_umbrella tutti_runtime_imgui tutti_shader_compiler tutti_c)
 target_link_libraries(tutti_all INTERFACE ${_tutti_umbrella})
 
 foreach(target IN LISTS TUTTI_EXPORTED_TARGETS)
@@ -38,7 +47,9 @@ foreach(target IN LISTS TUTTI_EXPORTED_TARGETS)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
   # The headers are C++20 (the same -std as the build: CMAKE_CXX_STANDARD is 20).
   get_target_property(type ${target} TYPE)
-  if(type STREQUAL "INTERFACE_LIBRARY")
+  if(target STREQUAL "tutti_c")
+    # A C interface: a C program links it without C++20 (or C++) being asked of it.
+  elseif(type STREQUAL "INTERFACE_LIBRARY")
     target_compile_features(${target} INTERFACE cxx_std_20)
   else()
     target_compile_features(${target} PUBLIC cxx_std_20)
@@ -90,10 +101,23 @@ endforeach()
 
 set(TUTTI_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/tutti)
 
-install(TARGETS ${TUTTI_EXPORTED_TARGETS} tutti_all EXPORT tuttiTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
-        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
-install(EXPORT tuttiTargets NAMESPACE tutti:: DESTINATION ${TUTTI_INSTALL_CMAKEDIR} COMPONENT dev)
+foreach(set_name Performance Sound Render)
+  string(TOUPPER ${set_name} upper)
+  set(export_name tutti${set_name}Targets)
+  if(set_name STREQUAL "Performance")
+    set(export_name tuttiTargets)
+  endif()
+  set(targets ${TUTTI_${upper}_TARGETS})
+  if(set_name STREQUAL "Render")
+    list(APPEND targets tutti_all)
+  endif()
+  install(TARGETS ${targets} EXPORT ${export_name}
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
+          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
+          RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT dev)
+  install(EXPORT ${export_name} NAMESPACE tutti:: DESTINATION ${TUTTI_INSTALL_CMAKEDIR}
+          COMPONENT dev)
+endforeach()
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/tuttiConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/package/tuttiConfig.cmake

@@ -40,10 +40,10 @@ bool is_file(const fs::path& path) {
 
 class SceneParser {
  public:
-  SceneParser(const std::string& file_name, fs::path base_dir)
+  SceneParser(const std::string& file_name, fs::path base_dir, fs::path content_dir)
       : reader_(file_name),
         base_dir_(std::move(base_dir)),
-        content_dir_(content::default_content_dir()) {}
+        content_dir_(content_dir.empty() ? content::default_content_dir() : std::move(content_dir)) {}
 
   Result<Scene> parse(const json& document);
 
@@ -605,15 +605,15 @@ Result<nlohmann::json> read_scene_json(const std::filesystem::path& path) {
   }
 }
 
-Result<Scene> load_scene(const std::filesystem::path& path) {
+Result<Scene> load_scene(const std::filesystem::path& path, const LoadOptions& options) {
   auto document = read_scene_json(path);
   if (!document) return document.error();
-  return parse_scene(*document, path.filename().string(), path.parent_path());
+  return parse_scene(*document, path.filename().string(), path.parent_path(), options);
 }
 
 Result<Scene> parse_scene(const nlohmann::json& document, const std::string& file_name,
-                          const std::filesystem::path& base_dir) {
-  SceneParser parser(file_name, base_dir);
+                          const std::filesystem::path& base_dir, const LoadOptions& options) {
+  SceneParser parser(file_name, base_dir, options.content_dir);
   return parser.parse(document);
 }
 

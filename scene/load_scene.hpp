@@ -21,14 +21,19 @@
 
 namespace tutti::scene {
 
+struct LoadOptions {
+  // Where the content the scene is checked against is (instruments, hands, styles); empty:
+  // content::default_content_dir() ($TUTTI_CONTENT_DIR, else the content tutti was built with).
+  std::filesystem::path content_dir;
+};
+
 // Messages use the file's name (not its folder). Missing file: "<path>: no such file"; bad JSON:
 // "<name>: not valid JSON (... at byte N)"; empty file: "<name>: empty file".
-Result<Scene> load_scene(const std::filesystem::path& path);
+Result<Scene> load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // `file_name` is used in messages; relative paths in the scene resolve against `base_dir`.
-// Content (instruments, hands) comes from content::default_content_dir().
 Result<Scene> parse_scene(const nlohmann::json& document, const std::string& file_name,
-                          const std::filesystem::path& base_dir);
+                          const std::filesystem::path& base_dir, const LoadOptions& options = {});
 
 // Reads a JSON document with one-line errors naming `path.filename()` (shared with the mapping
 // loader): missing file, empty file, not valid JSON (with the byte offset).

@@ -74,6 +74,16 @@ void set_morph(model::ModelPose& pose, int index, double value) {
   }
 }
 
+components::Transform stage_transform(const scene::Vec3& position_m, double facing_deg) {
+  components::Transform t;
+  t.x_mm = position_m.x * 1000.0;
+  t.y_mm = position_m.y * 1000.0;
+  t.z_mm = position_m.z * 1000.0;
+  const double half = facing_deg * 3.14159265358979323846 / 360.0;
+  t.rotation = {std::cos(half), 0.0, std::sin(half), 0.0};
+  return t;
+}
+
 void pose_body_base(const BodyNodes& n, bool seated, const model::ModelAsset& body,
                     const components::Breath* breath, model::ModelPose& pose) {
   if (seated) {

@@ -9,8 +9,10 @@
 
 #include <tutti/components/body_motion.hpp>
 #include <tutti/components/breath.hpp>
+#include <tutti/components/transform.hpp>
 #include <tutti/core/result.hpp>
 #include <tutti/model/model_asset.hpp>
+#include <tutti/scene/scene.hpp>
 #include <tutti/stage/model_binding.hpp>
 #include <tutti/stage/two_bone_ik.hpp>
 
@@ -40,6 +42,10 @@ void reset_pose(const model::ModelAsset& asset, model::ModelPose& pose);
 void turn(model::ModelPose& pose, int node, float radians, const glm::vec3& axis);
 // Sets morph `index` (if any) to `value` clamped to [0, 1].
 void set_morph(model::ModelPose& pose, int index, double value);
+
+// A performer's place on the stage (components::Transform: mm, the scene's frame) from a scene's
+// position (m) and facing (degrees about +Y).
+components::Transform stage_transform(const scene::Vec3& position_m, double facing_deg);
 
 // Seated legs on a 460 mm seat; with `breath`, the breathing chest (default rig axes).
 void pose_body_base(const BodyNodes& n, bool seated, const model::ModelAsset& body,

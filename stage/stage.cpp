@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include <tutti/components/note.hpp>
+#include <tutti/content/content_dir.hpp>
 #include <tutti/stage/stage_builder.hpp>
 
 #ifndef TUTTI_DEFAULT_ASSET_DIR
@@ -14,6 +15,9 @@ namespace tutti::stage {
 std::filesystem::path default_asset_dir() {
   if (const char* dir = std::getenv("TUTTI_ASSET_DIR"); dir != nullptr && *dir != '\0') {
     return dir;
+  }
+  if (std::filesystem::path installed = content::installed_data_dir("assets"); !installed.empty()) {
+    return installed;
   }
   return TUTTI_DEFAULT_ASSET_DIR;
 }

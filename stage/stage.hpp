@@ -44,8 +44,8 @@ struct StageOptions {
   const Stage* reuse_models = nullptr;
 };
 
-// Where the content generator's .glb files are: $TUTTI_ASSET_DIR, else the build tree's
-// content/assets (compiled in).
+// Where the content generator's .glb files are: $TUTTI_ASSET_DIR; else, for an installed program,
+// <prefix>/share/tutti/assets; else the build tree's content/assets (compiled in).
 std::filesystem::path default_asset_dir();
 
 // Component: one model instance on the stage — which model, where, and its pose this frame.

@@ -8,6 +8,8 @@
 #include <iosfwd>
 #include <string>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct BrassOptions {
@@ -19,5 +21,8 @@ struct BrassOptions {
 };
 
 int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti brass` and its options to `tutti`, and its run to `commands`.
+void register_brass_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

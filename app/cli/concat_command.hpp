@@ -11,6 +11,8 @@
 #include <iosfwd>
 #include <vector>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct ConcatOptions {
@@ -23,5 +25,8 @@ struct ConcatOptions {
 };
 
 int run_concat(const ConcatOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti concat` and its options to `tutti`, and its run to `commands`.
+void register_concat_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

@@ -1,6 +1,8 @@
 #include <tutti/cli/export_command.hpp>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
@@ -94,6 +96,24 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
         << " keys\n";
   }
   return kExitOk;
+}
+
+void register_export_command(CLI::App& tutti, Commands& commands) {
+  auto options = std::make_shared<ExportOptions>();
+  CLI::App* command = tutti.add_subcommand(
+      "export",
+      "Write the scene as binary glTF 2.0: characters, hands, piano, instruments and props with "
+      "the performance baked as animation (one clip per performer plus the whole scene)");
+  command->add_option("SCENE", options->scene, "scene file (.json)")->required();
+  command->add_option("-o,--output", options->output, "performance.glb")->required();
+  command->add_option("--fps", options->fps, "keyframe rate (default: the scene's)");
+  command->add_option("--seconds", options->seconds, "A:B: the frames whose times are in [A, B)");
+  command->add_option("--frames", options->frames, "A:B: frames A (inclusive) to B (exclusive)");
+  command->add_option("--assets", options->assets, "folder of the generated .glb assets");
+  command->add_flag("--json", options->json_summary, "print the summary as JSON");
+  commands.add(command, [options](std::ostream& out, std::ostream& err) {
+    return run_export(*options, out, err);
+  });
 }
 
 }  // namespace tutti::app

@@ -9,6 +9,8 @@
 #include <iosfwd>
 #include <string>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct ExportOptions {
@@ -22,5 +24,8 @@ struct ExportOptions {
 };
 
 int run_export(const ExportOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti export` and its options to `tutti`, and its run to `commands`.
+void register_export_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

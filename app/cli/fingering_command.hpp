@@ -9,6 +9,8 @@
 #include <iosfwd>
 #include <string>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct FingeringOptions {
@@ -30,5 +32,8 @@ struct FingeringOptions {
 
 // Writes the result, prints the report, or one "error: ..." line to `err`. Returns the exit code.
 int run_fingering(const FingeringOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti fingering` and its options to `tutti`, and its run to `commands`.
+void register_fingering_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

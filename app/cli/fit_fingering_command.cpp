@@ -1,7 +1,9 @@
 #include <tutti/cli/fit_fingering_command.hpp>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <ostream>
 
 #include <tutti/cli/exit_codes.hpp>
@@ -66,6 +68,23 @@ int run_fit_fingering(const FitFingeringOptions& o, std::ostream& out, std::ostr
       << result->iterations << " rounds, " << result->evaluations << " planner passes, " << seconds
       << " s)\nwrote " << o.output.string() << "\n";
   return kExitOk;
+}
+
+void register_fit_fingering_command(CLI::App& tutti, Commands& commands) {
+  auto options = std::make_shared<FitFingeringOptions>();
+  CLI::App* command = tutti.add_subcommand(
+      "fit-fingering",
+      "Fit the fingering cost weights to annotated pieces (PIG text or MusicXML with fingering "
+      "marks) and write them as JSON for `tutti fingering --weights`");
+  command->add_option("FILES", options->inputs, "annotated score files")->required();
+  command->add_option("-o,--output", options->output, "weights .json to write")->required();
+  command->add_option("--start", options->start,
+                      "preset (default, paper) or weights file to start from");
+  command->add_option("--hand-size", options->hand_size, "small, medium or large");
+  command->add_option("--rounds", options->rounds, "coordinate-descent rounds at most (1..100)");
+  commands.add(command, [options](std::ostream& out, std::ostream& err) {
+    return run_fit_fingering(*options, out, err);
+  });
 }
 
 }  // namespace tutti::app

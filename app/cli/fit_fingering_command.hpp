@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct FitFingeringOptions {
@@ -24,5 +26,8 @@ struct FitFingeringOptions {
 
 // Prints the match rate before/after and the time taken; one "error: ..." line on failure.
 int run_fit_fingering(const FitFingeringOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti fit-fingering` and its options to `tutti`, and its run to `commands`.
+void register_fit_fingering_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

@@ -1,5 +1,7 @@
 #include <tutti/cli/info_command.hpp>
 
+#include <CLI/CLI.hpp>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -71,6 +73,20 @@ int run_info(const InfoOptions& options, std::ostream& out, std::ostream& err) {
   const ScoreSummary summary = summarize(*score, format ? music::format_name(*format) : "unknown");
   out << (options.json ? summary_json(summary) : summary_text(summary));
   return kExitOk;
+}
+
+void register_info_command(CLI::App& tutti, Commands& commands) {
+  auto options = std::make_shared<InfoOptions>();
+  CLI::App* command = tutti.add_subcommand("info",
+                                           "Parts, notes, duration, tempo and ranges of a "
+                                           "MIDI, MusicXML (.xml/.musicxml/.mxl) or PIG file");
+  command->add_option("FILE", options->file, "score file")->required();
+  command->add_flag("--json", options->json, "print JSON instead of text");
+  command->add_flag("--schedule", options->schedule,
+                    "FILE is a scene: print the frame (phases, systems, components)");
+  commands.add(command, [options](std::ostream& out, std::ostream& err) {
+    return run_info(*options, out, err);
+  });
 }
 
 }  // namespace tutti::app

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <iosfwd>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct InfoOptions {
@@ -16,5 +18,8 @@ struct InfoOptions {
 
 // Prints the report to `out`, or one "error: ..." line to `err`. Returns the exit code.
 int run_info(const InfoOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti info` and its options to `tutti`, and its run to `commands`.
+void register_info_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

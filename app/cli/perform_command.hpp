@@ -11,6 +11,8 @@
 #include <iosfwd>
 #include <string>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct PerformOptions {
@@ -24,5 +26,8 @@ struct PerformOptions {
 };
 
 int run_perform(const PerformOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti perform` and its options to `tutti`, and its run to `commands`.
+void register_perform_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

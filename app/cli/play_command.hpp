@@ -9,6 +9,8 @@
 #include <iosfwd>
 #include <string>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct PlayOptions {
@@ -30,5 +32,8 @@ struct PlayOptions {
 };
 
 int run_play(const PlayOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti play` and its options to `tutti`, and its run to `commands`.
+void register_play_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

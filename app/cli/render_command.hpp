@@ -8,6 +8,8 @@
 #include <iosfwd>
 #include <string>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct RenderOptions {
@@ -33,5 +35,8 @@ struct RenderOptions {
 };
 
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti render` and its options to `tutti`, and its run to `commands`.
+void register_render_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <iosfwd>
 
+#include <tutti/cli/command.hpp>
+
 namespace tutti::app {
 
 struct SyncReportOptions {
@@ -29,5 +31,8 @@ inline constexpr double kSyncGoalHeard = 0.9;
 inline constexpr int kExitSyncGoalMissed = 1;
 
 int run_sync_report(const SyncReportOptions& options, std::ostream& out, std::ostream& err);
+
+// Adds `tutti sync-report` and its options to `tutti`, and its run to `commands`.
+void register_sync_report_command(CLI::App& tutti, Commands& commands);
 
 }  // namespace tutti::app

@@ -121,7 +121,8 @@ Status VideoPipe::finish() {
   std::error_code ignored;
   std::filesystem::remove(log_, ignored);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
-    return Error{path_.string() + ": ffmpeg not found (install the ffmpeg package)"};
+    return Error{path_.string() + ": ffmpeg not found (install the ffmpeg package)",
+                 ErrorCode::environment};
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     return Error{path_.string() + ": ffmpeg failed" + (message.empty() ? "" : ": " + message)};

@@ -8,7 +8,7 @@
 
 #include <tutti/audio_sync/audio_clock.hpp>
 #include <tutti/audio_sync/audio_sync_system.hpp>
-#include <tutti/components/performer.hpp>
+#include <tutti/performance/performance.hpp>
 #include <tutti/export/glb_builder.hpp>
 
 namespace tutti::gltf_export {
@@ -18,20 +18,12 @@ using model::ModelAsset;
 using model::NodeTransform;
 using nlohmann::json;
 
-// A placement matrix (rotation, positive scale, translation: what build_stage and the mapping
-// files make) as TRS.
-NodeTransform decompose(const glm::mat4& m) {
-  NodeTransform t;
-  t.translation = glm::vec3(m[3]);
-  glm::vec3 axes[3] = {glm::vec3(m[0]), glm::vec3(m[1]), glm::vec3(m[2])};
-  for (int i = 0; i < 3; ++i) t.scale[i] = glm::length(axes[i]);
-  if (glm::dot(glm::cross(axes[0], axes[1]), axes[2]) < 0.0f) t.scale.x = -t.scale.x;
-  glm::mat3 rotation(1.0f);
-  for (int i = 0; i < 3; ++i) {
-    if (t.scale[i] != 0.0f) rotation[i] = axes[i] / t.scale[i];
-  }
-  t.rotation = glm::normalize(glm::quat_cast(rotation));
-  return t;
+NodeTransform node_transform(const performance::Trs& t) {
+  NodeTransform out;
+  out.translation = {t.translation[0], t.translation[1], t.translation[2]};
+  out.rotation = glm::quat(t.rotation[3], t.rotation[0], t.rotation[1], t.rotation[2]);
+  out.scale = {t.scale[0], t.scale[1], t.scale[2]};
+  return out;
 }
 
 json vec_json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
@@ -68,20 +60,19 @@ std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& rang
   clock.source = audio_sync::FrameClock::Source::offline;
   clock.start_s = stage.start_s();
   clock.fps = range.fps;
+  std::vector<performance::ModelPose> poses;
   for (std::int64_t k = 0; k < range.frame_count; ++k) {
     clock.frame = range.first_frame + k;
     stage.world().set_resource(clock);
     stage.run({});
+    // The poses a host reads from tutti::performance (rotations normalised, roots as TRS).
+    performance::read_poses(stage, poses);
     for (std::size_t i = 0; i < instances; ++i) {
-      const stage::PlacedModel& placed = stage.placed(i);
+      const performance::ModelPose& pose = poses[i];
       InstanceSamples& s = samples[i];
-      s.roots.push_back(decompose(placed.root));
-      for (NodeTransform local : placed.pose.local) {
-        local.rotation = glm::normalize(local.rotation);
-        s.locals.push_back(local);
-      }
-      s.weights.insert(s.weights.end(), placed.pose.morph_weights.begin(),
-                       placed.pose.morph_weights.end());
+      s.roots.push_back(node_transform(pose.root));
+      for (const performance::Trs& local : pose.local) s.locals.push_back(node_transform(local));
+      s.weights.insert(s.weights.end(), pose.morph_weights.begin(), pose.morph_weights.end());
     }
   }
   stage.world().set_resource(audio_sync::FrameClock{});
@@ -514,66 +505,6 @@ class Writer {
 };
 
 }  // namespace
-
-std::vector<std::string> clip_names(const stage::Stage& stage) {
-  std::vector<std::string> names;
-  const ecs::World& world = stage.world();
-  for (ecs::Entity performer : stage.performers()) {
-    const auto* about = world.try_get<components::Performer>(performer);
-    const auto* seat = world.try_get<stage::Seat>(performer);
-    std::string name = about != nullptr ? about->name : std::string();
-    if (std::find(names.begin(), names.end(), name) != names.end() && seat != nullptr) {
-      name += " (" + seat->family + ")";
-    }
-    names.push_back(std::move(name));
-  }
-  return names;
-}
-
-std::string clip_name(const stage::Stage& stage, ecs::Entity performer) {
-  const std::vector<std::string> names = clip_names(stage);
-  for (std::size_t i = 0; i < stage.performers().size(); ++i) {
-    if (stage.performers()[i] == performer) return names[i];
-  }
-  return {};
-}
-
-std::vector<InstanceLabel> label_instances(const stage::Stage& stage) {
-  const std::size_t count = stage.instances().size();
-  std::vector<InstanceLabel> labels(count);
-  std::vector<bool> named(count, false);
-  for (std::size_t i = 0; i < count; ++i) {
-    const stage::PlacedModel& placed = stage.placed(i);
-    if (placed.performer.is_null()) continue;
-    const std::string clip = clip_name(stage, placed.performer);
-    std::string name = placed.label;
-    if (placed.after_performer) name = placed.label.empty() ? clip : clip + " " + placed.label;
-    labels[i] = {std::move(name), clip};
-    named[i] = true;
-  }
-  std::set<std::string> taken;
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (named[i]) taken.insert(labels[i].name);
-  }
-  std::map<std::string, int> counts;
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (named[i]) continue;
-    const std::string stem = stem_of(stage.model_files()[stage.placed(i).model]);
-    std::string name;
-    do {
-      name = stem + " " + std::to_string(++counts[stem]);
-    } while (taken.count(name) != 0);
-    taken.insert(name);
-    labels[i].name = name;
-  }
-  return labels;
-}
-
-std::string whole_scene_clip_name(const stage::Stage& stage) {
-  const std::vector<std::string> clips = clip_names(stage);
-  const bool taken = std::find(clips.begin(), clips.end(), "scene") != clips.end();
-  return taken ? "scene (all)" : "scene";
-}
 
 Result<ExportSummary> export_performance(stage::Stage& stage, const ExportRange& range,
                                          const KeyTolerances& tolerances) {

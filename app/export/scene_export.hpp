@@ -21,6 +21,7 @@
 
 #include <tutti/core/result.hpp>
 #include <tutti/export/keyframe_reduction.hpp>
+#include <tutti/performance/model_names.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::gltf_export {
@@ -31,14 +32,11 @@ struct ExportRange {
   std::int64_t frame_count = 0;
 };
 
-// One placed model as it is exported: its node's name and the clip it animates in ("" for a
-// prop that belongs to no performer: it is only in the whole-scene clip).
-struct InstanceLabel {
-  std::string name;  // unique in the file: "Anna", "Anna trumpet", "piano", "chair 2", ...
-  std::string performer;
-};
-// In Stage::instances() order.
-std::vector<InstanceLabel> label_instances(const stage::Stage& stage);
+// The names of the nodes and clips (tutti::performance's names of the models and performers).
+using performance::clip_names;
+using performance::InstanceLabel;
+using performance::label_instances;
+using performance::whole_scene_clip_name;
 
 struct ClipSummary {
   std::string name;
@@ -59,12 +57,5 @@ struct ExportSummary {
 // the last one).
 Result<ExportSummary> export_performance(stage::Stage& stage, const ExportRange& range,
                                          const KeyTolerances& tolerances = {});
-
-// Each performer's clip name, in Stage::performers() order: the performer's name, followed by
-// " (<family>)" when an earlier performer has the same name ("pianist (piano)" after a brass
-// player called "pianist").
-std::vector<std::string> clip_names(const stage::Stage& stage);
-// The name of the whole-scene clip: "scene", or "scene (all)" when a performer is called "scene".
-std::string whole_scene_clip_name(const stage::Stage& stage);
 
 }  // namespace tutti::gltf_export

@@ -30,7 +30,8 @@ Result<std::filesystem::path> find_sound_font(const std::filesystem::path& overr
   }
   return Error{
       "no General MIDI sound font found (looked in /usr/share/sounds/sf2 and "
-      "/usr/share/soundfonts; install Debian's fluid-soundfont-gm or set TUTTI_SOUNDFONT)"};
+      "/usr/share/soundfonts; install Debian's fluid-soundfont-gm or set TUTTI_SOUNDFONT)",
+      ErrorCode::environment};
 }
 
 }  // namespace tutti::audio

@@ -2,7 +2,7 @@
 // Errors as values (vk-bootstrap / ACL style): a reader never throws across a module boundary.
 // An Error's message is a single line that already names the file and the reason, e.g.
 // "song.mid: track 2 at byte 812: delta time longer than 4 bytes". The CLI prints it verbatim
-// after "error: ".
+// after "error: ". Its code says what kind of failure it is.
 
 #include <string>
 #include <utility>
@@ -10,8 +10,17 @@
 
 namespace tutti {
 
+// What kind of failure an Error is, for programs and bindings that act on it (the C API returns
+// it; a command line turns it into an exit code).
+enum class ErrorCode : unsigned char {
+  bad_input = 2,    // a file or value the caller gave is wrong (the default)
+  environment = 3,  // the machine lacks something: a Vulkan device, ffmpeg, a sound font, a display
+  internal = 1,     // tutti's own fault
+};
+
 struct Error {
   std::string message;
+  ErrorCode code = ErrorCode::bad_input;
 };
 
 template <typename T>

@@ -177,7 +177,7 @@ std::string describe_all(const std::vector<VulkanDeviceInfo>& infos,
 Result<std::size_t> select_device(const std::vector<VulkanDeviceInfo>& infos,
                                   const VulkanContextOptions& options) {
   const std::string& selector = options.device;
-  if (infos.empty()) return Error{kNoDevice};
+  if (infos.empty()) return Error{kNoDevice, ErrorCode::environment};
   const bool by_index =
       !selector.empty() && std::all_of(selector.begin(), selector.end(), [](char c) {
         return std::isdigit(static_cast<unsigned char>(c)) != 0;
@@ -208,17 +208,18 @@ Result<std::size_t> select_device(const std::vector<VulkanDeviceInfo>& infos,
     if (options.swapchain) needs += ", VK_KHR_swapchain";
     if (options.can_present) needs += ", a graphics queue that can present";
     return Error{"no usable Vulkan device (need " + needs + "); found " +
-                 describe_all(infos, options)};
+                 describe_all(infos, options), ErrorCode::environment};
   }
   return Error{"no Vulkan device matches \"" + selector +
-               "\"; available: " + describe_all(infos, options)};
+               "\"; available: " + describe_all(infos, options), ErrorCode::environment};
 }
 
 Result<VkInstance> create_instance(const VulkanContextOptions& options, ValidationLog* log) {
   std::uint32_t loader_version = VK_API_VERSION_1_0;
   if (vkEnumerateInstanceVersion(&loader_version) != VK_SUCCESS ||
       loader_version < VK_API_VERSION_1_3) {
-    return Error{"the Vulkan loader is older than 1.3 (install libvulkan1 >= 1.3)"};
+    return Error{"the Vulkan loader is older than 1.3 (install libvulkan1 >= 1.3)",
+                 ErrorCode::environment};
   }
   VkApplicationInfo app = vk_struct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
   app.pApplicationName = options.application_name.c_str();
@@ -253,7 +254,8 @@ Result<VkInstance> create_instance(const VulkanContextOptions& options, Validati
   for (const std::string& name : options.instance_extensions) {
     if (!instance_extension_available(name)) {
       return Error{"the Vulkan instance extension " + name +
-                   " is not available (a window needs the loader's surface extensions)"};
+                       " is not available (a window needs the loader's surface extensions)",
+                   ErrorCode::environment};
     }
     if (std::none_of(extensions.begin(), extensions.end(),
                      [&](const char* enabled) { return name == enabled; })) {
@@ -266,7 +268,9 @@ Result<VkInstance> create_instance(const VulkanContextOptions& options, Validati
   info.ppEnabledExtensionNames = extensions.data();
   VkInstance instance = VK_NULL_HANDLE;
   VkResult r = vkCreateInstance(&info, nullptr, &instance);
-  if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return Error{kNoDevice};  // no ICD at all
+  if (r == VK_ERROR_INCOMPATIBLE_DRIVER) {
+    return Error{kNoDevice, ErrorCode::environment};  // no ICD at all
+  }
   if (r != VK_SUCCESS) return vk_error("vkCreateInstance", r);
   return instance;
 }

@@ -55,7 +55,8 @@ Result<std::unique_ptr<Window>> Window::create(const WindowOptions& options) {
   std::unique_ptr<Window> window(new Window());
   window->glfw_initialised_ = true;  // released by ~Window from here on
   if (glfwVulkanSupported() != GLFW_TRUE) {
-    return Error{"cannot open a Vulkan window: GLFW found no Vulkan loader; " + last_glfw_error()};
+    return Error{"cannot open a Vulkan window: GLFW found no Vulkan loader; " + last_glfw_error(),
+                 ErrorCode::environment};
   }
   glfwDefaultWindowHints();
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);  // Vulkan draws; no OpenGL context
@@ -65,7 +66,7 @@ Result<std::unique_ptr<Window>> Window::create(const WindowOptions& options) {
       glfwCreateWindow(static_cast<int>(options.width), static_cast<int>(options.height),
                        options.title.c_str(), nullptr, nullptr);
   if (window->window_ == nullptr) {
-    return Error{"cannot open a window: " + last_glfw_error()};
+    return Error{"cannot open a window: " + last_glfw_error(), ErrorCode::environment};
   }
   return window;
 }

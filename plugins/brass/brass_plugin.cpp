@@ -15,6 +15,7 @@
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/components/slide.hpp>
+#include <tutti/components/transform.hpp>
 #include <tutti/components/valve.hpp>
 #include <tutti/ensemble_variation/ensemble_variation_system.hpp>
 #include <tutti/stage/model_binding.hpp>
@@ -159,7 +160,7 @@ void BrassPlugin::add_systems(ecs::Schedule& schedule) const {
 Status BrassPlugin::build(stage::StageBuilder& builder) const {
   const scene::Scene& scene = builder.scene();
   if (scene.performers.empty()) return Status::success();
-  auto data = load_brass_planning_data();
+  auto data = load_brass_planning_data(builder.content_dir());
   if (!data) return data.error();
   // The performer rig is not generated yet (content/generator/README.md): until it is, players
   // are their instruments at mouth height.
@@ -183,6 +184,8 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
     const ecs::Entity player = builder.add_performer(
         name(), seat, components::Performer{performer.name, performer.seed});
     claim_notes(builder, performer.music_file, plan, player);
+    world.add<components::Transform>(
+        player, stage::stage_transform(performer.position_m, performer.facing_deg));
     world.add<brass::BrassPlayerMotionHandle>(player, brass::BrassPlayerMotionHandle{plan.player});
     world.add<components::Mouth>(player);
     world.add<components::Breath>(player);

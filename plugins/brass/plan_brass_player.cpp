@@ -28,12 +28,12 @@ std::string brass_plan_key(const scene::Scene& scene, const scene::Performer& pe
 
 }  // namespace
 
-Result<BrassPlanningData> load_brass_planning_data() {
-  auto weights = brass::load_planner_weights();
+Result<BrassPlanningData> load_brass_planning_data(const std::filesystem::path& content_dir) {
+  auto weights = brass::load_planner_weights((content_dir / "brass" / "planner.json").string());
   if (!weights) return weights.error();
-  auto motion = brass::load_brass_motion_params();
+  auto motion = brass::load_brass_motion_params((content_dir / "brass" / "motion.json").string());
   if (!motion) return motion.error();
-  auto breath = brass::load_breath_params();
+  auto breath = brass::load_breath_params(content_dir / "brass" / "breath.json");
   if (!breath) return breath.error();
   return BrassPlanningData{std::move(*weights), std::move(*motion), std::move(*breath)};
 }
@@ -54,7 +54,7 @@ Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat
       return *previous;
     }
   }
-  auto instrument = brass::load_instrument_by_id(performer.instrument);
+  auto instrument = brass::load_instrument_by_id(performer.instrument, builder.content_dir());
   if (!instrument) return instrument.error();
   plan.instrument = std::make_shared<const brass::Instrument>(std::move(*instrument));
   const int part = scene::find_part(score, performer.part);

@@ -20,7 +20,8 @@ struct BrassPlanningData {
   brass::BreathParams breath;
 };
 
-Result<BrassPlanningData> load_brass_planning_data();
+// From content_dir/brass.
+Result<BrassPlanningData> load_brass_planning_data(const std::filesystem::path& content_dir);
 
 // The plan of builder.scene().performers[seat].
 Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat,

@@ -7,11 +7,13 @@
 #include <tutti/components/hand.hpp>
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
+#include <tutti/components/transform.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/key_action/key_action_params.hpp>
 #include <tutti/piano/plan_pianist.hpp>
 #include <tutti/piano/pose_piano.hpp>
 #include <tutti/stage/model_binding.hpp>
+#include <tutti/stage/performer_rig.hpp>
 
 namespace tutti::piano_family {
 namespace {
@@ -152,6 +154,8 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
   const ecs::Entity performer =
       builder.add_performer(name(), 0, components::Performer{"pianist", pianist.seed});
   claim_notes(builder, pianist.music_file, plan, performer, pianist.sound_from_keys);
+  world.add<components::Transform>(
+      performer, stage::stage_transform(pianist.position_m, pianist.facing_deg));
   world.add<finger_motion::PianistMotionHandle>(performer,
                                                 finger_motion::PianistMotionHandle{plan.motion});
   PianoRig rig;

@@ -30,12 +30,16 @@ Result<Instrument> load_instrument(const std::filesystem::path& file) {
 }
 
 Result<Instrument> load_instrument_by_id(std::string_view id) {
+  return load_instrument_by_id(id, content::default_content_dir());
+}
+
+Result<Instrument> load_instrument_by_id(std::string_view id,
+                                         const std::filesystem::path& content_dir) {
   const bool plain = !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
   });
   if (!plain) return Error{"\"" + std::string(id) + "\" is not an instrument id"};
-  return load_instrument(content::default_content_dir() / "instruments" /
-                         (std::string(id) + ".json"));
+  return load_instrument(content_dir / "instruments" / (std::string(id) + ".json"));
 }
 
 Result<std::vector<Instrument>> load_all_instruments() {

@@ -78,6 +78,9 @@ struct Instrument {
 Result<Instrument> load_instrument(const std::filesystem::path& file);
 // content/instruments/<id>.json (content dir: content/content_dir.hpp).
 Result<Instrument> load_instrument_by_id(std::string_view id);
+// The same from content_dir/instruments.
+Result<Instrument> load_instrument_by_id(std::string_view id,
+                                         const std::filesystem::path& content_dir);
 // Every *.json in content/instruments, sorted by id.
 Result<std::vector<Instrument>> load_all_instruments();
 

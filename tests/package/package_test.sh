@@ -42,6 +42,11 @@ cmakedir=$prefix/lib/cmake/tutti
 for file in tuttiConfig.cmake tuttiConfigVersion.cmake tuttiTargets.cmake; do
   [ -f "$cmakedir/$file" ] || fail "missing $cmakedir/$file"
 done
+# The programs, the C API and its header.
+for file in bin/tutti bin/tutti-editor lib/libtutti.so include/tutti/tutti.h; do
+  [ -e "$prefix/$file" ] || fail "missing $prefix/$file"
+done
+"$prefix/bin/tutti" --version >/dev/null || fail "the installed bin/tutti does not run"
 # Relocatable: no path of this machine's trees in the CMake files.
 if grep -rnF -e "$src" -e "$build" "$cmakedir"; then
   fail "the installed CMake files mention the source or build tree (above)"
@@ -125,4 +130,65 @@ if grep -q '\*\*\*Skipped' "$tmp/run.log"; then
 fi
 grep -q "embed: 5 frames of $content/scenes/piano.json" "$tmp/run.log" ||
   fail "the consumer did not render the installed scene"
+
+# 4b. The installed program finds the installed data by itself (no environment variables), with
+#     the trees hidden: it stages the installed quartet and prints its frame.
+if unshare --user --map-root-user --mount true 2>/dev/null; then
+  unshare --user --map-root-user --mount -- sh -c \
+    'mount -t tmpfs tutti-hidden "$1" && mount -t tmpfs tutti-hidden "$2" && shift 2 && exec "$@"' \
+    sh "$build" "$src" env -u TUTTI_CONTENT_DIR -u TUTTI_ASSET_DIR "$prefix/bin/tutti" info \
+    --schedule "$content/scenes/quartet.json" >"$tmp/schedule.log" 2>&1 ||
+    { cat "$tmp/schedule.log"; fail "the installed bin/tutti did not stage the installed quartet"; }
+  grep -q "audio_sync" "$tmp/schedule.log" || fail "bin/tutti info --schedule printed no schedule"
+  echo "installed bin/tutti staged share/tutti/content/scenes/quartet.json on its own"
+fi
+
+# 5. tutti::performance alone, on a machine without Vulkan: the Vulkan headers and loader hidden
+#    (an empty folder over /usr/include/vulkan, /dev/null over the loader's file) along with the
+#    trees, a host that links only tutti::performance (tests/package/performance_consumer) is
+#    configured, built and run: it writes 4 s of Trumpet 1's body as BVH.
+mkdir "$tmp/performance-consumer"
+cp "$src/tests/package/performance_consumer/CMakeLists.txt" "$src/performance/examples/write_bvh.cpp" \
+  "$tmp/performance-consumer/"
+loader=$(ls /usr/lib/*/libvulkan.so.1 /usr/lib/libvulkan.so.1 2>/dev/null | head -1 || true)
+loader=${loader:+$(readlink -f "$loader")}
+cat > "$tmp/no_vulkan.sh" <<SCRIPT
+set -e
+[ -f /usr/include/vulkan/vulkan.h ] && { echo "Vulkan headers still visible" >&2; exit 1; }
+"$cmake" -S "$tmp/performance-consumer" -B "$tmp/performance-build" -G "$generator" \\
+  -DCMAKE_BUILD_TYPE="$build_type" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$prefix"
+"$cmake" --build "$tmp/performance-build"
+"$ctest" --test-dir "$tmp/performance-build" --output-on-failure
+SCRIPT
+start=$SECONDS
+set +e
+if unshare --user --map-root-user --mount true 2>/dev/null; then
+  echo "building and running the performance consumer with Vulkan hidden ($loader)"
+  unshare --user --map-root-user --mount -- sh -c '
+    mount -t tmpfs tutti-hidden "$1" && mount -t tmpfs tutti-hidden "$2" || exit 1
+    if [ -d /usr/include/vulkan ]; then mount -t tmpfs no-vulkan /usr/include/vulkan || exit 1; fi
+    if [ -n "$3" ]; then mount --bind /dev/null "$3" || exit 1; fi
+    exec sh "$4"' sh "$build" "$src" "$loader" "$tmp/no_vulkan.sh" >"$tmp/performance.log" 2>&1
+  status=$?
+else
+  echo "building and running the performance consumer (no namespaces: Vulkan stays visible)"
+  sh "$tmp/no_vulkan.sh" >"$tmp/performance.log" 2>&1
+  status=$?
+fi
+set -e
+cat "$tmp/performance.log"
+[ "$status" -eq 0 ] || fail "the performance consumer failed (exit $status)"
+grep -q "tutti: performance TRUE, sound .*, render FALSE" "$tmp/performance.log" ||
+  [ -z "$loader" ] || fail "the performance consumer's machine still had Vulkan"
+if readelf -d "$tmp/performance-build/write_bvh" | grep -q "libvulkan"; then
+  fail "write_bvh needs libvulkan"
+fi
+bvh=$tmp/performance-build/trumpet.bvh
+[ -s "$bvh" ] || fail "no BVH written"
+joints=$(grep -c "CHANNELS 6" "$bvh")
+frames=$(sed -n 's/^Frames: //p' "$bvh")
+[ "$frames" = 120 ] || fail "the BVH has $frames frames, not 120"
+values=$(tail -1 "$bvh" | wc -w)
+[ "$values" -eq $((joints * 6)) ] || fail "a BVH frame has $values values for $joints joints"
+echo "performance consumer: $joints joints x $frames frames of BVH, no Vulkan, $((SECONDS - start)) s"
 echo "package test: passed"

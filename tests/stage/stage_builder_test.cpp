@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
+#include <tutti/components/transform.hpp>
 #include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
 
@@ -107,6 +109,16 @@ TEST(StageBuilder, EveryNoteIsAnEntityWithItsPerformer) {
   }
   EXPECT_EQ(claimed, score.notes.size()) << "each of the four parts has its player";
   EXPECT_TRUE(stage.note_entity(0, score.notes.size()).is_null());
+  // Each player stands where the scene says (Transform: mm, a turn about +Y).
+  for (std::size_t seat = 0; seat < scene->performers.size(); ++seat) {
+    const auto& where =
+        stage.world().get<components::Transform>(stage.find_performer("brass", seat));
+    EXPECT_DOUBLE_EQ(where.x_mm, scene->performers[seat].position_m.x * 1000.0);
+    EXPECT_DOUBLE_EQ(where.z_mm, scene->performers[seat].position_m.z * 1000.0);
+    const double turned =
+        2.0 * std::atan2(where.rotation.y, where.rotation.w) * 180.0 / 3.14159265358979323846;
+    EXPECT_NEAR(turned, scene->performers[seat].facing_deg, 1e-9);
+  }
   EXPECT_TRUE(stage.note_entity(1, 0).is_null());
 }
 

@@ -1,0 +1,12 @@
+#pragma once
+// Every `tutti` subcommand, in the order `tutti --help` lists them (commands.cpp). A new
+// subcommand is a <name>_command.hpp/.cpp with its register_<name>_command, and one line there.
+
+#include <tutti/cli/command.hpp>
+
+namespace tutti::app {
+
+// Adds each subcommand with its options to `tutti` and its run to `commands`.
+void register_commands(CLI::App& tutti, Commands& commands);
+
+}  // namespace tutti::app

@@ -1,0 +1,130 @@
+/* tutti's C API: a scene's performance for any engine or language (C#, Python with ctypes, Godot
+ * GDExtension, Unreal plugins). Opaque handles, plain structs, status codes; no Vulkan, window or
+ * sound device. The library is libtutti.so (CMake: tutti::c).
+ *
+ *   tutti_performance* p = NULL;
+ *   if (tutti_open("quartet.json", NULL, &p) != TUTTI_OK) puts(tutti_last_error());
+ *   tutti_sample(p, 12.5);                      // pose everything at 12.5 s of the music
+ *   tutti_model_pose(p, m, nodes, count);       // model m's local TRS, node by node
+ *   tutti_close(p);
+ *
+ * Strings returned are owned by the performance (or static) and live until tutti_close. A
+ * performance is used by one thread at a time; different performances are independent.
+ * Indices are 0-based; an index out of range gives TUTTI_INVALID_ARGUMENT (or NULL / -1). */
+#ifndef TUTTI_TUTTI_H
+#define TUTTI_TUTTI_H
+
+#include <stdint.h>
+
+#if defined(_WIN32)
+#define TUTTI_API __declspec(dllexport)
+#else
+#define TUTTI_API __attribute__((visibility("default")))
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct tutti_performance tutti_performance;
+
+typedef enum tutti_status {
+  TUTTI_OK = 0,
+  TUTTI_INTERNAL = 1,          /* tutti's own fault */
+  TUTTI_BAD_INPUT = 2,         /* a file or value given is wrong (the message names it) */
+  TUTTI_ENVIRONMENT = 3,       /* the machine lacks something tutti needs */
+  TUTTI_INVALID_ARGUMENT = 4   /* a null handle or pointer, an index out of range, a short buffer */
+} tutti_status;
+
+typedef struct tutti_options {
+  const char* content_dir; /* NULL or "": $TUTTI_CONTENT_DIR, else the content tutti was built with */
+  const char* asset_dir;   /* NULL or "": $TUTTI_ASSET_DIR, else the generated models it was built with */
+  double contact_step_s;   /* grid for key / valve / slide contact events; 0 = none */
+} tutti_options;
+
+/* glTF conventions: metres, a unit quaternion (x, y, z, w), scale. */
+typedef struct tutti_trs {
+  float translation[3];
+  float rotation[4];
+  float scale[3];
+} tutti_trs;
+
+typedef enum tutti_event_kind {
+  TUTTI_NOTE_ON = 0,       /* value: MIDI key, as heard */
+  TUTTI_NOTE_OFF = 1,      /* value: MIDI key */
+  TUTTI_KEY_DOWN = 2,      /* a piano key reaches its bed; value: MIDI key */
+  TUTTI_KEY_UP = 3,        /* value: MIDI key */
+  TUTTI_VALVE_DOWN = 4,    /* value: valve number, 1-based */
+  TUTTI_VALVE_UP = 5,      /* value: valve number */
+  TUTTI_SLIDE_ARRIVES = 6, /* value: the slide position (1..7) */
+  TUTTI_BREATH_START = 7,  /* value: the breath's index */
+  TUTTI_BREATH_END = 8,    /* value: the breath's index */
+  TUTTI_CUE = 9            /* the entrance a cue leads to; value: 1 = gives it, 0 = answers */
+} tutti_event_kind;
+
+typedef struct tutti_event {
+  double t_s;            /* seconds of the music */
+  int32_t kind;          /* tutti_event_kind */
+  int32_t performer;     /* index of the performer */
+  int32_t value;
+  int32_t reserved;      /* 0 */
+} tutti_event;
+
+TUTTI_API const char* tutti_version(void);
+/* The message of this thread's last failed call ("" when none): one line naming the file and
+ * what is wrong. */
+TUTTI_API const char* tutti_last_error(void);
+TUTTI_API const char* tutti_event_kind_name(int32_t kind);
+TUTTI_API void tutti_default_options(tutti_options* options);
+
+/* Loads, plans and stages a scene file. `options` may be NULL. */
+TUTTI_API tutti_status tutti_open(const char* scene_file, const tutti_options* options,
+                                  tutti_performance** out);
+TUTTI_API void tutti_close(tutti_performance* performance);
+
+TUTTI_API double tutti_start_s(const tutti_performance* performance);
+TUTTI_API double tutti_end_s(const tutti_performance* performance);
+
+TUTTI_API int32_t tutti_performer_count(const tutti_performance* performance);
+TUTTI_API const char* tutti_performer_name(const tutti_performance* performance, int32_t performer);
+TUTTI_API const char* tutti_performer_family(const tutti_performance* performance,
+                                             int32_t performer);
+TUTTI_API const char* tutti_performer_instrument(const tutti_performance* performance,
+                                                 int32_t performer);
+
+/* Every model on stage: the performers' bodies, instruments and hands, and the scenery. */
+TUTTI_API int32_t tutti_model_count(const tutti_performance* performance);
+TUTTI_API const char* tutti_model_name(const tutti_performance* performance, int32_t model);
+TUTTI_API const char* tutti_model_file(const tutti_performance* performance, int32_t model);
+/* The performer the model belongs to, -1 for scenery (or out of range). */
+TUTTI_API int32_t tutti_model_performer(const tutti_performance* performance, int32_t model);
+TUTTI_API int32_t tutti_node_count(const tutti_performance* performance, int32_t model);
+TUTTI_API const char* tutti_node_name(const tutti_performance* performance, int32_t model,
+                                      int32_t node);
+TUTTI_API int32_t tutti_node_parent(const tutti_performance* performance, int32_t model,
+                                    int32_t node);
+TUTTI_API int32_t tutti_morph_count(const tutti_performance* performance, int32_t model);
+TUTTI_API const char* tutti_morph_name(const tutti_performance* performance, int32_t model,
+                                       int32_t morph);
+
+/* Poses everything at t_s (seconds of the music); the getters below read that pose. */
+TUTTI_API tutti_status tutti_sample(tutti_performance* performance, double t_s);
+TUTTI_API tutti_status tutti_model_root(const tutti_performance* performance, int32_t model,
+                                        tutti_trs* out);
+/* Writes tutti_node_count(model) transforms; `capacity` must be at least that. */
+TUTTI_API tutti_status tutti_model_pose(const tutti_performance* performance, int32_t model,
+                                        tutti_trs* out, int32_t capacity);
+/* Writes tutti_morph_count(model) weights; `capacity` must be at least that. */
+TUTTI_API tutti_status tutti_model_morph_weights(const tutti_performance* performance,
+                                                 int32_t model, float* out, int32_t capacity);
+
+/* The events with from_s <= t < to_s, in time order: writes up to `capacity` of them into `out`
+ * (which may be NULL when capacity is 0) and returns how many there are (-1 on a null handle). */
+TUTTI_API int32_t tutti_events(const tutti_performance* performance, double from_s, double to_s,
+                               tutti_event* out, int32_t capacity);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* TUTTI_TUTTI_H */

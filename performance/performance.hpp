@@ -1,0 +1,141 @@
+#pragma once
+// tutti::performance — a scene's performance for any engine or renderer, with no Vulkan, window or
+// sound device. A host opens a scene once (it is loaded, planned and staged with the default
+// instrument families) and then asks, for any time t, in any order:
+//
+//   auto performance = performance::Performance::open("content/scenes/quartet.json");
+//   performance::Sample sample;
+//   every frame: (*performance)->sample(music_time_s, sample);
+//     sample.models[m].local[n]   model m's node n (models()[m].nodes[n], the model's own node
+//                                 names), local translation / rotation / scale (glTF conventions)
+//     sample.models[m].morph_weights[k]   morph target models()[m].morphs[k]
+//     sample.events[p]            performer p's events around t: notes on and off, keys, valves
+//                                 and slides reaching their stops, breaths, cues
+//
+// sample(t) is a pure function of the plans and t (seekable, shardable, the same bytes every
+// time), and allocation-free once `out` has its sizes. `tutti export` writes exactly these poses.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <tutti/core/result.hpp>
+#include <tutti/scene/scene.hpp>
+#include <tutti/stage/stage.hpp>
+
+namespace tutti::performance {
+
+struct Options {
+  // Where tutti's data and generated models are: empty = $TUTTI_CONTENT_DIR / $TUTTI_ASSET_DIR,
+  // else the folders tutti was built with.
+  std::filesystem::path content_dir;
+  std::filesystem::path asset_dir;
+  // The grid on which key, valve and slide contacts are looked for (their times are placed
+  // between grid points); 0 = no contact events.
+  double contact_step_s = 0.001;
+};
+
+// A local transform in glTF's conventions: metres, a unit quaternion (x, y, z, w), scale.
+struct Trs {
+  std::array<float, 3> translation{0.0f, 0.0f, 0.0f};
+  std::array<float, 4> rotation{0.0f, 0.0f, 0.0f, 1.0f};
+  std::array<float, 3> scale{1.0f, 1.0f, 1.0f};
+};
+
+struct ModelInfo {
+  std::string name;            // unique: "Trumpet 1", "Trumpet 1 trumpet", "piano", "chair 1"
+  std::string file;            // the glTF it was loaded from
+  std::int32_t performer = -1;  // index into performers(); -1 = scenery (floor, chairs, stands)
+  std::vector<std::string> nodes;     // the model's own node names, in its file's order
+  std::vector<std::int32_t> parents;  // per node, -1 = a root
+  std::vector<std::string> morphs;    // morph targets of all its meshes, in order
+};
+
+struct PerformerInfo {
+  std::string name;
+  std::string family;      // "brass", "piano"
+  std::string instrument;  // "trumpet_bb", "trombone_tenor", ..., "piano"
+  std::vector<std::size_t> models;  // indices into models()
+};
+
+enum class EventKind : std::uint8_t {
+  note_on,        // value: MIDI key; as heard
+  note_off,       // value: MIDI key
+  key_down,       // a piano key reaches its bed; value: MIDI key
+  key_up,         // it is back up; value: MIDI key
+  valve_down,     // value: valve number, 1-based
+  valve_up,       // value: valve number
+  slide_arrives,  // the slide stops; value: the position, rounded (1..7)
+  breath_start,   // inhaling starts; value: the breath's index
+  breath_end,     // value: the breath's index
+  cue,            // the entrance a cue leads to (E); value: 1 = gives it (the lead), 0 = answers
+};
+const char* event_kind_name(EventKind kind);
+
+struct Event {
+  double t_s = 0.0;  // seconds of the music
+  EventKind kind = EventKind::note_on;
+  std::int32_t performer = 0;  // index into performers()
+  std::int32_t value = 0;
+};
+
+struct ModelPose {
+  Trs root;  // where the model is on the stage (the scene's frame: metres, +Y up)
+  std::vector<Trs> local;
+  std::vector<float> morph_weights;
+};
+
+struct Sample {
+  double t_s = 0.0;
+  std::vector<ModelPose> models;          // one per models()
+  std::vector<std::vector<Event>> events;  // one list per performer, in time order
+};
+
+class Performance {
+ public:
+  // Loads the scene file and stages it.
+  static Result<std::unique_ptr<Performance>> open(const std::filesystem::path& scene_file,
+                                                   const Options& options = {});
+  // Stages a scene already loaded.
+  static Result<std::unique_ptr<Performance>> stage(const scene::Scene& scene,
+                                                    const Options& options = {});
+
+  double start_s() const { return stage_->start_s(); }
+  double end_s() const { return stage_->end_s(); }
+  const std::vector<PerformerInfo>& performers() const { return performers_; }
+  const std::vector<ModelInfo>& models() const { return models_; }
+  // Every event of the piece, in time order (ties: by performer, then kind).
+  const std::vector<Event>& events() const { return events_; }
+  // The events with from_s <= t_s < to_s.
+  std::span<const Event> events_between(double from_s, double to_s) const;
+  // Planning diagnostics worth showing (notes out of range, ...).
+  const std::vector<std::string>& notes() const { return stage_->notes(); }
+
+  // Poses everything at t_s and fills `out`: every model's pose, and each performer's events
+  // within `events_window_s` of t_s (before or after).
+  void sample(double t_s, Sample& out, double events_window_s = 0.5);
+
+  // The staged scene under it (the renderer and the editor work on it).
+  stage::Stage& stage() { return *stage_; }
+  const stage::Stage& stage() const { return *stage_; }
+
+ private:
+  Performance() = default;
+  Status init(const Options& options);
+
+  std::unique_ptr<stage::Stage> stage_;
+  std::vector<PerformerInfo> performers_;
+  std::vector<ModelInfo> models_;
+  std::vector<Event> events_;
+};
+
+// The models' poses as the stage's last run left them (what sample(t) and `tutti export` read):
+// rotations normalised, roots decomposed into TRS. `out` is resized to the stage's instances.
+void read_poses(const stage::Stage& stage, std::vector<ModelPose>& out);
+
+}  // namespace tutti::performance
