@@ -1,6 +1,5 @@
 #include <tutti/cli/brass_command.hpp>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -257,21 +256,20 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
   return kExitOk;
 }
 
-void register_brass_command(CLI::App& tutti, Commands& commands) {
+void register_brass_command(Commands& commands) {
   auto options = std::make_shared<BrassOptions>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "brass",
       "How every brass player of a score plays: valves or slide position per note (alternates "
       "marked), mouth tension, breaths, notes out of range");
-  command->add_option("FILE", options->file, "score file")->required();
-  command->add_option("--part", options->part, "part name (or part of it) or 1-based index");
-  command->add_option("--voice", options->voice, "1-based player within the part (default: all)");
-  command->add_option("--instrument", options->instrument,
-                      "instrument id from content/instruments (default: detected)");
-  command->add_flag("--json", options->json, "print JSON instead of text");
-  commands.add(command, [options](std::ostream& out, std::ostream& err) {
-    return run_brass(*options, out, err);
-  });
+  command.option("FILE", options->file, "score file").required();
+  command.option("--part", options->part, "part name (or part of it) or 1-based index");
+  command.option("--voice", options->voice, "1-based player within the part (default: all)");
+  command.option("--instrument", options->instrument,
+                 "instrument id from content/instruments (default: detected)");
+  command.flag("--json", options->json, "print JSON instead of text");
+  command.on_run(
+      [options](std::ostream& out, std::ostream& err) { return run_brass(*options, out, err); });
 }
 
 }  // namespace tutti::app

@@ -23,6 +23,6 @@ struct BrassOptions {
 int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti brass` and its options to `tutti`, and its run to `commands`.
-void register_brass_command(CLI::App& tutti, Commands& commands);
+void register_brass_command(Commands& commands);
 
 }  // namespace tutti::app

@@ -1,6 +1,5 @@
-#include <tutti/cli/commands.hpp>
-
 #include <tutti/cli/brass_command.hpp>
+#include <tutti/cli/commands.hpp>
 #include <tutti/cli/concat_command.hpp>
 #include <tutti/cli/export_command.hpp>
 #include <tutti/cli/fingering_command.hpp>
@@ -13,17 +12,17 @@
 
 namespace tutti::app {
 
-void register_commands(CLI::App& tutti, Commands& commands) {
-  register_info_command(tutti, commands);
-  register_concat_command(tutti, commands);
-  register_export_command(tutti, commands);
-  register_perform_command(tutti, commands);
-  register_fingering_command(tutti, commands);
-  register_fit_fingering_command(tutti, commands);
-  register_brass_command(tutti, commands);
-  register_render_command(tutti, commands);
-  register_sync_report_command(tutti, commands);
-  register_play_command(tutti, commands);
+void register_commands(Commands& commands) {
+  register_info_command(commands);
+  register_concat_command(commands);
+  register_export_command(commands);
+  register_perform_command(commands);
+  register_fingering_command(commands);
+  register_fit_fingering_command(commands);
+  register_brass_command(commands);
+  register_render_command(commands);
+  register_sync_report_command(commands);
+  register_play_command(commands);
 }
 
 }  // namespace tutti::app

@@ -6,7 +6,7 @@
 
 namespace tutti::app {
 
-// Adds each subcommand with its options to `tutti` and its run to `commands`.
-void register_commands(CLI::App& tutti, Commands& commands);
+// Adds each subcommand, with its options and its run, to `commands`.
+void register_commands(Commands& commands);
 
 }  // namespace tutti::app

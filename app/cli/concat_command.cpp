@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <fstream>
 #include <memory>
@@ -164,25 +163,25 @@ int run_concat(const ConcatOptions& o, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
-void register_concat_command(CLI::App& tutti, Commands& commands) {
+void register_concat_command(Commands& commands) {
   // The options, and the flags that turn one of them off (applied when the command runs).
   struct State {
     ConcatOptions options;
     bool no_audio = false;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "concat",
       "Join slices of one render (tutti render SCENE --frames A:B --no-audio -o slice.mp4) into "
       "one video: frames copied exactly, the sound rendered once for the whole range");
-  command->add_option("SCENE", state->options.scene, "the scene the slices were rendered from")
-      ->required();
-  command->add_option("SLICES", state->options.slices, "slice .mp4 files, any order")->required();
-  command->add_option("-o,--output", state->options.output, "OUT.mp4")->required();
-  command->add_option("--soundfont", state->options.soundfont, "General MIDI .sf2");
-  command->add_option("--assets", state->options.assets, "folder of the generated .glb assets");
-  command->add_flag("--no-audio", state->no_audio, "no sound track");
-  commands.add(command, [state](std::ostream& out, std::ostream& err) {
+  command.option("SCENE", state->options.scene, "the scene the slices were rendered from")
+      .required();
+  command.option("SLICES", state->options.slices, "slice .mp4 files, any order").required();
+  command.option("-o,--output", state->options.output, "OUT.mp4").required();
+  command.option("--soundfont", state->options.soundfont, "General MIDI .sf2");
+  command.option("--assets", state->options.assets, "folder of the generated .glb assets");
+  command.flag("--no-audio", state->no_audio, "no sound track");
+  command.on_run([state](std::ostream& out, std::ostream& err) {
     state->options.audio = !state->no_audio;
     return run_concat(state->options, out, err);
   });

@@ -27,6 +27,6 @@ struct ConcatOptions {
 int run_concat(const ConcatOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti concat` and its options to `tutti`, and its run to `commands`.
-void register_concat_command(CLI::App& tutti, Commands& commands);
+void register_concat_command(Commands& commands);
 
 }  // namespace tutti::app

@@ -1,6 +1,5 @@
 #include <tutti/cli/export_command.hpp>
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -98,22 +97,21 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
-void register_export_command(CLI::App& tutti, Commands& commands) {
+void register_export_command(Commands& commands) {
   auto options = std::make_shared<ExportOptions>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "export",
       "Write the scene as binary glTF 2.0: characters, hands, piano, instruments and props with "
       "the performance baked as animation (one clip per performer plus the whole scene)");
-  command->add_option("SCENE", options->scene, "scene file (.json)")->required();
-  command->add_option("-o,--output", options->output, "performance.glb")->required();
-  command->add_option("--fps", options->fps, "keyframe rate (default: the scene's)");
-  command->add_option("--seconds", options->seconds, "A:B: the frames whose times are in [A, B)");
-  command->add_option("--frames", options->frames, "A:B: frames A (inclusive) to B (exclusive)");
-  command->add_option("--assets", options->assets, "folder of the generated .glb assets");
-  command->add_flag("--json", options->json_summary, "print the summary as JSON");
-  commands.add(command, [options](std::ostream& out, std::ostream& err) {
-    return run_export(*options, out, err);
-  });
+  command.option("SCENE", options->scene, "scene file (.json)").required();
+  command.option("-o,--output", options->output, "performance.glb").required();
+  command.option("--fps", options->fps, "keyframe rate (default: the scene's)");
+  command.option("--seconds", options->seconds, "A:B: the frames whose times are in [A, B)");
+  command.option("--frames", options->frames, "A:B: frames A (inclusive) to B (exclusive)");
+  command.option("--assets", options->assets, "folder of the generated .glb assets");
+  command.flag("--json", options->json_summary, "print the summary as JSON");
+  command.on_run(
+      [options](std::ostream& out, std::ostream& err) { return run_export(*options, out, err); });
 }
 
 }  // namespace tutti::app

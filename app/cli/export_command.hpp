@@ -26,6 +26,6 @@ struct ExportOptions {
 int run_export(const ExportOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti export` and its options to `tutti`, and its run to `commands`.
-void register_export_command(CLI::App& tutti, Commands& commands);
+void register_export_command(Commands& commands);
 
 }  // namespace tutti::app

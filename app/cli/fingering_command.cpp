@@ -1,6 +1,5 @@
 #include <tutti/cli/fingering_command.hpp>
 
-#include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -167,30 +166,29 @@ int run_fingering(const FingeringOptions& o, std::ostream& out, std::ostream& er
   return kExitOk;
 }
 
-void register_fingering_command(CLI::App& tutti, Commands& commands) {
+void register_fingering_command(Commands& commands) {
   auto options = std::make_shared<FingeringOptions>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "fingering",
       "Plan piano fingering and hand paths for a MIDI, MusicXML or PIG file; write MusicXML "
       "(marks added to the input), PIG, MIDI (lyric events \"RH3:64\") or JSON");
-  command->add_option("IN", options->input, "score file")->required();
-  command->add_option("-o,--output", options->output,
-                      "output file (format from .musicxml/.xml, .txt/.pig, .mid, .json); "
-                      "none = a listing on stdout");
-  command->add_option("--format", options->format, "musicxml, pig, midi or json");
-  command->add_option("--mode", options->mode, "exact (default) or lookahead");
-  command->add_option("--lookahead", options->lookahead, "events, for --mode lookahead");
-  command->add_option("--hand-size", options->hand_size, "small, medium or large");
-  command->add_option("--weights", options->weights,
-                      "cost weights: default, paper, or a .json file");
-  command->add_flag("--keep-fingers", options->keep_fingers,
-                    "keep the file's finger marks as pins (else they are ignored)");
-  command->add_option("--smoothing", options->smoothing,
-                      "hand-path smoothing: monotone_quintic (default), pchip, "
-                      "natural_spline or none");
-  command->add_option("--plot", options->plot, "write a piano-roll PNG");
-  command->add_option("--plot-seconds", options->plot_seconds, "plot window A:B seconds");
-  commands.add(command, [options](std::ostream& out, std::ostream& err) {
+  command.option("IN", options->input, "score file").required();
+  command.option("-o,--output", options->output,
+                 "output file (format from .musicxml/.xml, .txt/.pig, .mid, .json); "
+                 "none = a listing on stdout");
+  command.option("--format", options->format, "musicxml, pig, midi or json");
+  command.option("--mode", options->mode, "exact (default) or lookahead");
+  command.option("--lookahead", options->lookahead, "events, for --mode lookahead");
+  command.option("--hand-size", options->hand_size, "small, medium or large");
+  command.option("--weights", options->weights, "cost weights: default, paper, or a .json file");
+  command.flag("--keep-fingers", options->keep_fingers,
+               "keep the file's finger marks as pins (else they are ignored)");
+  command.option("--smoothing", options->smoothing,
+                 "hand-path smoothing: monotone_quintic (default), pchip, "
+                 "natural_spline or none");
+  command.option("--plot", options->plot, "write a piano-roll PNG");
+  command.option("--plot-seconds", options->plot_seconds, "plot window A:B seconds");
+  command.on_run([options](std::ostream& out, std::ostream& err) {
     return run_fingering(*options, out, err);
   });
 }

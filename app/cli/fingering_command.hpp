@@ -34,6 +34,6 @@ struct FingeringOptions {
 int run_fingering(const FingeringOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti fingering` and its options to `tutti`, and its run to `commands`.
-void register_fingering_command(CLI::App& tutti, Commands& commands);
+void register_fingering_command(Commands& commands);
 
 }  // namespace tutti::app

@@ -1,6 +1,5 @@
 #include <tutti/cli/fit_fingering_command.hpp>
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -70,19 +69,19 @@ int run_fit_fingering(const FitFingeringOptions& o, std::ostream& out, std::ostr
   return kExitOk;
 }
 
-void register_fit_fingering_command(CLI::App& tutti, Commands& commands) {
+void register_fit_fingering_command(Commands& commands) {
   auto options = std::make_shared<FitFingeringOptions>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "fit-fingering",
       "Fit the fingering cost weights to annotated pieces (PIG text or MusicXML with fingering "
       "marks) and write them as JSON for `tutti fingering --weights`");
-  command->add_option("FILES", options->inputs, "annotated score files")->required();
-  command->add_option("-o,--output", options->output, "weights .json to write")->required();
-  command->add_option("--start", options->start,
-                      "preset (default, paper) or weights file to start from");
-  command->add_option("--hand-size", options->hand_size, "small, medium or large");
-  command->add_option("--rounds", options->rounds, "coordinate-descent rounds at most (1..100)");
-  commands.add(command, [options](std::ostream& out, std::ostream& err) {
+  command.option("FILES", options->inputs, "annotated score files").required();
+  command.option("-o,--output", options->output, "weights .json to write").required();
+  command.option("--start", options->start,
+                 "preset (default, paper) or weights file to start from");
+  command.option("--hand-size", options->hand_size, "small, medium or large");
+  command.option("--rounds", options->rounds, "coordinate-descent rounds at most (1..100)");
+  command.on_run([options](std::ostream& out, std::ostream& err) {
     return run_fit_fingering(*options, out, err);
   });
 }

@@ -28,6 +28,6 @@ struct FitFingeringOptions {
 int run_fit_fingering(const FitFingeringOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti fit-fingering` and its options to `tutti`, and its run to `commands`.
-void register_fit_fingering_command(CLI::App& tutti, Commands& commands);
+void register_fit_fingering_command(Commands& commands);
 
 }  // namespace tutti::app

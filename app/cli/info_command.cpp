@@ -1,6 +1,5 @@
 #include <tutti/cli/info_command.hpp>
 
-#include <CLI/CLI.hpp>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -75,18 +74,17 @@ int run_info(const InfoOptions& options, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
-void register_info_command(CLI::App& tutti, Commands& commands) {
+void register_info_command(Commands& commands) {
   auto options = std::make_shared<InfoOptions>();
-  CLI::App* command = tutti.add_subcommand("info",
-                                           "Parts, notes, duration, tempo and ranges of a "
-                                           "MIDI, MusicXML (.xml/.musicxml/.mxl) or PIG file");
-  command->add_option("FILE", options->file, "score file")->required();
-  command->add_flag("--json", options->json, "print JSON instead of text");
-  command->add_flag("--schedule", options->schedule,
-                    "FILE is a scene: print the frame (phases, systems, components)");
-  commands.add(command, [options](std::ostream& out, std::ostream& err) {
-    return run_info(*options, out, err);
-  });
+  Command& command = commands.add("info",
+                                  "Parts, notes, duration, tempo and ranges of a "
+                                  "MIDI, MusicXML (.xml/.musicxml/.mxl) or PIG file");
+  command.option("FILE", options->file, "score file").required();
+  command.flag("--json", options->json, "print JSON instead of text");
+  command.flag("--schedule", options->schedule,
+               "FILE is a scene: print the frame (phases, systems, components)");
+  command.on_run(
+      [options](std::ostream& out, std::ostream& err) { return run_info(*options, out, err); });
 }
 
 }  // namespace tutti::app

@@ -20,6 +20,6 @@ struct InfoOptions {
 int run_info(const InfoOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti info` and its options to `tutti`, and its run to `commands`.
-void register_info_command(CLI::App& tutti, Commands& commands);
+void register_info_command(Commands& commands);
 
 }  // namespace tutti::app

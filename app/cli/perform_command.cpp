@@ -1,6 +1,5 @@
 #include <tutti/cli/perform_command.hpp>
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -130,24 +129,23 @@ int run_perform(const PerformOptions& o, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
-void register_perform_command(CLI::App& tutti, Commands& commands) {
+void register_perform_command(Commands& commands) {
   auto options = std::make_shared<PerformOptions>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "perform",
       "Play a MIDI or MusicXML file on the simulated piano in a performance style: the notes as "
       "the keys sound them (escapement time, velocity from key speed), written as MIDI, and a "
       "report of onset deviation, velocity spread and missed notes");
-  command->add_option("IN", options->input, "score file")->required();
-  command->add_option("-o,--output", options->output, "write the performed notes (.mid)");
-  command->add_option("--style", options->style,
-                      "precise (default), gentle, beginner, or all (report only)");
-  command->add_option("--seed", options->seed, "motor-noise seed (default 1)");
-  command->add_option("--hand-size", options->hand_size, "small, medium or large");
-  command->add_option("--report-json", options->report_json,
-                      "write the report and every note's outcome as JSON");
-  commands.add(command, [options](std::ostream& out, std::ostream& err) {
-    return run_perform(*options, out, err);
-  });
+  command.option("IN", options->input, "score file").required();
+  command.option("-o,--output", options->output, "write the performed notes (.mid)");
+  command.option("--style", options->style,
+                 "precise (default), gentle, beginner, or all (report only)");
+  command.option("--seed", options->seed, "motor-noise seed (default 1)");
+  command.option("--hand-size", options->hand_size, "small, medium or large");
+  command.option("--report-json", options->report_json,
+                 "write the report and every note's outcome as JSON");
+  command.on_run(
+      [options](std::ostream& out, std::ostream& err) { return run_perform(*options, out, err); });
 }
 
 }  // namespace tutti::app

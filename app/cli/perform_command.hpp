@@ -28,6 +28,6 @@ struct PerformOptions {
 int run_perform(const PerformOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti perform` and its options to `tutti`, and its run to `commands`.
-void register_perform_command(CLI::App& tutti, Commands& commands);
+void register_perform_command(Commands& commands);
 
 }  // namespace tutti::app

@@ -4,7 +4,6 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -298,37 +297,34 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
-void register_play_command(CLI::App& tutti, Commands& commands) {
+void register_play_command(Commands& commands) {
   auto options = std::make_shared<PlayOptions>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "play",
       "Play a scene live in a window with its sound (keys: Space play/pause, Left/Right seek, "
       "Home start, 0 director, 1-9 camera, F or drag free camera, [ ] \\ loop, - = tempo, Esc)");
-  command->add_option("SCENE", options->scene, "scene file")->required();
-  command->add_option("--tempo", options->tempo, "practice tempo, 0.25..2 (0.5 = half speed)");
-  command->add_option("--camera", options->camera,
-                      "start on this scene camera (not the shot list)");
-  command->add_option("--start", options->start, "start at this time (seconds of the music)");
-  command->add_option("--loop", options->loop, "A:B, play seconds [A, B) over and over");
-  command->add_option("--soundfont", options->soundfont,
-                      "General MIDI .sf2 (default: $TUTTI_SOUNDFONT or the system's)");
-  command->add_option("--assets", options->assets, "folder of the generated .glb assets");
-  command->add_option("--audio-driver", options->audio_driver,
-                      "FluidSynth audio driver (pulseaudio, alsa, ...; simulated: none)");
-  command->add_option("--device", options->device, "Vulkan device: index or part of its name");
-  command->add_option("--frames", options->frames, "quit after this many frames");
-  command->add_option("--screenshot", options->screenshot, "write the last frame to this .png");
-  command->add_option("--midi-in", options->midi_in,
-                      "live MIDI (ALSA sequencer): auto, none, CLIENT:PORT or a client name; the "
-                      "pianist plays it");
-  command->add_flag(
-      "--keyboard-piano", options->keyboard_piano,
-      "the computer keyboard as a piano (A S D ... white, W E T ... black, Z/X octave)");
-  command->add_flag("--validate", options->validate,
-                    "Vulkan validation layer on; any message is an error");
-  commands.add(command, [options](std::ostream& out, std::ostream& err) {
-    return run_play(*options, out, err);
-  });
+  command.option("SCENE", options->scene, "scene file").required();
+  command.option("--tempo", options->tempo, "practice tempo, 0.25..2 (0.5 = half speed)");
+  command.option("--camera", options->camera, "start on this scene camera (not the shot list)");
+  command.option("--start", options->start, "start at this time (seconds of the music)");
+  command.option("--loop", options->loop, "A:B, play seconds [A, B) over and over");
+  command.option("--soundfont", options->soundfont,
+                 "General MIDI .sf2 (default: $TUTTI_SOUNDFONT or the system's)");
+  command.option("--assets", options->assets, "folder of the generated .glb assets");
+  command.option("--audio-driver", options->audio_driver,
+                 "FluidSynth audio driver (pulseaudio, alsa, ...; simulated: none)");
+  command.option("--device", options->device, "Vulkan device: index or part of its name");
+  command.option("--frames", options->frames, "quit after this many frames");
+  command.option("--screenshot", options->screenshot, "write the last frame to this .png");
+  command.option("--midi-in", options->midi_in,
+                 "live MIDI (ALSA sequencer): auto, none, CLIENT:PORT or a client name; the "
+                 "pianist plays it");
+  command.flag("--keyboard-piano", options->keyboard_piano,
+               "the computer keyboard as a piano (A S D ... white, W E T ... black, Z/X octave)");
+  command.flag("--validate", options->validate,
+               "Vulkan validation layer on; any message is an error");
+  command.on_run(
+      [options](std::ostream& out, std::ostream& err) { return run_play(*options, out, err); });
 }
 
 }  // namespace tutti::app

@@ -34,6 +34,6 @@ struct PlayOptions {
 int run_play(const PlayOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti play` and its options to `tutti`, and its run to `commands`.
-void register_play_command(CLI::App& tutti, Commands& commands);
+void register_play_command(Commands& commands);
 
 }  // namespace tutti::app

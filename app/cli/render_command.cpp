@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -296,7 +295,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
-void register_render_command(CLI::App& tutti, Commands& commands) {
+void register_render_command(Commands& commands) {
   // The options, and the flags that turn one of them off (applied when the command runs).
   struct State {
     RenderOptions options;
@@ -304,41 +303,37 @@ void register_render_command(CLI::App& tutti, Commands& commands) {
     bool no_progress = false;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "render",
       "Render a scene (content/scenes/*.json) offline on the Vulkan device: H.264 .mp4, a folder "
       "of PNG frames, or one .png with --still");
-  command->add_option("SCENE", state->options.scene, "scene file")->required();
-  command->add_option("-o,--output", state->options.output, "OUT.mp4, OUT.png (--still) or FOLDER/")
-      ->required();
-  command->add_option("--size", state->options.size, "WxH (default: the scene's)");
-  command->add_option("--fps", state->options.fps, "frames per second (default: the scene's)");
-  command->add_option("--msaa", state->options.msaa, "samples per pixel: 1, 2, 4 or 8");
-  command->add_option("--wav", state->options.wav, "also write the rendered range's audio (WAV)");
-  command->add_option("--soundfont", state->options.soundfont,
-                      "General MIDI .sf2 (default: $TUTTI_SOUNDFONT, then Debian's)");
-  command->add_flag("--no-audio", state->no_audio, "an .mp4 without a sound track");
-  command->add_flag("--lossless", state->options.lossless,
-                    "lossless H.264: slices joined by tutti concat equal a single render");
-  command->add_option("--tempo", state->options.tempo,
-                      "practice tempo, 0.1..4 (0.5 = half speed: picture and sound)");
-  command->add_option("--camera", state->options.camera,
-                      "render every frame through this scene camera (ignore the shot list)");
-  command->add_option("--shadows", state->options.shadows,
-                      "hard (one shadow-map comparison per pixel) or soft (four)");
-  command->add_option("--frames", state->options.frames,
-                      "A:B, frames A (inclusive) to B (exclusive)");
-  command->add_option("--seconds", state->options.seconds,
-                      "A:B, the frames whose times are in [A, B)");
-  command->add_option("--still", state->options.still,
-                      "one frame at this time (seconds) to a .png");
-  command->add_option("--device", state->options.device,
-                      "Vulkan device: index or part of its name");
-  command->add_option("--assets", state->options.assets, "folder of the generated .glb assets");
-  command->add_flag("--validate", state->options.validate,
-                    "run with the Vulkan validation layer; any message is an error");
-  command->add_flag("--no-progress", state->no_progress, "no progress output");
-  commands.add(command, [state](std::ostream& out, std::ostream& err) {
+  command.option("SCENE", state->options.scene, "scene file").required();
+  command.option("-o,--output", state->options.output, "OUT.mp4, OUT.png (--still) or FOLDER/")
+      .required();
+  command.option("--size", state->options.size, "WxH (default: the scene's)");
+  command.option("--fps", state->options.fps, "frames per second (default: the scene's)");
+  command.option("--msaa", state->options.msaa, "samples per pixel: 1, 2, 4 or 8");
+  command.option("--wav", state->options.wav, "also write the rendered range's audio (WAV)");
+  command.option("--soundfont", state->options.soundfont,
+                 "General MIDI .sf2 (default: $TUTTI_SOUNDFONT, then Debian's)");
+  command.flag("--no-audio", state->no_audio, "an .mp4 without a sound track");
+  command.flag("--lossless", state->options.lossless,
+               "lossless H.264: slices joined by tutti concat equal a single render");
+  command.option("--tempo", state->options.tempo,
+                 "practice tempo, 0.1..4 (0.5 = half speed: picture and sound)");
+  command.option("--camera", state->options.camera,
+                 "render every frame through this scene camera (ignore the shot list)");
+  command.option("--shadows", state->options.shadows,
+                 "hard (one shadow-map comparison per pixel) or soft (four)");
+  command.option("--frames", state->options.frames, "A:B, frames A (inclusive) to B (exclusive)");
+  command.option("--seconds", state->options.seconds, "A:B, the frames whose times are in [A, B)");
+  command.option("--still", state->options.still, "one frame at this time (seconds) to a .png");
+  command.option("--device", state->options.device, "Vulkan device: index or part of its name");
+  command.option("--assets", state->options.assets, "folder of the generated .glb assets");
+  command.flag("--validate", state->options.validate,
+               "run with the Vulkan validation layer; any message is an error");
+  command.flag("--no-progress", state->no_progress, "no progress output");
+  command.on_run([state](std::ostream& out, std::ostream& err) {
     state->options.audio = !state->no_audio;
     state->options.progress = !state->no_progress;
     return run_render(state->options, out, err);

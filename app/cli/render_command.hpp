@@ -37,6 +37,6 @@ struct RenderOptions {
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti render` and its options to `tutti`, and its run to `commands`.
-void register_render_command(CLI::App& tutti, Commands& commands);
+void register_render_command(Commands& commands);
 
 }  // namespace tutti::app

@@ -1,6 +1,5 @@
 #include <tutti/cli/sync_report_command.hpp>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -114,32 +113,30 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
   return o.check && !met ? kExitSyncGoalMissed : kExitOk;
 }
 
-void register_sync_report_command(CLI::App& tutti, Commands& commands) {
+void register_sync_report_command(Commands& commands) {
   // The options, and the flags that turn one of them off (applied when the command runs).
   struct State {
     SyncReportOptions options;
     bool no_attack_compensation = false;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = tutti.add_subcommand(
+  Command& command = commands.add(
       "sync-report",
       "How far the sound is from the picture: note onsets detected in the rendered audio against "
       "the animation's contact times (key bottom, valve down, slide arrives, tongue)");
-  command->add_option("SCENE", state->options.scene, "scene file")->required();
-  command->add_option("--assets", state->options.assets, "folder of the generated .glb assets");
-  command->add_option("--soundfont", state->options.soundfont,
-                      "General MIDI .sf2 (default: $TUTTI_SOUNDFONT, then Debian's)");
-  command->add_option("--wav", state->options.wav, "also write the analysed audio (WAV)");
-  command->add_option("--tempo", state->options.tempo, "practice tempo, 0.1..4");
-  command->add_option("--step-ms", state->options.step_ms, "animation sampling step (default 0.5)");
-  command->add_option("--tolerance-ms", state->options.tolerance_ms, "furthest match (default 50)");
-  command->add_option("--worst", state->options.worst,
-                      "list this many largest offsets (default 5)");
-  command->add_flag("--no-attack-compensation", state->no_attack_compensation,
-                    "every note at its score time, not early by its sample's attack");
-  command->add_flag("--check", state->options.check,
-                    "exit 1 unless mean <= 5 ms and max <= 16.67 ms");
-  commands.add(command, [state](std::ostream& out, std::ostream& err) {
+  command.option("SCENE", state->options.scene, "scene file").required();
+  command.option("--assets", state->options.assets, "folder of the generated .glb assets");
+  command.option("--soundfont", state->options.soundfont,
+                 "General MIDI .sf2 (default: $TUTTI_SOUNDFONT, then Debian's)");
+  command.option("--wav", state->options.wav, "also write the analysed audio (WAV)");
+  command.option("--tempo", state->options.tempo, "practice tempo, 0.1..4");
+  command.option("--step-ms", state->options.step_ms, "animation sampling step (default 0.5)");
+  command.option("--tolerance-ms", state->options.tolerance_ms, "furthest match (default 50)");
+  command.option("--worst", state->options.worst, "list this many largest offsets (default 5)");
+  command.flag("--no-attack-compensation", state->no_attack_compensation,
+               "every note at its score time, not early by its sample's attack");
+  command.flag("--check", state->options.check, "exit 1 unless mean <= 5 ms and max <= 16.67 ms");
+  command.on_run([state](std::ostream& out, std::ostream& err) {
     state->options.compensate_attacks = !state->no_attack_compensation;
     return run_sync_report(state->options, out, err);
   });

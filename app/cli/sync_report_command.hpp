@@ -33,6 +33,6 @@ inline constexpr int kExitSyncGoalMissed = 1;
 int run_sync_report(const SyncReportOptions& options, std::ostream& out, std::ostream& err);
 
 // Adds `tutti sync-report` and its options to `tutti`, and its run to `commands`.
-void register_sync_report_command(CLI::App& tutti, Commands& commands);
+void register_sync_report_command(Commands& commands);
 
 }  // namespace tutti::app
