@@ -90,10 +90,31 @@ std::optional<int> stated_key(const Words& words) {
   return std::nullopt;
 }
 
+// The key a name states in front of the instrument ("C Trumpet", "Bb trumpets", German "B
+// Trompete" = B♭): a key word right before one of `names`. "A" is left out (the article).
+std::optional<int> key_before_name(const Words& words, const std::vector<std::string>& names) {
+  struct Name {
+    std::string_view word;
+    int pitch_class;
+  };
+  static constexpr Name kKeys[] = {{"c", 0},   {"d", 2},   {"e", 4},   {"f", 5},  {"g", 7},
+                                   {"b", 10},  {"bb", 10}, {"b♭", 10}, {"eb", 3}, {"e♭", 3},
+                                   {"es", 3},  {"ut", 0}};
+  for (std::size_t i = 0; i + 1 < words.size(); ++i) {
+    for (const Name& key : kKeys) {
+      if (words[i] != key.word) continue;
+      const Words rest(words.begin() + static_cast<std::ptrdiff_t>(i + 1), words.end());
+      if (longest_match({rest.front()}, names) > 0) return key.pitch_class;
+    }
+  }
+  return std::nullopt;
+}
+
 int pitch_class(int semitones) { return ((semitones % 12) + 12) % 12; }
 
-// Among instruments that fit equally well: a stated transposition, then a key in the name,
-// then a transposition of 0 matching an untransposed part, then the first.
+// Among instruments that fit equally well: a stated transposition, then a key in the name ("in
+// C", "C Trumpet"), then the preferred one (the B♭ trumpet: most parts, and MIDI at concert
+// pitch, are played on it), then the first.
 const Instrument* pick(const std::vector<const Instrument*>& fits, const music::Part& part,
                        const Words& words) {
   if (fits.empty()) return nullptr;
@@ -108,17 +129,19 @@ const Instrument* pick(const std::vector<const Instrument*>& fits, const music::
       return i;
     }
   }
-  if (const std::optional<int> key = stated_key(words)) {
+  std::optional<int> key = stated_key(words);
+  if (!key) {
+    for (const Instrument* candidate : fits) {
+      if ((key = key_before_name(words, candidate->names))) break;
+    }
+  }
+  if (key) {
     if (const Instrument* i = first(
             [&](const Instrument* c) { return pitch_class(c->transposition_semitones) == *key; })) {
       return i;
     }
   }
-  if (const Instrument* i = first([&](const Instrument* c) {
-        return c->transposition_semitones == part.transpose_semitones;
-      })) {
-    return i;
-  }
+  if (const Instrument* i = first([&](const Instrument* c) { return c->preferred; })) return i;
   return fits.front();
 }
 

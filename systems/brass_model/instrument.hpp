@@ -59,6 +59,9 @@ struct Instrument {
   std::vector<int> partials;    // the partials the player uses (open series), ascending
   double tube_length_mm = 0.0;  // effective tube length, valves up / slide in (see brass_physics)
   int positions = 0;            // slide only: number of positions (7)
+  // The one a part gets when its name and program fit several (B♭ among the trumpets: most
+  // trumpet parts are played on it) and it states no key.
+  bool preferred = false;
 
   int sounding(int written) const { return written + transposition_semitones; }
   int written(int sounding) const { return sounding - transposition_semitones; }

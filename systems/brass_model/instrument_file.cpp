@@ -461,8 +461,8 @@ Result<InstrumentFile> parse_instrument_file(const json& doc, const std::string&
   const Fields f(reader);
   if (auto ok = f.keys(doc, "",
                        {"description", "sources", "id", "display_name", "names", "ambiguous_names",
-                        "not_names", "gm_programs", "transposition_semitones", "range", "mechanism",
-                        "harmonic_series", "conventions", "overrides"});
+                        "not_names", "preferred", "gm_programs", "transposition_semitones", "range",
+                        "mechanism", "harmonic_series", "conventions", "overrides"});
       !ok) {
     return ok.error();
   }
@@ -510,6 +510,11 @@ Result<InstrumentFile> parse_instrument_file(const json& doc, const std::string&
   auto not_names = phrases(f, doc, "not_names", false);
   if (!not_names) return not_names.error();
   inst.not_names = std::move(*not_names);
+
+  if (doc.contains("preferred")) {
+    if (!doc.at("preferred").is_boolean()) return f.error("/preferred", "expected true or false");
+    inst.preferred = doc.at("preferred").get<bool>();
+  }
 
   auto programs_value = f.required(doc, "", "gm_programs");
   if (!programs_value) return programs_value.error();

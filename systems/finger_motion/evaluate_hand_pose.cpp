@@ -45,8 +45,10 @@ Baseline baseline(const FingerMotionPlan& plan, const FingerGeometry& g, const K
     const double u = (t_s - prev->offset_s) * prev->inv_release_s;
     b.z_mm = prev->bottom_z_mm + (top + keys.hover_lift_mm - prev->bottom_z_mm) * min_jerk(u);
   } else {
+    // The finger settles toward its rest height but no lower than the top of the key it left:
+    // a finger resting on a key does not press it (the rest height is below a black key's top).
     const double hover = top + keys.hover_lift_mm;
-    b.z_mm = neutral_z + (hover - neutral_z) * (decay * prev->release_decay_scale);
+    b.z_mm = std::max(neutral_z + (hover - neutral_z) * (decay * prev->release_decay_scale), top);
   }
   return b;
 }

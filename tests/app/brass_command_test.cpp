@@ -6,9 +6,13 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <tutti/cli/exit_codes.hpp>
+#include <tutti/music/midi/midi_writer.hpp>
 #include "testdata.hpp"
 
 namespace tutti::app {
@@ -116,6 +120,78 @@ TEST(BrassCommandTest, BadUsageIsOneLineAndExitTwo) {
   voice.part = "1";
   voice.voice = 3;
   expect_error(voice, "voice(s)");
+}
+
+}  // namespace
+}  // namespace tutti::app
+
+namespace tutti::app {
+namespace {
+
+// A MIDI file with one part on General MIDI program `program` (0-based) and these notes, one
+// after another, half a second each.
+std::filesystem::path one_part_midi(const std::string& name, int program,
+                                    const std::vector<int>& keys) {
+  music::Score score;
+  music::Part part;
+  part.id = "track1-ch0";
+  part.name = "";
+  part.program = program;
+  part.channel = 0;
+  part.track = 1;
+  score.parts.push_back(part);
+  double t = 0.0;
+  for (int key : keys) {
+    music::Note note;
+    note.pitch = key;
+    note.onset_s = t;
+    note.offset_s = t + 0.45;
+    note.onset_beats = t * 2.0;
+    note.offset_beats = (t + 0.45) * 2.0;
+    note.onset_ticks = static_cast<std::int64_t>(t * 960.0);
+    note.offset_ticks = static_cast<std::int64_t>((t + 0.45) * 960.0);
+    note.velocity = 80;
+    score.notes.push_back(note);
+    t += 0.5;
+  }
+  const std::filesystem::path file = test::unique_temp_path(name);
+  EXPECT_TRUE(music::write_midi_file(score, file));
+  return file;
+}
+
+std::vector<std::string> fingerings(const BrassRun& r) {
+  std::vector<std::string> out;
+  const auto doc = nlohmann::json::parse(r.out);
+  for (const auto& note : doc["players"][0]["notes"]) out.push_back(note["fingering"]);
+  return out;
+}
+
+// MIDI at concert pitch on a trumpet program is read as a B♭ trumpet (Horii's Table 3.1): C4 is
+// valves 1-3. A part that says "in C" / "C Trumpet" keeps the C trumpet.
+TEST(BrassCommandTest, AMidiTrumpetIsABFlatTrumpet) {
+  const auto file = one_part_midi("gm56.mid", 56, {60});
+  BrassOptions options;
+  options.file = file;
+  options.json = true;
+  BrassRun r = run(options);
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["players"][0]["instrument"], "trumpet_bb");
+  EXPECT_EQ(fingerings(r), std::vector<std::string>{"1-3"});
+  options.json = false;
+  r = run(options);
+  EXPECT_NE(r.out.find("1-3"), std::string::npos) << r.out;
+  std::filesystem::remove(file);
+
+  // Table 3.1, concert pitch: 60 → 1-3, 62 → 1-2, 64 → 2, 65 → open, 67 → 1-2, 69 → 2,
+  // 57 → 2, 59 → 1-2-3.
+  const auto table = one_part_midi("table31.mid", 56, {60, 62, 64, 65, 67, 69, 57, 59});
+  options.file = table;
+  options.json = true;
+  r = run(options);
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_EQ(fingerings(r), (std::vector<std::string>{"1-3", "1-2", "2", "open", "1-2", "2", "2",
+                                                     "1-2-3"}));
+  std::filesystem::remove(table);
 }
 
 }  // namespace

@@ -26,6 +26,11 @@ TEST(DetectInstrument, ByName) {
   EXPECT_EQ(detected("Trumpet in Bb", 0, -2), "trumpet_bb");
   EXPECT_EQ(detected("Trumpet in Bb"), "trumpet_bb");  // concert-pitch score, key in the name
   EXPECT_EQ(detected("Trumpet in C"), "trumpet_c");
+  EXPECT_EQ(detected("C Trumpet"), "trumpet_c");
+  EXPECT_EQ(detected("Trumpet", 56), "trumpet_bb");
+  EXPECT_EQ(detected("Bb Trumpet 2"), "trumpet_bb");
+  EXPECT_EQ(detected("B Trompete"), "trumpet_bb");  // German B = B flat
+  EXPECT_EQ(detected("F Horn"), "horn_double");
   EXPECT_EQ(detected("Trumpet", 56, -2), "trumpet_bb");  // the part's transposition decides
   EXPECT_EQ(detected("Tromba I in Sib"), "trumpet_bb");
   EXPECT_EQ(detected("Trompeten in B"), "trumpet_bb");  // German B = B♭
@@ -60,11 +65,12 @@ TEST(DetectInstrument, LookalikesAreNotBrass) {
 }
 
 TEST(DetectInstrument, ByProgramWhenTheNameSaysNothing) {
-  EXPECT_EQ(detected("", 56), "trumpet_c");
+  // MIDI at concert pitch on a trumpet program: the B♭ trumpet (most parts are played on it).
+  EXPECT_EQ(detected("", 56), "trumpet_bb");
   EXPECT_EQ(detected("", 56, -2), "trumpet_bb");
   EXPECT_EQ(detected("Track 3", 57), "trombone_tenor");
   EXPECT_EQ(detected("", 58), "tuba");
-  EXPECT_EQ(detected("", 59), "trumpet_c");  // muted trumpet
+  EXPECT_EQ(detected("", 59), "trumpet_bb");  // muted trumpet
   EXPECT_EQ(detected("", 60), "horn_double");
   EXPECT_EQ(detected("", 61), "none");  // brass section: no one instrument
   EXPECT_EQ(detected("Piano", 0), "none");

@@ -62,7 +62,9 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
         z = prev->bottom_z_mm + (top + keys.hover_lift_mm - prev->bottom_z_mm) * min_jerk(u);
       } else {
         const double hover = top + keys.hover_lift_mm;
-        z = neutral_z + (hover - neutral_z) * std::exp(-(t - prev->release_end_s) / tau);
+        // Settling toward the rest height, never below the top of the key it left.
+        z = std::max(neutral_z + (hover - neutral_z) * std::exp(-(t - prev->release_end_s) / tau),
+                     top);
       }
     }
     depth = t <= prev->offset_s ? 1.0 : std::clamp((top - z) / (top - prev->bottom_z_mm), 0.0, 1.0);
