@@ -38,6 +38,8 @@ Result<BodyNodes> find_body_nodes(const model::ModelAsset& asset, const MappedMo
         if (!node) return node.error();
         n.fingers[side][f][s] = *node;
       }
+      auto tip = find_role(asset, body, std::string(finger_names[f]) + "_tip" + (side == 0 ? "_l" : "_r"));
+      n.fingertips[side][f] = tip ? *tip : -1;
     }
   }
   n.morph_tension = morph_index(asset, body.morph_name("tension"));

@@ -27,6 +27,8 @@ struct BodyNodes {
   int morph_tension = -1, morph_open = -1;  // indices into the pose's morph_weights
   // Finger bones [left, right][thumb .. little][segment], for the grip curls.
   std::array<std::array<std::array<int, 3>, 5>, 2> fingers{};
+  // Their tips' nodes [left, right][thumb .. little] (-1 when the rig has none).
+  std::array<std::array<int, 5>, 2> fingertips{};
   bool mapped = false;  // a user's rig (mapping file): only IK and morphs, no canned bends
 };
 

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <vector>
 
-#include <tutti/audio/attack_time.hpp>
 #include <tutti/audio/sound_font.hpp>
 #include <tutti/audio/synth_events.hpp>
+#include <tutti/runtime/scene_sound.hpp>
 
 namespace tutti::app {
 namespace {
@@ -22,20 +22,12 @@ Result<audio::AudioBuffer> render_scene_audio(const stage::Stage& stage, int fps
                                               const SceneAudioOptions& options) {
   auto font = audio::find_sound_font(options.sound_font);
   if (!font) return font.error();
-  // The notes as played (catch breaths leave gaps, the keys' own timing), from the Note entities.
-  const std::vector<music::Score> heard = stage.heard_scores();
-  std::vector<const music::Score*> scores;
-  for (const music::Score& score : heard) scores.push_back(&score);
-  audio::TimelineOptions timeline_options;
-  timeline_options.sample_rate = options.sample_rate;
-  timeline_options.start_s = stage.start_s();
-  timeline_options.tempo_factor = options.tempo_factor;
-  auto timeline = audio::build_synth_timeline(scores, timeline_options);
+  // The same timeline `tutti play` hears (runtime/scene_sound.hpp): the Note entities as heard.
+  runtime::SceneSoundOptions sound;
+  sound.sample_rate = options.sample_rate;
+  sound.compensate_attacks = options.compensate_attacks;
+  auto timeline = runtime::scene_timeline(stage, options.tempo_factor, *font, sound);
   if (!timeline) return timeline.error();
-  if (options.compensate_attacks) {
-    auto compensated = audio::compensate_attacks(*timeline, *font);
-    if (!compensated) return compensated.error();
-  }
 
   const std::int64_t from = audio_frame_of_video_frame(first_frame, fps, options.sample_rate);
   const std::int64_t to = audio_frame_of_video_frame(end_frame, fps, options.sample_rate);

@@ -174,6 +174,11 @@ tinygltf::Model build_trumpet(const TrumpetDimensions& dims) {
                         {0, 0, -1}, 8));
   extend(slide3, {mm(valve_x, -84, valve_z[2])});
   add_pipe(body, slide3, bore * 0.9);
+  // The little finger's hook on the leadpipe, just past the third valve.
+  const double hook_z = valve_z[2] - 0.9 * dims.valve_pitch_mm;
+  std::vector<Vec3> hook{mm(0, 0, hook_z + 6), mm(0, 9, hook_z + 6)};
+  extend(hook, u_bend(mm(0, 9, hook_z + 6), mm(0, 9, hook_z - 6), {0, 1, 0}, 6));
+  add_pipe(body, hook, 1.6, 8);
   // Braces between the leadpipe and the bell tube.
   add_pipe(body, {mm(0, 0, -0.22 * length), mm(bell_x, bell_y, -0.22 * length)}, 2.0, 8);
   add_pipe(body, {mm(0, -4, front_z + 30), mm(bell_x, bell_y, front_z + 30)}, 2.0, 8);
@@ -209,6 +214,14 @@ tinygltf::Model build_trumpet(const TrumpetDimensions& dims) {
                     builder.add_node("grip_left", -1,
                                      {(valve_x - casing_r - 16) / 1000, -0.030, valve_z[1] / 1000},
                                      about({0, 0, 1}, 90)));
+  // Where the right thumb and little finger rest (content/instruments/holds/trumpet.json): the
+  // node's -Y points into the surface. The thumb against the casings' right side between valves
+  // 1 and 2; the little finger on the hook.
+  builder.add_child(trumpet, builder.add_node("thumb_rest", -1,
+                                              {(valve_x + casing_r + 1) / 1000, -0.030,
+                                               (valve_z[0] + valve_z[1]) / 2000},
+                                              about({0, 0, 1}, -90)));
+  builder.add_child(trumpet, builder.add_node("hook", -1, {0.0, 0.018, hook_z / 1000}));
   // Right: palm down above and right of the buttons, fingers toward -X, index over valve 1.
   builder.add_child(trumpet, builder.add_node("grip_right", -1,
                                               {(valve_x + 55) / 1000, (button_top + 25) / 1000,

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include <tutti/brass/hold.hpp>
 #include <tutti/brass_model/brass_line.hpp>
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/brass_motion/brass_pose_system.hpp>
@@ -46,6 +47,9 @@ struct BrassRig {
   glm::mat4 horn_correction{1.0f};  // a user's instrument into tutti's frame (mapping file)
   int slide = -1;
   int mouthpiece = -1, grip_left = -1, grip_right = -1;
+  Hold hold;  // content/instruments/holds/<model>.json
+  // The instrument's nodes under each fingertip [left, right][thumb .. little] (-1: none).
+  std::array<std::array<int, 5>, 2> fingertip_on{};
   glm::mat4 placement{1.0f};  // feet on the floor, facing
   std::vector<glm::mat4> scratch_horn_world;  // reused every frame by the pose system
   std::vector<glm::mat4> scratch_body_world;

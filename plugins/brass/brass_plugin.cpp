@@ -5,6 +5,7 @@
 #include <string>
 
 #include <tutti/brass/brass_components.hpp>
+#include <tutti/brass/hold.hpp>
 #include <tutti/brass/plan_brass_player.hpp>
 #include <tutti/brass/pose_brass.hpp>
 #include <tutti/components/body_motion.hpp>
@@ -91,6 +92,25 @@ Status bind_player(stage::StageBuilder& builder, const scene::Performer& perform
     *slot = *node;
   }
   rig.slide_axis = stage::local_axis(horn_asset, rig.slide, horn->correction, {0, 0, -1});
+  const std::string model_stem = rig.trombone ? "trombone" : "trumpet";
+  auto hold = load_hold(builder.content_dir() / "instruments" / "holds" / (model_stem + ".json"));
+  if (!hold) return hold.error();
+  rig.hold = std::move(*hold);
+  for (std::size_t side = 0; side < 2; ++side) {
+    const HandHold& hand = rig.hold.hands[side];
+    if (!hand.palm_at.empty()) {
+      auto node = stage::find_role(horn_asset, *horn, hand.palm_at);
+      if (!node) return node.error();
+      (side == 0 ? rig.grip_left : rig.grip_right) = *node;
+    }
+    for (std::size_t f = 0; f < 5; ++f) {
+      rig.fingertip_on[side][f] = -1;
+      if (hand.fingertip_on[f].empty()) continue;
+      auto node = stage::find_role(horn_asset, *horn, hand.fingertip_on[f]);
+      if (!node) return node.error();
+      rig.fingertip_on[side][f] = *node;
+    }
+  }
   if (performer.music_stand) {
     // The stand 0.75 m in front of the player, desk toward them.
     const glm::mat4 stand = glm::rotate(glm::translate(rig.placement, glm::vec3(0, 0, 0.75f)),

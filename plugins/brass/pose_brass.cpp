@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <tutti/brass/brass_components.hpp>
+#include <tutti/brass/hand_hold.hpp>
 #include <tutti/components/body_motion.hpp>
 #include <tutti/components/breath.hpp>
 #include <tutti/components/mouth.hpp>
@@ -78,71 +79,146 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig) {
       lips = origin(body_world[static_cast<std::size_t>(rig.body_nodes.mouth)]);
     }
   }
+  float tilt = (rig.seated ? rig.hold.bell_tilt_seated_rad : rig.hold.bell_tilt_standing_rad) +
+                     (body_motion != nullptr ? body_motion->bell_lift_rad : 0.0f);
   // The instrument hangs from the lips: its mouthpiece at the mouth, pointing where the player
   // faces, the bell a little down. The generated instruments point their bell along -Z (their
   // player at +Z); performers face +Z.
-  const float tilt = (rig.trombone ? -0.08f : -0.16f) +
-                     (body_motion != nullptr ? body_motion->bell_lift_rad : 0.0f);
-  horn->root = glm::translate(glm::mat4(1.0f), lips) * facing *
-               glm::rotate(glm::mat4(1.0f), kPi, glm::vec3(0, 1, 0)) *
-               glm::rotate(glm::mat4(1.0f), tilt, glm::vec3(1, 0, 0)) *
-               glm::translate(glm::mat4(1.0f), -mouthpiece) * rig.horn_correction;
+  const auto hang_instrument = [&] {
+    horn->root = glm::translate(glm::mat4(1.0f), lips) * facing *
+                 glm::rotate(glm::mat4(1.0f), kPi, glm::vec3(0, 1, 0)) *
+                 glm::rotate(glm::mat4(1.0f), tilt, glm::vec3(1, 0, 0)) *
+                 glm::translate(glm::mat4(1.0f), -mouthpiece) * rig.horn_correction;
+  };
+  hang_instrument();
   if (body == nullptr) return;
 
-  // Fingers: the left hand wraps the valve casing or the bell brace, the right hand's fingertips
-  // rest on the buttons / hold the slide brace. The default rig flexes its (hanging) fingers
-  // about local -Z on the left, +Z on the right (content/generator/README.md).
-  if (!rig.body_nodes.mapped) {
-    constexpr float kDeg = kPi / 180.0f;
-    const float left_curl[3] = {55 * kDeg, 45 * kDeg, 30 * kDeg};
-    const float right_curl[3] = {30 * kDeg, 35 * kDeg, 20 * kDeg};
-    for (std::size_t side = 0; side < 2; ++side) {
-      const float* curl = side == 0 ? left_curl : right_curl;
-      const glm::vec3 axis = side == 0 ? glm::vec3(0, 0, -1) : glm::vec3(0, 0, 1);
-      for (std::size_t f = 1; f < 5; ++f) {
-        for (std::size_t s = 0; s < 3; ++s) {
-          stage::turn(body->pose, rig.body_nodes.fingers[side][f][s], curl[s], axis);
-        }
-      }
-      stage::turn(body->pose, rig.body_nodes.fingers[side][0][1], 0.5f * curl[0], axis);
-    }
-  }
-
-  // Hands on the grips: the hand turned so the rig's grip frame matches the instrument's, the
-  // arm solved so the wrist lands where that puts the palm on the grip. The elbows hang down and
-  // out to the player's sides (their left is +X when facing +Z).
+  // Hands (content/instruments/holds/): a palm on its grip — the hand turned so the rig's grip
+  // frame matches the instrument's, the arm solved so the wrist lands where that puts the palm on
+  // the grip — or fingertips on their buttons (hand_hold.hpp). The elbows hang down and out to
+  // the player's sides (their left is +X when facing +Z).
   const model::ModelAsset& body_asset = *body->asset;
   const glm::vec3 left = glm::vec3(facing * glm::vec4(1, 0, 0, 0));
   const glm::vec3 back = glm::vec3(facing * glm::vec4(0, 0, -1, 0));
   const glm::vec3 down(0, -1, 0);
   const float body_scale = glm::length(glm::vec3(body->root[0]));
-  for (int hand = 0; hand < 2; ++hand) {
-    const int grip = hand == 0 ? rig.grip_left : rig.grip_right;
-    if (grip < 0) continue;
-    const stage::TwoBoneChain& arm = hand == 0 ? rig.body_nodes.arm_left : rig.body_nodes.arm_right;
-    const int rig_grip = hand == 0 ? rig.body_nodes.grip_left : rig.body_nodes.grip_right;
-    const glm::mat4 grip_world =
-        horn->root * glm::inverse(rig.horn_correction) * horn_world[static_cast<std::size_t>(grip)];
-    const glm::vec3 grip_position(grip_world[3]);
-    const glm::vec3 pole = down + (hand == 0 ? left : -left) * 0.8f + back * 0.3f;
-    if (rig_grip < 0 || arm.end < 0) {
-      stage::solve_two_bone_ik(body_asset, arm, grip_position, pole, body->root, body->pose,
-                               body_world);
-      continue;
+  const bool canned_fingers = !rig.body_nodes.mapped;
+  // Places both hands; returns how far each palm stayed from its grip (0 for fingertip holds).
+  const auto place_hands = [&]() -> std::array<float, 2> {
+    std::array<float, 2> short_by{0.0f, 0.0f};
+    const glm::mat4 horn_frame = horn->root * glm::inverse(rig.horn_correction);
+    for (int hand = 0; hand < 2; ++hand) {
+      const auto side = static_cast<std::size_t>(hand);
+      const HandHold& hold = rig.hold.hands[side];
+      const stage::TwoBoneChain& arm =
+          hand == 0 ? rig.body_nodes.arm_left : rig.body_nodes.arm_right;
+      const glm::vec3 pole = rig.hold.elbow_pole.x * down +
+                             rig.hold.elbow_pole.y * (hand == 0 ? left : -left) +
+                             rig.hold.elbow_pole.z * back;
+      FingertipTargets targets;
+      bool by_fingertips = false;
+      if (rig.hold.fingertips_place(hand) && canned_fingers && arm.end >= 0) {
+        for (std::size_t f = 0; f < 5; ++f) {
+          const int node = rig.fingertip_on[side][f];
+          if (node < 0) continue;
+          const glm::mat4 button = horn_frame * horn_world[static_cast<std::size_t>(node)];
+          // Above the button's top along its press axis (the pad's flesh between).
+          const glm::vec3 press = glm::normalize(glm::mat3(button) * glm::vec3(0, -1, 0));
+          targets.world[f] = origin(button) - press * hold.pad_above_button_m;
+          targets.has[f] = true;
+          by_fingertips = true;
+        }
+      }
+      glm::quat hand_rotation;
+      glm::vec3 wrist;
+      glm::vec3 palm_goal(0.0f);
+      const int rig_grip = hand == 0 ? rig.body_nodes.grip_left : rig.body_nodes.grip_right;
+      if (by_fingertips) {
+        const glm::vec3 up = glm::normalize(glm::mat3(horn_frame) * glm::vec3(0, 1, 0));
+        hand_rotation = fingertip_hand_rotation(targets, up, hand, hold.metacarpal_lean_rad);
+        wrist = fingertip_wrist(body_asset, rig.body_nodes, hand, hold, targets, hand_rotation,
+                                body_scale);
+      } else {
+        const int grip = hand == 0 ? rig.grip_left : rig.grip_right;
+        if (grip < 0) continue;
+        const glm::mat4 grip_world = horn_frame * horn_world[static_cast<std::size_t>(grip)];
+        palm_goal = glm::vec3(grip_world[3]);
+        if (rig_grip < 0 || arm.end < 0) {
+          stage::solve_two_bone_ik(body_asset, arm, palm_goal, pole, body->root, body->pose,
+                                   body_world);
+          continue;
+        }
+        const model::NodeTransform& grip_rest =
+            body_asset.nodes[static_cast<std::size_t>(rig_grip)].rest;
+        hand_rotation =
+            glm::normalize(stage::rotation_of(grip_world) * glm::inverse(grip_rest.rotation));
+        wrist = palm_goal - hand_rotation * (body_scale * grip_rest.translation);
+      }
+      stage::solve_two_bone_ik(body_asset, arm, wrist, pole, body->root, body->pose, body_world);
+      const int forearm = body_asset.nodes[static_cast<std::size_t>(arm.end)].parent;
+      const glm::quat parent_rotation =
+          forearm >= 0 ? stage::rotation_of(body_world[static_cast<std::size_t>(forearm)])
+                       : stage::rotation_of(body->root);
+      body->pose.local[static_cast<std::size_t>(arm.end)].rotation =
+          glm::normalize(glm::inverse(parent_rotation) * hand_rotation);
+      model::compute_world_matrices(body_asset, body->pose, body->root, body_world);
+      if (!by_fingertips && rig_grip >= 0) {
+        short_by[side] =
+            glm::distance(origin(body_world[static_cast<std::size_t>(rig_grip)]), palm_goal);
+      }
+      if (canned_fingers) {
+        pose_fingers(body_asset, rig.body_nodes, hand, hold, by_fingertips ? &targets : nullptr,
+                     body_world, body->pose);
+      }
     }
-    const model::NodeTransform& grip_rest =
-        body_asset.nodes[static_cast<std::size_t>(rig_grip)].rest;
-    const glm::quat hand_rotation =
-        glm::normalize(stage::rotation_of(grip_world) * glm::inverse(grip_rest.rotation));
-    const glm::vec3 wrist = grip_position - hand_rotation * (body_scale * grip_rest.translation);
-    stage::solve_two_bone_ik(body_asset, arm, wrist, pole, body->root, body->pose, body_world);
-    const int forearm = body_asset.nodes[static_cast<std::size_t>(arm.end)].parent;
-    const glm::quat parent_rotation =
-        forearm >= 0 ? stage::rotation_of(body_world[static_cast<std::size_t>(forearm)])
-                     : stage::rotation_of(body->root);
-    body->pose.local[static_cast<std::size_t>(arm.end)].rotation =
-        glm::normalize(glm::inverse(parent_rotation) * hand_rotation);
-    model::compute_world_matrices(body_asset, body->pose, body->root, body_world);
+    return short_by;
+  };
+  std::array<float, 2> short_by = place_hands();
+  // A grip out of the arm's reach (the trombone's far positions): the player turns the chest
+  // toward that side and brings the shoulder forward — as much as the reach needs, up to 30°
+  // each — keeping the head (and the instrument at the lips) facing where it faced; beyond that,
+  // the instrument dips toward the shoulder (the hold's reach_dip_deg). Each pass turns by what
+  // the last one left short.
+  constexpr float kReachTolerance = 0.002f;
+  constexpr float kMaxTurn = 30.0f * kPi / 180.0f;
+  constexpr float kShoulderForwardPerRad = 0.33f;  // chest (0.18 m) + collarbone (0.15 m) arms
+  if (!canned_fingers) return;
+  float turned = 0.0f;
+  float dipped = 0.0f;
+  for (int pass = 0; pass < 6; ++pass) {
+    const int side = short_by[1] >= short_by[0] ? 1 : 0;
+    const float short_of = short_by[static_cast<std::size_t>(side)];
+    if (short_of <= kReachTolerance) break;
+    if (turned < kMaxTurn) {
+      const float turn =
+          std::min(kMaxTurn - turned,
+                   std::asin(std::min(1.0f, 1.15f * short_of / kShoulderForwardPerRad)));
+      turned += turn;
+      // The right shoulder comes forward turning about +Y (the player faces +Z, their right is
+      // -X).
+      const float signed_turn = side == 1 ? turn : -turn;
+      const stage::TwoBoneChain& arm =
+          side == 0 ? rig.body_nodes.arm_left : rig.body_nodes.arm_right;
+      const int shoulder =
+          arm.upper >= 0 ? body_asset.nodes[static_cast<std::size_t>(arm.upper)].parent : -1;
+      stage::turn(body->pose, rig.body_nodes.chest, signed_turn, glm::vec3(0, 1, 0));
+      stage::turn(body->pose, rig.body_nodes.neck, -signed_turn, glm::vec3(0, 1, 0));
+      stage::turn(body->pose, shoulder, signed_turn, glm::vec3(0, 1, 0));
+      model::compute_world_matrices(body_asset, body->pose, body->root, body_world);
+      if (rig.body_nodes.mouth >= 0) {
+        lips = origin(body_world[static_cast<std::size_t>(rig.body_nodes.mouth)]);
+      }
+    } else if (dipped < rig.hold.reach_dip_rad) {
+      // About 0.2 m of shoulder below the lips: each radian of dip brings a grip 0.7 m out
+      // about 0.2 m nearer.
+      const float dip = std::min(rig.hold.reach_dip_rad - dipped, 1.2f * short_of / 0.2f);
+      dipped += dip;
+      tilt -= dip;
+    } else {
+      break;
+    }
+    hang_instrument();
+    short_by = place_hands();
   }
 }
 

@@ -1,0 +1,93 @@
+#include <tutti/cli/check_pose_command.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include <tutti/cli/exit_codes.hpp>
+#include <tutti/performance/families.hpp>
+#include <tutti/performance/pose_check.hpp>
+#include <tutti/scene/load_scene.hpp>
+
+namespace tutti::app {
+
+int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& err) {
+  auto fail = [&](const std::string& message) {
+    err << "error: " << message << "\n";
+    return kExitBadInput;
+  };
+  if (o.fps < 1 || o.fps > 240) return fail("--fps " + std::to_string(o.fps) + ": must be 1..240");
+  auto scene = scene::load_scene(o.scene);
+  if (!scene) return fail(scene.error().message);
+  stage::StageOptions stage_options;
+  stage_options.asset_dir = o.assets;
+  auto staged = performance::build_stage(*scene, stage_options);
+  if (!staged) return fail(scene->source + ": " + staged.error().message);
+  stage::Stage& stage = **staged;
+  performance::PoseCheckOptions options;
+  options.fps = o.fps;
+  options.from_s = stage.start_s();
+  options.to_s = std::min(stage.end_s(), stage.start_s() + 12.0);
+  if (!o.seconds.empty()) {
+    double from = 0.0;
+    double to = 0.0;
+    char extra = 0;
+    if (std::sscanf(o.seconds.c_str(), "%lf:%lf%c", &from, &to, &extra) != 2 || !(to > from)) {
+      return fail("--seconds \"" + o.seconds + "\": expected A:B with A < B");
+    }
+    options.from_s = from;
+    options.to_s = to;
+  }
+  auto report = performance::check_pose(stage, options);
+  if (!report) return fail(scene->source + ": " + report.error().message);
+  bool over = false;
+  for (const performance::PoseMeasure& m : report->measures) over = over || !m.within_limit();
+  if (o.json) {
+    nlohmann::json doc;
+    doc["scene"] = scene->source;
+    doc["from_s"] = options.from_s;
+    doc["to_s"] = options.to_s;
+    doc["fps"] = options.fps;
+    doc["frames"] = report->frames;
+    doc["measures"] = nlohmann::json::array();
+    for (const performance::PoseMeasure& m : report->measures) {
+      nlohmann::json j{{"name", m.name},       {"unit", m.unit},
+                       {"samples", m.samples.size()}, {"min", m.percentile(0.0)}, {"median", m.percentile(0.5)},
+                       {"p95", m.percentile(0.95)},   {"max", m.worst()},
+                       {"within_limit", m.within_limit()}};
+      if (m.limit >= 0.0) {
+        j["limit"] = {{"value", m.limit}, {"of", m.by_p95 ? "p95" : m.two_sided ? "abs" : "max"}};
+      }
+      doc["measures"].push_back(j);
+    }
+    out << doc.dump(2) << "\n";
+  } else {
+    char heading[160];
+    std::snprintf(heading, sizeof heading, "check-pose: %s, %.2f .. %.2f s at %d fps, ",
+                  scene->source.c_str(), options.from_s, options.to_s, options.fps);
+    out << heading << performance::format_pose_report(*report);
+  }
+  return o.check && over ? kExitPoseLimitOver : kExitOk;
+}
+
+void register_check_pose_command(Commands& commands) {
+  auto options = std::make_shared<CheckPoseOptions>();
+  Command& command = commands.add(
+      "check-pose",
+      "Measure the posed performers frame by frame: pressing fingertips to their buttons and "
+      "keys, hands to the instruments, hands inside heads, piano keys left half down");
+  command.option("SCENE", options->scene, "scene file").required();
+  command.option("--seconds", options->seconds,
+                 "A:B, seconds of the music (default: the first 12 s shown)");
+  command.option("--fps", options->fps, "frames per second sampled (default 30)");
+  command.option("--assets", options->assets, "folder of the generated .glb assets");
+  command.flag("--json", options->json, "print JSON instead of text");
+  command.flag("--check", options->check, "exit 4 when a figure is over its limit");
+  command.on_run([options](std::ostream& out, std::ostream& err) {
+    return run_check_pose(*options, out, err);
+  });
+}
+
+}  // namespace tutti::app

@@ -1,0 +1,416 @@
+#include <tutti/performance/pose_check.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include <tutti/brass/brass_components.hpp>
+#include <tutti/components/finger.hpp>
+#include <tutti/components/note.hpp>
+#include <tutti/content/content_dir.hpp>
+#include <tutti/content/json_reader.hpp>
+#include <tutti/components/performer.hpp>
+#include <tutti/components/slide.hpp>
+#include <tutti/components/valve.hpp>
+#include <tutti/piano/piano_components.hpp>
+
+namespace tutti::performance {
+namespace {
+
+constexpr const char* kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
+// The fingertip pad's radius (content/generator/hand_rig.json: finger radius × tip ratio).
+constexpr double kPadRadiusMm[5] = {10.5 * 0.78, 9.0 * 0.78, 9.0 * 0.78, 9.0 * 0.78, 7.5 * 0.78};
+// The head as a capsule: from the head node up its local +Y, and its radius.
+constexpr float kHeadLengthM = 0.12f;
+constexpr float kHeadRadiusM = 0.095f;
+// The torso as a capsule from the hips to the neck, as thick as the mannequin's chest is deep.
+constexpr float kTorsoRadiusM = 0.10f;
+constexpr double kDegree = 3.14159265358979 / 180.0;
+
+// Flexion and spread limits of one finger joint (degrees), from hand_rig.json.
+struct JointLimit {
+  double flex_min = -180, flex_max = 180, spread_min = -180, spread_max = 180;
+};
+using FingerLimits = std::array<std::array<JointLimit, 3>, 5>;
+
+Result<FingerLimits> load_finger_limits(const std::filesystem::path& content_dir) {
+  const std::filesystem::path file =
+      (content_dir.empty() ? content::default_content_dir() : content_dir) / "generator" /
+      "hand_rig.json";
+  auto doc = content::read_json_file(file);
+  if (!doc) return doc.error();
+  FingerLimits limits{};
+  if (!doc->contains("joint_limits_deg") || !doc->at("joint_limits_deg").is_object()) {
+    return Error{file.string() + ": /joint_limits_deg: missing"};
+  }
+  const nlohmann::json& all = doc->at("joint_limits_deg");
+  for (std::size_t f = 0; f < 5; ++f) {
+    for (std::size_t s = 0; s < 3; ++s) {
+      const std::string key = std::string(kFingerNames[f]) + "_" + std::to_string(s + 1);
+      if (!all.contains(key)) continue;
+      const nlohmann::json& j = all.at(key);
+      const auto get = [&](const char* name, double fallback) {
+        return j.contains(name) && j.at(name).is_number() ? j.at(name).get<double>() : fallback;
+      };
+      limits[f][s] = {get("flexion_min_deg", -180), get("flexion_max_deg", 180),
+                      get("spread_min_deg", 0), get("spread_max_deg", 0)};
+    }
+  }
+  return limits;
+}
+
+// How far one posed joint is past its limits (degrees): the child's rest offset turned by the
+// joint's rotation, read as flexion about the hand's flexion axis and spread out of that plane.
+double past_limit(const glm::quat& rotation, const glm::vec3& child_rest, int side,
+                  const JointLimit& limit) {
+  const glm::vec3 axis = side == 0 ? glm::vec3(0, 0, -1) : glm::vec3(0, 0, 1);
+  const glm::vec3 rest = glm::normalize(child_rest);
+  const glm::vec3 posed = glm::normalize(rotation * child_rest);
+  const glm::vec3 rest_in_plane = rest - glm::dot(rest, axis) * axis;
+  const glm::vec3 posed_in_plane = posed - glm::dot(posed, axis) * axis;
+  const double flexion =
+      std::atan2(static_cast<double>(glm::dot(axis, glm::cross(rest_in_plane, posed_in_plane))),
+                 static_cast<double>(glm::dot(rest_in_plane, posed_in_plane))) /
+      kDegree;
+  // Spread > 0 turns toward the little finger (local -Z on both hands).
+  const double spread = -(std::asin(std::clamp(static_cast<double>(posed.z), -1.0, 1.0)) -
+                          std::asin(std::clamp(static_cast<double>(rest.z), -1.0, 1.0))) /
+                        kDegree;
+  return std::max({0.0, limit.flex_min - flexion, flexion - limit.flex_max,
+                   limit.spread_min - spread, spread - limit.spread_max});
+}
+
+glm::vec3 origin(const glm::mat4& m) { return glm::vec3(m[3]); }
+
+// World matrices of a placed model's nodes as posed.
+void world_of(const stage::PlacedModel& placed, std::vector<glm::mat4>& out) {
+  out.resize(placed.asset->nodes.size());
+  model::compute_world_matrices(*placed.asset, placed.pose, placed.root, out);
+}
+
+double distance_to_line(const glm::vec3& p, const glm::vec3& on_line, const glm::vec3& direction) {
+  const glm::vec3 d = glm::normalize(direction);
+  const glm::vec3 v = p - on_line;
+  return static_cast<double>(glm::length(v - glm::dot(v, d) * d));
+}
+
+double distance_to_segment(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
+  const glm::vec3 ab = b - a;
+  const float t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-12f), 0.0f, 1.0f);
+  return static_cast<double>(glm::length(p - (a + t * ab)));
+}
+
+std::string name_of(const ecs::World& world, ecs::Entity performer) {
+  const auto* about = world.try_get<components::Performer>(performer);
+  return about != nullptr ? about->name : std::string("?");
+}
+
+class Checker {
+ public:
+  Checker(stage::Stage& stage, PoseReport& report, const FingerLimits& limits)
+      : stage_(stage), report_(report), limits_(limits) {}
+
+  PoseMeasure& measure(const std::string& name, const char* unit, double limit = -1.0,
+                       bool by_p95 = false) {
+    for (PoseMeasure& m : report_.measures) {
+      if (m.name == name) return m;
+    }
+    report_.measures.push_back({name, unit, {}, limit, by_p95});
+    return report_.measures.back();
+  }
+
+  // How deep the deepest of `points` is inside the head's capsule (0 = all outside).
+  void head_clearance(const std::string& who, int head, const std::vector<glm::vec3>& points) {
+    if (head < 0) return;
+    const glm::mat4& h = body_world_[static_cast<std::size_t>(head)];
+    const glm::vec3 bottom = origin(h);
+    const glm::vec3 top = bottom + glm::normalize(glm::vec3(h[1])) * kHeadLengthM;
+    double clearance = 1e9;
+    for (const glm::vec3& p : points) {
+      clearance = std::min(clearance, distance_to_segment(p, bottom, top) - kHeadRadiusM);
+    }
+    measure(who + ": hands and fingertips inside the head (depth; 0 = outside)", "mm", 0.0)
+        .samples.push_back(std::max(0.0, -clearance) * 1000.0);
+  }
+
+  // How deep the deepest of `points` is inside the torso's capsule (hips to neck).
+  void torso_clearance(const std::string& who, int hips, int neck,
+                       const std::vector<glm::vec3>& points) {
+    if (hips < 0 || neck < 0) return;
+    const glm::vec3 bottom = origin(body_world_[static_cast<std::size_t>(hips)]);
+    const glm::vec3 top = origin(body_world_[static_cast<std::size_t>(neck)]);
+    double clearance = 1e9;
+    for (const glm::vec3& p : points) {
+      clearance = std::min(clearance, distance_to_segment(p, bottom, top) - kTorsoRadiusM);
+    }
+    measure(who + ": hands, fingertips and elbows inside the torso (depth; 0 = outside)", "mm",
+            0.0)
+        .samples.push_back(std::max(0.0, -clearance) * 1000.0);
+  }
+
+  // The worst finger joint (index .. little) of a posed hand past its limits.
+  void finger_limits(const std::string& who, const model::ModelAsset& asset,
+                     const model::ModelPose& pose, const stage::BodyNodes& nodes) {
+    double worst = 0.0;
+    for (std::size_t side = 0; side < 2; ++side) {
+      for (std::size_t f = 1; f < 5; ++f) {
+        for (std::size_t j = 0; j < 3; ++j) {
+          const int node = nodes.fingers[side][f][j];
+          const int child = j < 2 ? nodes.fingers[side][f][j + 1] : nodes.fingertips[side][f];
+          if (node < 0 || child < 0) continue;
+          worst = std::max(worst, past_limit(pose.local[static_cast<std::size_t>(node)].rotation,
+                                             asset.nodes[static_cast<std::size_t>(child)].rest.translation,
+                                             static_cast<int>(side), limits_[f][j]));
+        }
+      }
+    }
+    measure(who + ": finger joints past their limits (worst joint)", "deg", 0.5)
+        .samples.push_back(worst);
+  }
+
+  void brass(ecs::Entity performer, const brass_family::BrassRig& rig) {
+    const ecs::World& world = stage_.world();
+    const auto* horn = world.try_get<stage::PlacedModel>(rig.horn);
+    const auto* body = world.try_get<stage::PlacedModel>(rig.body);
+    if (horn == nullptr || body == nullptr) return;
+    const std::string who = name_of(world, performer);
+    world_of(*horn, horn_world_);
+    world_of(*body, body_world_);
+    const model::ModelAsset& body_asset = *body->asset;
+    const auto body_point = [&](const std::string& node) -> const glm::mat4* {
+      const int n = body_asset.find_node(node);
+      return n < 0 ? nullptr : &body_world_[static_cast<std::size_t>(n)];
+    };
+    if (const auto* valve = world.try_get<components::Valve>(rig.instrument)) {
+      for (std::size_t v = 0; v < 3; ++v) {
+        if (rig.valves[v] < 0 || valve->press[v] <= 0.5f) continue;
+        const glm::mat4* tip = body_point(std::string(kFingerNames[v + 1]) + "_tip_r");
+        if (tip == nullptr) continue;
+        const glm::vec3 button = origin(horn_world_[static_cast<std::size_t>(rig.valves[v])]);
+        measure(who + ": pressing fingertip to its button top", "mm", 10.0, true)
+            .samples.push_back(static_cast<double>(glm::distance(origin(*tip), button)) * 1000.0);
+      }
+      const int casing = rig.valves[1];
+      const int left_palm = rig.body_nodes.grip_left;
+      if (casing >= 0 && left_palm >= 0) {
+        const int parent = horn->asset->nodes[static_cast<std::size_t>(casing)].parent;
+        const glm::mat3 frame = parent >= 0 ? glm::mat3(horn_world_[static_cast<std::size_t>(parent)])
+                                            : glm::mat3(horn->root);
+        measure(who + ": left palm's centre to the valve casings' axis", "mm", 40.0)
+            .samples.push_back(distance_to_line(origin(body_world_[static_cast<std::size_t>(left_palm)]),
+                                                origin(horn_world_[static_cast<std::size_t>(casing)]),
+                                                frame * rig.valve_axis[1]) *
+                               1000.0);
+      }
+    }
+    if (const auto* slide = world.try_get<components::Slide>(rig.instrument);
+        slide != nullptr && rig.grip_right >= 0 && rig.body_nodes.grip_right >= 0) {
+      const glm::vec3 palm = origin(body_world_[static_cast<std::size_t>(rig.body_nodes.grip_right)]);
+      const glm::vec3 brace = origin(horn_world_[static_cast<std::size_t>(rig.grip_right)]);
+      const double distance = static_cast<double>(glm::distance(palm, brace)) * 1000.0;
+      measure(who + ": right palm to the slide grip", "mm", 20.0).samples.push_back(distance);
+      if (slide->speed_mm_per_s != 0.0) {
+        measure(who + ": right palm to the slide grip while the slide moves", "mm", 20.0)
+            .samples.push_back(distance);
+      }
+    }
+    std::vector<glm::vec3> hands;
+    for (const char* node : {"hand_l", "hand_r"}) {
+      if (const glm::mat4* m = body_point(node)) hands.push_back(origin(*m));
+    }
+    for (int f = 0; f < 5; ++f) {
+      for (const char* side : {"_l", "_r"}) {
+        if (const glm::mat4* m = body_point(std::string(kFingerNames[f]) + "_tip" + side)) {
+          hands.push_back(origin(*m));
+        }
+      }
+    }
+    head_clearance(who, rig.body_nodes.head, hands);
+    for (const int elbow : {rig.body_nodes.arm_left.lower, rig.body_nodes.arm_right.lower}) {
+      if (elbow >= 0) hands.push_back(origin(body_world_[static_cast<std::size_t>(elbow)]));
+    }
+    torso_clearance(who, rig.body_nodes.hips, rig.body_nodes.neck, hands);
+    if (!rig.body_nodes.mapped) finger_limits(who, body_asset, body->pose, rig.body_nodes);
+  }
+
+  void piano(ecs::Entity performer, const piano_family::PianoRig& rig, double t_s, double dt_s) {
+    const ecs::World& world = stage_.world();
+    const auto* piano = world.try_get<stage::PlacedModel>(rig.piano);
+    if (piano == nullptr) return;
+    const std::string who = name_of(world, performer);
+    world_of(*piano, horn_world_);
+    std::vector<glm::vec3> tips;
+    for (std::size_t side = 0; side < 2; ++side) {
+      const auto* hand = world.try_get<stage::PlacedModel>(rig.hand_models[side]);
+      if (hand == nullptr) continue;
+      world_of(*hand, hand_world_);
+      for (std::size_t f = 0; f < 5; ++f) {
+        const int tip_node =
+            hand->asset->find_node(std::string(kFingerNames[f]) + "_tip" + (side == 0 ? "_r" : "_l"));
+        if (tip_node < 0) continue;
+        const glm::vec3 tip = origin(hand_world_[static_cast<std::size_t>(tip_node)]);
+        tips.push_back(tip);
+        const auto* finger = world.try_get<components::Finger>(rig.fingers[side][f]);
+        if (finger == nullptr || finger->press_depth < 0.999 || finger->key < 0 ||
+            finger->key > 127) {
+          continue;
+        }
+        const int key_node = rig.key_nodes[static_cast<std::size_t>(finger->key)];
+        if (key_node < 0) continue;
+        // The key's top surface is its node's y = 0 plane (the pivot at the top's back edge). The
+        // flesh ends in a rounded cap whose outermost point is the tip node: the pad's lowest
+        // point is the cap's centre less its radius.
+        const int dip_node =
+            hand->asset->find_node(std::string(kFingerNames[f]) + "_3" + (side == 0 ? "_r" : "_l"));
+        const glm::vec3 last_bone =
+            dip_node >= 0 ? tip - origin(hand_world_[static_cast<std::size_t>(dip_node)])
+                          : glm::vec3(0, -1, 0);
+        const float radius = static_cast<float>(kPadRadiusMm[f] / 1000.0);
+        const glm::vec3 cap_centre = tip - radius * glm::normalize(last_bone);
+        const glm::mat4 key_frame = glm::inverse(horn_world_[static_cast<std::size_t>(key_node)]);
+        const glm::vec3 centre_local = key_frame * glm::vec4(cap_centre, 1.0f);
+        // Key frames carry no scale: a length in it is a length in the world.
+        // The thumb strikes with the side of its tip: reported on its own.
+        PoseMeasure& pad = measure(who + (f == 0 ? ": thumb's" : ": pressing fingertip's") +
+                                       " pad above its key's top at key bottom",
+                                   "mm", 3.0);
+        pad.two_sided = true;
+        pad.samples.push_back((static_cast<double>(centre_local.y) - kPadRadiusMm[f] / 1000.0) *
+                               1000.0);
+      }
+    }
+    // The keys: how far each is down, and whether a note of it sounds (or is being struck or
+    // released: 0.1 s before the onset to 0.1 s after the offset).
+    for (int key = 0; key < 128; ++key) {
+      const int node = rig.key_nodes[static_cast<std::size_t>(key)];
+      const double dip = rig.key_dip_rad[static_cast<std::size_t>(key)];
+      if (node < 0 || dip <= 0.0) continue;
+      const glm::quat& r = piano->pose.local[static_cast<std::size_t>(node)].rotation;
+      const double angle = 2.0 * std::asin(std::min(
+                                     1.0, static_cast<double>(glm::length(glm::vec3(r.x, r.y, r.z)))));
+      const double down = angle / dip;
+      if (down <= 1e-4) continue;
+      bool sounding = false;
+      bool striking = false;
+      for (const auto& [e, note] : notes_) {
+        if (note->pitch != key || note->performer != performer) continue;
+        sounding = sounding || note->sounding;
+        striking = striking || (t_s >= note->onset_s - 0.1 && t_s <= note->offset_s + 0.1);
+      }
+      key_seconds_ += dt_s;
+      if (down > 0.25 && down < 0.75 && !sounding) {
+        key_mid_silent_ += dt_s;
+        if (!striking) key_mid_resting_ += dt_s;
+      }
+    }
+    head_tips_ = tips;
+    if (const auto* body = world.try_get<stage::PlacedModel>(rig.body)) {
+      world_of(*body, body_world_);
+      head_clearance(who, rig.body_nodes.head, head_tips_);
+    }
+    pianist_ = who;
+  }
+
+  void collect_notes() {
+    notes_.clear();
+    stage_.world().view<const components::Note>().each(
+        [&](ecs::Entity e, const components::Note& note) { notes_.emplace_back(e, &note); });
+  }
+
+  void finish() {
+    if (key_seconds_ <= 0.0) return;
+    // Informational: a key passes through half travel on every stroke and release.
+    measure(pianist_ + ": key-seconds half down (25-75 %) with no note of the key sounding", "%")
+        .samples.push_back(100.0 * key_mid_silent_ / key_seconds_);
+    measure(pianist_ + ": ... of them outside the keys' strokes (a key left hanging)", "%", 1.0)
+        .samples.push_back(100.0 * key_mid_resting_ / key_seconds_);
+  }
+
+ private:
+  stage::Stage& stage_;
+  PoseReport& report_;
+  std::vector<glm::mat4> horn_world_, body_world_, hand_world_;
+  std::vector<glm::vec3> head_tips_;
+  FingerLimits limits_;
+  std::vector<std::pair<ecs::Entity, const components::Note*>> notes_;
+  double key_seconds_ = 0.0, key_mid_silent_ = 0.0, key_mid_resting_ = 0.0;
+  std::string pianist_;
+};
+
+}  // namespace
+
+double PoseMeasure::percentile(double p) const {
+  if (samples.empty()) return 0.0;
+  std::vector<double> sorted = samples;
+  std::sort(sorted.begin(), sorted.end());
+  const double at = std::clamp(p, 0.0, 1.0) * static_cast<double>(sorted.size() - 1);
+  return sorted[static_cast<std::size_t>(std::ceil(at))];
+}
+
+bool PoseMeasure::within_limit() const {
+  if (limit < 0.0) return true;
+  if (two_sided) return std::max(-percentile(0.0), worst()) <= limit;
+  return (by_p95 ? percentile(0.95) : worst()) <= limit;
+}
+
+const PoseMeasure* PoseReport::find(const std::string& name) const {
+  for (const PoseMeasure& m : measures) {
+    if (m.name == name) return &m;
+  }
+  return nullptr;
+}
+
+Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& options) {
+  if (options.fps < 1 || options.fps > 240) return Error{"fps must be 1..240"};
+  if (!(options.to_s > options.from_s)) return Error{"nothing to check: the range is empty"};
+  auto limits = load_finger_limits(options.content_dir);
+  if (!limits) return limits.error();
+  PoseReport report;
+  Checker checker(stage, report, *limits);
+  checker.collect_notes();
+  const double dt = 1.0 / options.fps;
+  const auto frames = static_cast<std::int64_t>(std::ceil((options.to_s - options.from_s) * options.fps));
+  for (std::int64_t k = 0; k < frames; ++k) {
+    const double t = options.from_s + static_cast<double>(k) * dt;
+    stage.run({t, dt});
+    ++report.frames;
+    for (ecs::Entity performer : stage.performers()) {
+      if (const auto* rig = stage.world().try_get<brass_family::BrassRig>(performer)) {
+        checker.brass(performer, *rig);
+      }
+      if (const auto* rig = stage.world().try_get<piano_family::PianoRig>(performer)) {
+        checker.piano(performer, *rig, t, dt);
+      }
+    }
+  }
+  checker.finish();
+  return report;
+}
+
+std::string format_pose_report(const PoseReport& report) {
+  std::string out;
+  char line[512];
+  std::snprintf(line, sizeof line, "%zu frames\n%-80s %7s %7s %7s %7s %7s %10s\n", report.frames,
+                "measure", "samples", "min", "median", "p95", "max", "limit");
+  out += line;
+  for (const PoseMeasure& m : report.measures) {
+    char limit[32] = "";
+    if (m.limit >= 0.0) {
+      std::snprintf(limit, sizeof limit, "%s%g %s", m.by_p95 ? "p95<=" : m.two_sided ? "|x|<=" : "<=",
+                    m.limit, m.within_limit() ? "ok" : "OVER");
+    }
+    std::snprintf(line, sizeof line, "%-80s %7zu %7.1f %7.1f %7.1f %7.1f %10s\n",
+                  (m.name + " (" + m.unit + ")").c_str(), m.samples.size(), m.percentile(0.0),
+                  m.percentile(0.5), m.percentile(0.95), m.worst(), limit);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace tutti::performance

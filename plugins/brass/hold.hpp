@@ -1,0 +1,46 @@
+#pragma once
+// How a player holds an instrument, read from content/instruments/holds/<model>.json: where each
+// palm rests, which fingertip works which valve, how far the fingers curl, how the instrument is
+// carried (bell angle, standing and seated) and where the elbows go. The pose system turns it
+// into arm IK toward those contacts and finger IK onto the buttons.
+
+#include <array>
+#include <filesystem>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include <tutti/core/result.hpp>
+
+namespace tutti::brass_family {
+
+struct HandHold {
+  std::string palm_at;  // instrument node the palm's centre holds; empty: the fingertips place it
+  // Instrument node under each fingertip (thumb .. little), empty for none.
+  std::array<std::string, 5> fingertip_on{};
+  float pad_above_button_m = 0.006f;  // fingertip node above the button's top (the pad's flesh)
+  float metacarpal_lean_rad = 0.0f;   // knuckles leaning over the buttons from the upright
+  std::array<float, 3> finger_curl_rad{};  // MCP, PIP, DIP flexion of the fingers not on a button
+  std::array<float, 3> little_curl_rad{};  // the little finger's, when it has its own
+  bool little_own_curl = false;
+  float thumb_curl_rad = 0.0f;
+};
+
+struct Hold {
+  float bell_tilt_standing_rad = 0.0f;
+  float bell_tilt_seated_rad = 0.0f;
+  // How far the bell may dip further when a grip is out of reach after the chest and shoulder
+  // have turned toward it (the trombone's far positions).
+  float reach_dip_rad = 0.0f;
+  glm::vec3 elbow_pole{1.0f, 0.8f, 0.3f};  // down, out to the side, back
+  std::array<HandHold, 2> hands;             // left, right
+
+  bool fingertips_place(int hand) const {
+    return hands[static_cast<std::size_t>(hand)].palm_at.empty();
+  }
+};
+
+// Reads and checks one hold file; errors name the file and the JSON path.
+Result<Hold> load_hold(const std::filesystem::path& file);
+
+}  // namespace tutti::brass_family
