@@ -94,12 +94,6 @@ void world_of(const stage::PlacedModel& placed, std::vector<glm::mat4>& out) {
   model::compute_world_matrices(*placed.asset, placed.pose, placed.root, out);
 }
 
-double distance_to_line(const glm::vec3& p, const glm::vec3& on_line, const glm::vec3& direction) {
-  const glm::vec3 d = glm::normalize(direction);
-  const glm::vec3 v = p - on_line;
-  return static_cast<double>(glm::length(v - glm::dot(v, d) * d));
-}
-
 double distance_to_segment(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
   const glm::vec3 ab = b - a;
   const float t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-12f), 0.0f, 1.0f);
@@ -188,37 +182,51 @@ class Checker {
       return n < 0 ? nullptr : &body_world_[static_cast<std::size_t>(n)];
     };
     if (const auto* valve = world.try_get<components::Valve>(rig.instrument)) {
-      for (std::size_t v = 0; v < 3; ++v) {
+      for (std::size_t v = 0; v < brass_family::BrassRig::kMaxValves; ++v) {
         if (rig.valves[v] < 0 || valve->press[v] <= 0.5f) continue;
-        const glm::mat4* tip = body_point(std::string(kFingerNames[v + 1]) + "_tip_r");
-        if (tip == nullptr) continue;
-        const glm::vec3 button = origin(horn_world_[static_cast<std::size_t>(rig.valves[v])]);
-        measure(who + ": pressing fingertip to its button top", "mm", 10.0, true)
-            .samples.push_back(static_cast<double>(glm::distance(origin(*tip), button)) * 1000.0);
-      }
-      const int casing = rig.valves[1];
-      const int left_palm = rig.body_nodes.grip_left;
-      if (casing >= 0 && left_palm >= 0) {
-        const int parent = horn->asset->nodes[static_cast<std::size_t>(casing)].parent;
-        const glm::mat3 frame = parent >= 0 ? glm::mat3(horn_world_[static_cast<std::size_t>(parent)])
-                                            : glm::mat3(horn->root);
-        measure(who + ": left palm's centre to the valve casings' axis", "mm", 40.0)
-            .samples.push_back(distance_to_line(origin(body_world_[static_cast<std::size_t>(left_palm)]),
-                                                origin(horn_world_[static_cast<std::size_t>(casing)]),
-                                                frame * rig.valve_axis[1]) *
-                               1000.0);
+        // The finger the hold puts on this valve's button; when it puts none (a palm hold), the
+        // right index, middle, ring and little fingers on valves 1-4, as players finger them.
+        bool held = false;
+        for (const auto& hand : rig.fingertip_on) {
+          for (const int node : hand) held = held || node == rig.valves[v];
+        }
+        for (std::size_t side = 0; side < 2; ++side) {
+          for (std::size_t f = 0; f < 5; ++f) {
+            const bool on_it = held ? rig.fingertip_on[side][f] == rig.valves[v]
+                                    : side == 1 && f == v + 1;
+            if (!on_it) continue;
+            const int tip = rig.body_nodes.fingertips[side][f];
+            if (tip < 0) continue;
+            const glm::vec3 button = origin(horn_world_[static_cast<std::size_t>(rig.valves[v])]);
+            measure(who + ": pressing fingertip to its button top", "mm", 10.0, true)
+                .samples.push_back(static_cast<double>(glm::distance(
+                                       origin(body_world_[static_cast<std::size_t>(tip)]), button)) *
+                                   1000.0);
+          }
+        }
       }
     }
+    // Palms that hold a grip (the hold's palm_at): the palm's centre to it.
+    for (std::size_t side = 0; side < 2; ++side) {
+      const int grip = side == 0 ? rig.grip_left : rig.grip_right;
+      const int palm = side == 0 ? rig.body_nodes.grip_left : rig.body_nodes.grip_right;
+      if (rig.hold.hands[side].palm_at.empty() || grip < 0 || palm < 0) continue;
+      const double distance =
+          static_cast<double>(glm::distance(origin(body_world_[static_cast<std::size_t>(palm)]),
+                                            origin(horn_world_[static_cast<std::size_t>(grip)]))) *
+          1000.0;
+      measure(who + (side == 0 ? ": left palm to its grip (" : ": right palm to its grip (") +
+                  rig.hold.hands[side].palm_at + ")",
+              "mm", 20.0)
+          .samples.push_back(distance);
+    }
     if (const auto* slide = world.try_get<components::Slide>(rig.instrument);
-        slide != nullptr && rig.grip_right >= 0 && rig.body_nodes.grip_right >= 0) {
+        slide != nullptr && slide->speed_mm_per_s != 0.0 && rig.grip_right >= 0 &&
+        rig.body_nodes.grip_right >= 0) {
       const glm::vec3 palm = origin(body_world_[static_cast<std::size_t>(rig.body_nodes.grip_right)]);
       const glm::vec3 brace = origin(horn_world_[static_cast<std::size_t>(rig.grip_right)]);
-      const double distance = static_cast<double>(glm::distance(palm, brace)) * 1000.0;
-      measure(who + ": right palm to the slide grip", "mm", 20.0).samples.push_back(distance);
-      if (slide->speed_mm_per_s != 0.0) {
-        measure(who + ": right palm to the slide grip while the slide moves", "mm", 20.0)
-            .samples.push_back(distance);
-      }
+      measure(who + ": right palm to the slide grip while the slide moves", "mm", 20.0)
+          .samples.push_back(static_cast<double>(glm::distance(palm, brace)) * 1000.0);
     }
     std::vector<glm::vec3> hands;
     for (const char* node : {"hand_l", "hand_r"}) {

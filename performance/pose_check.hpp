@@ -46,11 +46,11 @@ struct PoseReport {
 
 // Poses `stage` at every frame of the options' range and measures, for every performer the
 // stage has:
-//  - brass, valves: each pressing fingertip (index, middle, ring on valves 1-3) to its button's
-//    top while the valve is down (mm; limits p95 ≤ 10, max ≤ 20); the left hand's origin to the
-//    valve casings' axis (mm, ≤ 60);
-//  - brass, slide: the right palm to the slide's grip, always and while the slide moves (mm,
-//    ≤ 20);
+//  - brass, valves: each pressing fingertip (the finger the hold puts on that valve) to its
+//    button's top while the valve is down (mm; limit p95 ≤ 10);
+//  - brass: each palm the hold puts on a grip to it (the trumpet's left palm round the valve
+//    casings, the trombone's right palm on the slide grip, ...; mm, ≤ 20), and the trombone's
+//    right palm while the slide moves;
 //  - piano: the pressing fingertip's pad to its key's top surface at key bottom (mm; negative:
 //    into the key); key-seconds with a key between 25 % and 75 % down and no note of it sounding,
 //    as a share of the keys' animated key-seconds — all of them, and outside the strokes of its

@@ -1,6 +1,7 @@
 #include <tutti/generator/dimensions.hpp>
 
 #include <array>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include <tutti/content/json_reader.hpp>
@@ -34,7 +35,8 @@ Result<AssetDimensions> AssetDimensions::from_json(const nlohmann::json& documen
   const content::JsonReader reader(file_name);
   if (auto ok = reader.check_keys(document, "",
                                   {"description", "piano", "music_stand", "chair", "stage",
-                                   "trumpet", "trombone", "performer"});
+                                   "trumpet", "trombone", "euphonium", "tuba", "horn",
+                                   "performer"});
       !ok) {
     return ok.error();
   }
@@ -118,6 +120,64 @@ Result<AssetDimensions> AssetDimensions::from_json(const nlohmann::json& documen
       NumberField{"tuning_bow_back_mm", &b.tuning_bow_back_mm, 100.0, 400.0},
   };
   if (auto ok = read_section(reader, document, "trombone", trombone); !ok) return ok.error();
+
+  for (const char* name : {"euphonium", "tuba"}) {
+    UprightDimensions& u = std::string(name) == "tuba" ? d.tuba : d.euphonium;
+    const std::array upright{
+        NumberField{"height_mm", &u.height_mm, 400.0, 1300.0},
+        NumberField{"top_above_mm", &u.top_above_mm, 0.0, 600.0},
+        NumberField{"bell_diameter_mm", &u.bell_diameter_mm, 150.0, 600.0},
+        NumberField{"bell_tilt_deg", &u.bell_tilt_deg, 0.0, 45.0},
+        NumberField{"bell_forward_mm", &u.bell_forward_mm, 80.0, 500.0},
+        NumberField{"bell_left_mm", &u.bell_left_mm, 0.0, 300.0},
+        NumberField{"bore_mm", &u.bore_mm, 10.0, 25.0},
+        NumberField{"mouthpiece_length_mm", &u.mouthpiece_length_mm, 60.0, 140.0},
+        NumberField{"mouthpiece_rim_diameter_mm", &u.mouthpiece_rim_diameter_mm, 25.0, 60.0},
+        NumberField{"valve_casing_diameter_mm", &u.valve_casing_diameter_mm, 15.0, 45.0},
+        NumberField{"valve_pitch_mm", &u.valve_pitch_mm, 15.0, 60.0},
+        NumberField{"valves_forward_mm", &u.valves_forward_mm, 40.0, 400.0},
+        NumberField{"valves_right_mm", &u.valves_right_mm, 20.0, 250.0},
+        NumberField{"button_drop_mm", &u.button_drop_mm, 0.0, 400.0},
+        NumberField{"button_diameter_mm", &u.button_diameter_mm, 8.0, 35.0},
+        NumberField{"piston_travel_mm", &u.piston_travel_mm, 5.0, 40.0},
+    };
+    if (auto ok = read_section(reader, document, name, upright); !ok) return ok.error();
+    const std::string at = std::string("/") + name;
+    if (u.valve_pitch_mm < u.valve_casing_diameter_mm) {
+      return reader.error(at + "/valve_pitch_mm", "must be at least valve_casing_diameter_mm");
+    }
+    if (u.top_above_mm + u.button_drop_mm + 200.0 > u.height_mm) {
+      return reader.error(at + "/height_mm",
+                          "must exceed top_above_mm + button_drop_mm by 200 (the valve block)");
+    }
+  }
+
+  HornDimensions& h = d.horn;
+  const std::array horn{
+      NumberField{"bore_mm", &h.bore_mm, 8.0, 16.0},
+      NumberField{"bell_diameter_mm", &h.bell_diameter_mm, 200.0, 400.0},
+      NumberField{"bell_flare_mm", &h.bell_flare_mm, 150.0, 450.0},
+      NumberField{"bell_back_x", &h.bell_back_x, 0.0, 2.0},
+      NumberField{"bell_back_y", &h.bell_back_y, 0.0, 2.0},
+      NumberField{"mouthpiece_length_mm", &h.mouthpiece_length_mm, 50.0, 120.0},
+      NumberField{"mouthpiece_rim_diameter_mm", &h.mouthpiece_rim_diameter_mm, 15.0, 40.0},
+      NumberField{"valves_left_mm", &h.valves_left_mm, 0.0, 200.0},
+      NumberField{"valves_drop_mm", &h.valves_drop_mm, 20.0, 300.0},
+      NumberField{"valves_forward_mm", &h.valves_forward_mm, 60.0, 400.0},
+      NumberField{"rotor_diameter_mm", &h.rotor_diameter_mm, 15.0, 50.0},
+      NumberField{"rotor_pitch_mm", &h.rotor_pitch_mm, 15.0, 60.0},
+      NumberField{"lever_left_mm", &h.lever_left_mm, 20.0, 100.0},
+      NumberField{"lever_rise_mm", &h.lever_rise_mm, 0.0, 40.0},
+      NumberField{"lever_travel_mm", &h.lever_travel_mm, 3.0, 25.0},
+      NumberField{"coil_right_mm", &h.coil_right_mm, -100.0, 300.0},
+      NumberField{"coil_drop_mm", &h.coil_drop_mm, 50.0, 500.0},
+      NumberField{"coil_forward_mm", &h.coil_forward_mm, 80.0, 500.0},
+      NumberField{"coil_radius_mm", &h.coil_radius_mm, 80.0, 250.0},
+  };
+  if (auto ok = read_section(reader, document, "horn", horn); !ok) return ok.error();
+  if (h.rotor_pitch_mm < h.rotor_diameter_mm) {
+    return reader.error("/horn/rotor_pitch_mm", "must be at least rotor_diameter_mm");
+  }
 
   PerformerDimensions& r = d.performer;
   const std::array performer{

@@ -87,6 +87,52 @@ struct TromboneDimensions {
   double tuning_bow_back_mm = 230.0;     // tuning-slide bow behind the mouthpiece rim
 };
 
+// An upright valved instrument (upright_brass.hpp): euphonium or tuba, four top-action pistons
+// in a row on the player's right, the bell up. Lengths from the mouthpiece rim (the player at
+// +Z, their right +X, up +Y).
+struct UprightDimensions {
+  double height_mm = 640.0;            // bottom bow to bell rim
+  double top_above_mm = 180.0;         // bell rim above the mouthpiece rim
+  double bell_diameter_mm = 300.0;
+  double bell_tilt_deg = 12.0;         // bell axis from vertical, toward the audience
+  double bell_forward_mm = 200.0;      // bell branch axis ahead of the mouthpiece
+  double bell_left_mm = 90.0;          // bell branch axis to the player's left
+  double bore_mm = 14.5;
+  double mouthpiece_length_mm = 90.0;
+  double mouthpiece_rim_diameter_mm = 40.0;
+  double valve_casing_diameter_mm = 24.0;
+  double valve_pitch_mm = 30.0;        // centre to centre, front to back
+  double valves_forward_mm = 110.0;    // first valve ahead of the mouthpiece
+  double valves_right_mm = 70.0;       // valve row to the player's right
+  double button_drop_mm = 110.0;       // button tops below the mouthpiece
+  double button_diameter_mm = 18.0;
+  double piston_travel_mm = 20.0;
+};
+
+// A double horn (horn_asset.hpp). Lengths from the mouthpiece rim (the player at +Z, their right
+// +X, up +Y).
+struct HornDimensions {
+  double bore_mm = 12.0;
+  double bell_diameter_mm = 310.0;
+  double bell_flare_mm = 280.0;          // the bell's length from its throat to the rim
+  double bell_back_x = 0.55;             // the bell's axis: (x, -y, 1) normalised, pointing back
+  double bell_back_y = 0.45;             //   toward the player's right side and down
+  double mouthpiece_length_mm = 80.0;
+  double mouthpiece_rim_diameter_mm = 27.0;
+  double valves_left_mm = 60.0;          // rotor row to the player's left of the mouthpiece
+  double valves_drop_mm = 110.0;         // rotor row's middle below the mouthpiece
+  double valves_forward_mm = 150.0;      // first rotor ahead of the mouthpiece
+  double rotor_diameter_mm = 30.0;
+  double rotor_pitch_mm = 30.0;          // centre to centre, front to back
+  double lever_left_mm = 45.0;           // lever pads to the left of their rotors
+  double lever_rise_mm = 8.0;            // pad tops above the casings' tops
+  double lever_travel_mm = 10.0;         // pad top at rest to fully down
+  double coil_right_mm = 60.0;           // the coils' centre
+  double coil_drop_mm = 250.0;
+  double coil_forward_mm = 240.0;
+  double coil_radius_mm = 150.0;
+};
+
 // The performer rig (performer_asset.hpp): an adult of about 1.75 m standing in the A-pose. Bone
 // lengths are joint to joint; the head's joint is at chin height, the crown head_height_mm above.
 struct PerformerDimensions {
@@ -113,6 +159,9 @@ struct AssetDimensions {
   StageDimensions stage;
   TrumpetDimensions trumpet;
   TromboneDimensions trombone;
+  UprightDimensions euphonium;
+  UprightDimensions tuba;
+  HornDimensions horn;
   PerformerDimensions performer;
 
   static Result<AssetDimensions> load(const std::filesystem::path& path);

@@ -7,10 +7,12 @@
 #include <tutti/core/file_io.hpp>
 #include <tutti/generator/brass_assets.hpp>
 #include <tutti/generator/hand_asset.hpp>
+#include <tutti/generator/horn_asset.hpp>
 #include <tutti/generator/performer_asset.hpp>
 #include <tutti/generator/piano_asset.hpp>
 #include <tutti/generator/props.hpp>
 #include <tutti/generator/stage_asset.hpp>
+#include <tutti/generator/upright_brass.hpp>
 #include <tutti/piano_model/keyboard.hpp>
 
 namespace tutti::content_generator {
@@ -31,8 +33,9 @@ Status write_glb(const tinygltf::Model& model, const std::filesystem::path& path
 }
 
 std::vector<std::string> asset_file_names() {
-  return {"piano.glb",    "music_stand.glb", "chair.glb",     "stage.glb",    "trumpet.glb",
-          "trombone.glb", "hand_right.glb",  "hand_left.glb", "performer.glb"};
+  return {"piano.glb",     "music_stand.glb", "chair.glb",     "stage.glb",     "trumpet.glb",
+          "trombone.glb",  "hand_right.glb",  "hand_left.glb", "performer.glb", "euphonium.glb",
+          "tuba.glb",      "horn.glb"};
 }
 
 Status generate_assets(const std::filesystem::path& content_dir,
@@ -67,7 +70,10 @@ Status generate_assets(const std::filesystem::path& content_dir,
       build_trombone(trombone->slide_length_mm, dimensions->trombone),
       build_hand(*right_hand),
       build_hand(*left_hand),
-      build_performer(dimensions->performer, *right_hand, *left_hand)};
+      build_performer(dimensions->performer, *right_hand, *left_hand),
+      build_upright("euphonium", dimensions->euphonium),
+      build_upright("tuba", dimensions->tuba),
+      build_horn(dimensions->horn)};
   const std::vector<std::string> names = asset_file_names();
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (Status status = write_glb(models[i], out_dir / names[i]); !status.ok()) return status;

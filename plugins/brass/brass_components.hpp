@@ -37,12 +37,16 @@ struct BrassRig {
   bool trombone = false;
   bool seated = false;
   stage::BodyNodes body_nodes;
-  std::array<int, 3> valves{-1, -1, -1};
-  std::array<double, 3> valve_travel_m{0.0, 0.0, 0.0};
+  static constexpr std::size_t kMaxValves = 4;  // the models' pistons (valve_1 .. valve_4)
+  std::array<int, kMaxValves> valves{-1, -1, -1, -1};
+  std::array<double, kMaxValves> valve_travel_m{};
+  // Rotary valves' caps (rotor_1 ..), turning a quarter about their local +Y as the valve goes
+  // down (-1: none).
+  std::array<int, kMaxValves> rotors{-1, -1, -1, -1};
   // Press and slide directions in the nodes' parent frames (tutti's −Y and −Z there; a user's
   // model may have other axes).
-  std::array<glm::vec3, 3> valve_axis{glm::vec3(0, -1, 0), glm::vec3(0, -1, 0),
-                                      glm::vec3(0, -1, 0)};
+  std::array<glm::vec3, kMaxValves> valve_axis{glm::vec3(0, -1, 0), glm::vec3(0, -1, 0),
+                                               glm::vec3(0, -1, 0), glm::vec3(0, -1, 0)};
   glm::vec3 slide_axis{0, 0, -1};
   glm::mat4 horn_correction{1.0f};  // a user's instrument into tutti's frame (mapping file)
   int slide = -1;

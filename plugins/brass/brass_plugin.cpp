@@ -1,6 +1,7 @@
 #include <tutti/brass/brass_plugin.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
@@ -60,10 +61,9 @@ void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const Bra
 // The instrument and, when there is one, the body of the player; their nodes; the stand and the
 // chair.
 Status bind_player(stage::StageBuilder& builder, const scene::Performer& performer,
-                   std::uint32_t stand_model, std::uint32_t chair_model, bool rig_generated,
-                   BrassRig& rig) {
-  auto horn = stage::load_mapped(builder, performer.instrument_mapping,
-                                 rig.trombone ? "trombone.glb" : "trumpet.glb");
+                   const std::string& model_stem, std::uint32_t stand_model,
+                   std::uint32_t chair_model, bool rig_generated, BrassRig& rig) {
+  auto horn = stage::load_mapped(builder, performer.instrument_mapping, model_stem + ".glb");
   if (!horn) return horn.error();
   if (rig_generated || !performer.character_mapping.empty()) {
     auto body = stage::load_mapped(builder, performer.character_mapping, "performer.glb");
@@ -76,11 +76,19 @@ Status bind_player(stage::StageBuilder& builder, const scene::Performer& perform
   rig.horn = builder.place(horn->model, rig.placement);
   rig.horn_correction = horn->correction;
   const model::ModelAsset& horn_asset = builder.model(horn->model);
-  for (std::size_t v = 0; v < 3; ++v) {
+  for (std::size_t v = 0; v < BrassRig::kMaxValves; ++v) {
     auto node = stage::find_role(horn_asset, *horn, "valve_" + std::to_string(v + 1));
     if (!node) return node.error();
     rig.valves[v] = *node;
     rig.valve_axis[v] = stage::local_axis(horn_asset, *node, horn->correction, {0, -1, 0});
+    // A pad turned in its parent (the horn's thumb trigger) presses along its own -Y.
+    if (*node >= 0 && !horn->mapping) {
+      const glm::quat& turned = horn_asset.nodes[static_cast<std::size_t>(*node)].rest.rotation;
+      if (std::abs(turned.w) < 0.9999f) rig.valve_axis[v] = turned * glm::vec3(0, -1, 0);
+    }
+    auto rotor = stage::find_role(horn_asset, *horn, "rotor_" + std::to_string(v + 1));
+    if (!rotor) return rotor.error();
+    rig.rotors[v] = *rotor;
     rig.valve_travel_m[v] = extra_number(horn_asset, *node, "travel_mm", 18.0) / 1000.0;
   }
   for (auto [slot, role] : {std::pair{&rig.slide, "slide"},
@@ -92,7 +100,6 @@ Status bind_player(stage::StageBuilder& builder, const scene::Performer& perform
     *slot = *node;
   }
   rig.slide_axis = stage::local_axis(horn_asset, rig.slide, horn->correction, {0, 0, -1});
-  const std::string model_stem = rig.trombone ? "trombone" : "trumpet";
   auto hold = load_hold(builder.content_dir() / "instruments" / "holds" / (model_stem + ".json"));
   if (!hold) return hold.error();
   rig.hold = std::move(*hold);
@@ -223,7 +230,8 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
       valve.count = static_cast<std::uint8_t>(std::min<std::size_t>(played.valves.size(), 6));
       world.add<components::Valve>(rig.instrument, valve);
     }
-    if (Status s = bind_player(builder, performer, *stand_model, *chair_model, rig_generated, rig);
+    if (Status s = bind_player(builder, performer, played.model_name(), *stand_model,
+                               *chair_model, rig_generated, rig);
         !s) {
       return s;
     }

@@ -26,10 +26,11 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig) {
   const model::ModelAsset& horn_asset = *horn->asset;
   stage::reset_pose(horn_asset, horn->pose);
   if (const auto* valve = world.try_get<components::Valve>(rig.instrument)) {
-    for (std::size_t v = 0; v < 3; ++v) {
+    for (std::size_t v = 0; v < BrassRig::kMaxValves; ++v) {
       if (rig.valves[v] < 0) continue;
       horn->pose.local[static_cast<std::size_t>(rig.valves[v])].translation +=
           rig.valve_axis[v] * static_cast<float>(valve->press[v] * rig.valve_travel_m[v]);
+      stage::turn(horn->pose, rig.rotors[v], 0.5f * kPi * valve->press[v], glm::vec3(0, 1, 0));
     }
   }
   if (const auto* slide = world.try_get<components::Slide>(rig.instrument);

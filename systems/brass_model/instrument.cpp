@@ -11,6 +11,13 @@
 
 namespace tutti::brass {
 
+const std::string& Instrument::model_name() const {
+  static const std::string trombone = "trombone";
+  static const std::string trumpet = "trumpet";
+  if (!model.empty()) return model;
+  return mechanism == Mechanism::slide ? trombone : trumpet;
+}
+
 std::span<const Fingering> Instrument::fingerings(int written) const {
   if (!in_range_written(written)) return {};
   const auto index = static_cast<std::size_t>(written - lowest_written);

@@ -62,6 +62,10 @@ struct Instrument {
   // The one a part gets when its name and program fit several (B♭ among the trumpets: most
   // trumpet parts are played on it) and it states no key.
   bool preferred = false;
+  // The generated model that plays it (<model>.glb) and its hold
+  // (instruments/holds/<model>.json); empty: "trombone" for a slide, else "trumpet".
+  std::string model;
+  const std::string& model_name() const;
 
   int sounding(int written) const { return written + transposition_semitones; }
   int written(int sounding) const { return sounding - transposition_semitones; }

@@ -461,7 +461,7 @@ Result<InstrumentFile> parse_instrument_file(const json& doc, const std::string&
   const Fields f(reader);
   if (auto ok = f.keys(doc, "",
                        {"description", "sources", "id", "display_name", "names", "ambiguous_names",
-                        "not_names", "preferred", "gm_programs", "transposition_semitones", "range",
+                        "not_names", "preferred", "model", "gm_programs", "transposition_semitones", "range",
                         "mechanism", "harmonic_series", "conventions", "overrides"});
       !ok) {
     return ok.error();
@@ -514,6 +514,16 @@ Result<InstrumentFile> parse_instrument_file(const json& doc, const std::string&
   if (doc.contains("preferred")) {
     if (!doc.at("preferred").is_boolean()) return f.error("/preferred", "expected true or false");
     inst.preferred = doc.at("preferred").get<bool>();
+  }
+
+  if (doc.contains("model")) {
+    auto model = f.text(doc.at("model"), "/model");
+    if (!model) return model.error();
+    const bool model_ok = !model->empty() && std::all_of(model->begin(), model->end(), [](char c) {
+      return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    });
+    if (!model_ok) return f.error("/model", "expected lower-case letters, digits and '_'");
+    inst.model = *model;
   }
 
   auto programs_value = f.required(doc, "", "gm_programs");

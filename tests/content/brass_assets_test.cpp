@@ -43,7 +43,8 @@ std::array<double, 2> world_extent(const tinygltf::Model& model, const std::stri
 }
 
 TEST_F(BrassAndStage, EveryAssetLoadsAndIsWellFormed) {
-  for (const char* name : {"stage.glb", "trumpet.glb", "trombone.glb"}) {
+  for (const char* name :
+       {"stage.glb", "trumpet.glb", "trombone.glb", "euphonium.glb", "tuba.glb", "horn.glb"}) {
     SCOPED_TRACE(name);
     const tinygltf::Model model = load_glb(assets_->dir() / name);
     expect_valid_buffers(model);
@@ -116,6 +117,63 @@ TEST_F(BrassAndStage, TromboneSlideMaximumComesFromTheInstrumentFile) {
   EXPECT_GE(bell_x[1] - bell_x[0], bell);
   const auto bell_z = world_extent(model, "bell_section", 2);
   EXPECT_NEAR(-bell_z[0], dimensions_["trombone"]["bell_forward_mm"].get<double>() / 1000, 0.003);
+}
+
+// Euphonium and tuba: upright, the bell on top, four pistons in a row on the player's right.
+TEST_F(BrassAndStage, UprightInstrumentsHaveFourPistonsAndTheirRealSize) {
+  for (const char* name : {"euphonium", "tuba"}) {
+    SCOPED_TRACE(name);
+    const tinygltf::Model model = load_glb(assets_->dir() / (std::string(name) + ".glb"));
+    const int root = find_node(model, name);
+    ASSERT_GE(root, 0);
+    for (const char* node : {"mouthpiece", "body", "valve_1", "valve_2", "valve_3", "valve_4",
+                             "grip_left", "grip_right", "thumb_rest"}) {
+      ASSERT_GE(find_node(model, node), 0) << node;
+      EXPECT_EQ(parent_of(model, find_node(model, node)), root) << node;
+    }
+    const nlohmann::json& dims = dimensions_[name];
+    const auto body_y = world_extent(model, "body", 1);
+    EXPECT_NEAR(body_y[1] - body_y[0], dims["height_mm"].get<double>() / 1000, 0.02);
+    EXPECT_NEAR(body_y[1], dims["top_above_mm"].get<double>() / 1000, 0.02);
+    const auto body_x = world_extent(model, "body", 0);
+    EXPECT_GE(body_x[1] - body_x[0], dims["bell_diameter_mm"].get<double>() / 1000);
+    const double travel = dims["piston_travel_mm"].get<double>();
+    double previous_z = 1.0;
+    for (const char* valve : {"valve_1", "valve_2", "valve_3", "valve_4"}) {
+      EXPECT_DOUBLE_EQ(extra(model, valve, "travel_mm"), travel) << valve;
+      const int node = find_node(model, valve);
+      const auto origin = world_origin(model, node);
+      EXPECT_GT(origin[0], 0.0) << valve << ": on the player's right";
+      EXPECT_NEAR(origin[1], -dims["button_drop_mm"].get<double>() / 1000, 1e-6) << valve;
+      EXPECT_LT(origin[2], previous_z) << valve << ": valve 1 nearest the player";
+      previous_z = origin[2];
+    }
+  }
+}
+
+// The horn: four rotors with their caps, three levers and the thumb's trigger on the player's
+// left, the hook, the bell low on the right with the right palm's place inside it.
+TEST_F(BrassAndStage, HornHasRotorsLeversATriggerAndItsBellOnTheRight) {
+  const tinygltf::Model model = load_glb(assets_->dir() / "horn.glb");
+  const int root = find_node(model, "horn");
+  ASSERT_GE(root, 0);
+  for (const char* node : {"mouthpiece", "body", "rotor_1", "rotor_2", "rotor_3", "rotor_4",
+                           "valve_1", "valve_2", "valve_3", "valve_4", "hook", "grip_right"}) {
+    ASSERT_GE(find_node(model, node), 0) << node;
+    EXPECT_EQ(parent_of(model, find_node(model, node)), root) << node;
+  }
+  const nlohmann::json& dims = dimensions_["horn"];
+  const double travel = dims["lever_travel_mm"].get<double>();
+  for (const char* valve : {"valve_1", "valve_2", "valve_3", "valve_4"}) {
+    EXPECT_DOUBLE_EQ(extra(model, valve, "travel_mm"), travel) << valve;
+    EXPECT_LT(world_origin(model, find_node(model, valve))[0], 0.0) << valve << ": the left hand's";
+  }
+  const auto body_x = world_extent(model, "body", 0);
+  EXPECT_GT(body_x[1], 0.2) << "the bell on the player's right";
+  EXPECT_GE(body_x[1] - body_x[0], dims["bell_diameter_mm"].get<double>() / 1000);
+  const auto grip = world_origin(model, find_node(model, "grip_right"));
+  EXPECT_GT(grip[0], 0.1);
+  EXPECT_LT(grip[1], -0.2) << "the right hand low, in the bell";
 }
 
 TEST_F(BrassAndStage, StageFloorTopIsAtZeroWithItsRealSize) {

@@ -55,6 +55,21 @@ bool same_pose(const Sample& a, const Sample& b) {
   return true;
 }
 
+// Each instrument on its own model, named "<performer> <model>" like the others.
+TEST(Performance, TheQuintetsInstrumentsAreTheirOwnModels) {
+  auto p = open_scene("quintet.json");
+  ASSERT_TRUE(p);
+  for (const char* name : {"Trumpet 1 trumpet", "Trumpet 2 trumpet", "Horn horn",
+                           "Trombone trombone", "Tuba tuba"}) {
+    const ModelInfo& model = p->models()[model_named(*p, name)];
+    EXPECT_EQ(model.name, name);
+  }
+  const ModelInfo& tuba = p->models()[model_named(*p, "Tuba tuba")];
+  node_named(tuba, "valve_4");
+  const ModelInfo& horn = p->models()[model_named(*p, "Horn horn")];
+  node_named(horn, "rotor_1");
+}
+
 TEST(Performance, TheQuartetsPerformersAndTheirModels) {
   auto p = open_scene("quartet.json");
   ASSERT_TRUE(p);
