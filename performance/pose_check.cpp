@@ -94,6 +94,12 @@ void world_of(const stage::PlacedModel& placed, std::vector<glm::mat4>& out) {
   model::compute_world_matrices(*placed.asset, placed.pose, placed.root, out);
 }
 
+double distance_to_line(const glm::vec3& p, const glm::vec3& on_line, const glm::vec3& direction) {
+  const glm::vec3 d = glm::normalize(direction);
+  const glm::vec3 v = p - on_line;
+  return static_cast<double>(glm::length(v - glm::dot(v, d) * d));
+}
+
 double distance_to_segment(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
   const glm::vec3 ab = b - a;
   const float t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-12f), 0.0f, 1.0f);
@@ -205,6 +211,20 @@ class Checker {
           }
         }
       }
+    }
+    // A left hand wrapped round the valve casings: its origin (the wrist) to the casings' axis.
+    if (rig.hold.hands[0].wraps_valves && rig.valves[1] >= 0 && rig.body_nodes.arm_left.end >= 0) {
+      const int casing = rig.valves[1];
+      const int parent = horn->asset->nodes[static_cast<std::size_t>(casing)].parent;
+      const glm::mat3 frame = parent >= 0 ? glm::mat3(horn_world_[static_cast<std::size_t>(parent)])
+                                          : glm::mat3(horn->root);
+      const glm::vec3 wrist =
+          origin(body_world_[static_cast<std::size_t>(rig.body_nodes.arm_left.end)]);
+      measure(who + ": left hand's origin (wrist) to the valve casings' axis", "mm", 60.0)
+          .samples.push_back(distance_to_line(
+                                 wrist, origin(horn_world_[static_cast<std::size_t>(casing)]),
+                                 frame * rig.valve_axis[1]) *
+                             1000.0);
     }
     // Palms that hold a grip (the hold's palm_at): the palm's centre to it.
     for (std::size_t side = 0; side < 2; ++side) {

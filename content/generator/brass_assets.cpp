@@ -109,11 +109,13 @@ tinygltf::Model build_trumpet(const TrumpetDimensions& dims) {
     builder.add_child(trumpet, valve);
   }
   // Grips, in the hand frame of README.md (fingers along local -Z, palm normal local -Y). Left:
-  // palm against the casings' left side, fingers wrapping forward, thumb up.
+  // palm against the casings' left side, fingers wrapping forward and down, thumb up.
+  // Fingers forward and 40° down round the casings toward the third slide, the wrist under
+  // and behind them.
   builder.add_child(trumpet,
                     builder.add_node("grip_left", -1,
                                      {(valve_x - casing_r - 16) / 1000, -0.030, valve_z[1] / 1000},
-                                     about({0, 0, 1}, 90)));
+                                     quat_multiply(about({1, 0, 0}, -40), about({0, 0, 1}, 90))));
   // Where the right thumb and little finger rest (content/instruments/holds/trumpet.json): the
   // node's -Y points into the surface. The thumb against the casings' right side between valves
   // 1 and 2; the little finger on the hook.

@@ -96,7 +96,7 @@ struct UprightDimensions {
   double bell_diameter_mm = 300.0;
   double bell_tilt_deg = 12.0;         // bell axis from vertical, toward the audience
   double bell_forward_mm = 200.0;      // bell branch axis ahead of the mouthpiece
-  double bell_left_mm = 90.0;          // bell branch axis to the player's left
+  double bell_left_mm = 200.0;         // bell branch axis to the player's left (clear of the face)
   double bore_mm = 14.5;
   double mouthpiece_length_mm = 90.0;
   double mouthpiece_rim_diameter_mm = 40.0;

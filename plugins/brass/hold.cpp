@@ -33,7 +33,7 @@ Result<HandHold> read_hand(const content::JsonReader& r, const json& object,
   if (auto ok = r.check_keys(object, path,
                              {"palm_at", "fingertips_on", "pad_above_button_mm",
                               "metacarpal_lean_deg", "finger_curl_deg", "little_curl_deg",
-                              "thumb_curl_deg"});
+                              "thumb_curl_deg", "wraps_valves"});
       !ok) {
     return ok.error();
   }
@@ -80,6 +80,12 @@ Result<HandHold> read_hand(const content::JsonReader& r, const json& object,
     if (!little) return little.error();
     hand.little_curl_rad = *little;
     hand.little_own_curl = true;
+  }
+  if (object.contains("wraps_valves")) {
+    if (!object.at("wraps_valves").is_boolean()) {
+      return r.error(path + "/wraps_valves", "expected true or false");
+    }
+    hand.wraps_valves = object.at("wraps_valves").get<bool>();
   }
   auto thumb = r.number_or(object, path, "thumb_curl_deg", 0.0);
   if (!thumb) return thumb.error();

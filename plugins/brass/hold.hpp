@@ -24,6 +24,7 @@ struct HandHold {
   std::array<float, 3> little_curl_rad{};  // the little finger's, when it has its own
   bool little_own_curl = false;
   float thumb_curl_rad = 0.0f;
+  bool wraps_valves = false;  // the palm holds the valve casings (check-pose: wrist to their axis)
 };
 
 struct Hold {

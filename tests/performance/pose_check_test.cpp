@@ -55,6 +55,8 @@ TEST(PoseCheck, TrumpetersFingertipsRideTheButtonsTheyPress) {
     EXPECT_LE(tips.percentile(0.95), 10.0) << who;
     EXPECT_LE(tips.worst(), 12.0) << who;
     EXPECT_LE(get(report, w + ": left palm to its grip (grip_left)").worst(), 1.0);
+    EXPECT_LE(get(report, w + ": left hand's origin (wrist) to the valve casings' axis").worst(),
+              60.0);
   }
   for (const char* who : {"Trombone 1", "Trombone 2"}) {
     // The chest and shoulder turn toward a far slide position and the slide dips; at Trombone
@@ -100,6 +102,16 @@ TEST(PoseCheck, TheQuintetsPlayersHoldTheirOwnInstruments) {
       EXPECT_TRUE(m.within_limit()) << m.name << ": " << m.worst();
     }
   }
+}
+
+// Every instrument family of content/instruments plays in a bundled scene on its own model: the
+// euphonium in low_brass.json.
+TEST(PoseCheck, TheEuphoniumPlaysItsButtons) {
+  const PoseReport report = check("low_brass.json", {}, 0.0, 12.0);
+  const PoseMeasure& tips = get(report, "Euphonium: pressing fingertip to its button top");
+  EXPECT_GT(tips.samples.size(), 100u);
+  EXPECT_LE(tips.percentile(0.95), 10.0);
+  for (const PoseMeasure& m : report.measures) EXPECT_TRUE(m.within_limit()) << m.name;
 }
 
 TEST(PoseCheck, PianistsPadsMeetTheKeyTopsAndNoKeyIsLeftHanging) {
