@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <ostream>
@@ -73,6 +77,53 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
   const std::vector<Contact> contacts =
       sample_contacts(stage, stage.start_s(), stage.end_s(), sync.step_s);
   const SyncFigures f = measure_sync(contacts, *audio, stage.start_s(), sync);
+  std::vector<double> signed_ms;
+  std::vector<double> abs_ms;
+  for (const SyncMatch& m : f.matches) {
+    signed_ms.push_back(m.offset_ms());
+    abs_ms.push_back(std::abs(m.offset_ms()));
+  }
+  std::sort(signed_ms.begin(), signed_ms.end());
+  std::sort(abs_ms.begin(), abs_ms.end());
+  const auto at = [](const std::vector<double>& sorted, double p) {
+    if (sorted.empty()) return 0.0;
+    return sorted[static_cast<std::size_t>(std::ceil(p * static_cast<double>(sorted.size() - 1)))];
+  };
+  const double median_ms = at(signed_ms, 0.5);
+  const double p95_abs_ms = at(abs_ms, 0.95);
+  if (o.json) {
+    nlohmann::json doc;
+    doc["scene"] = scene->source;
+    doc["contacts"] = f.contacts;
+    doc["expected"] = f.expected;
+    doc["detected"] = f.detected;
+    doc["median_ms"] = median_ms;
+    doc["p95_abs_ms"] = p95_abs_ms;
+    doc["mean_abs_ms"] = f.mean_abs_ms;
+    doc["max_abs_ms"] = f.max_abs_ms;
+    doc["mean_signed_ms"] = f.mean_signed_ms;
+    doc["attack_compensation"] = o.compensate_attacks;
+    doc["matches"] = nlohmann::json::array();
+    for (const SyncMatch& m : f.matches) {
+      nlohmann::json contacts_json = nlohmann::json::array();
+      for (const Contact* c : m.contacts) {
+        contacts_json.push_back({{"performer", c->performer},
+                                 {"kind", contact_kind_name(c->kind)},
+                                 {"detail", c->detail},
+                                 {"time_s", c->time_s}});
+      }
+      doc["matches"].push_back({{"contact_s", m.contact_s},
+                                {"onset_s", m.onset_s},
+                                {"offset_ms", m.offset_ms()},
+                                {"contacts", contacts_json}});
+    }
+    doc["unmatched_expected_s"] = f.unmatched_expected_s;
+    doc["unmatched_detected_s"] = f.unmatched_detected_s;
+    // Audio sample 0 is this music time (the WAV written by --wav starts there).
+    doc["audio_start_s"] = stage.start_s();
+    out << doc.dump(2) << "\n";
+    return kExitOk;
+  }
 
   out << "sync report: " << scene->source << "\n";
   out << "  contacts (animation): " << f.contacts << " events, " << f.expected
@@ -83,7 +134,8 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
       << f.unmatched_detected_s.size() << " sounds without a contact\n";
   out << "  offset (sound − contact): mean |" << format("%.2f", f.mean_abs_ms) << "| ms, max |"
       << format("%.2f", f.max_abs_ms) << "| ms, mean " << format("%+.2f", f.mean_signed_ms)
-      << " ms\n";
+      << " ms, median " << format("%+.2f", median_ms) << " ms, p95 |" << format("%.2f", p95_abs_ms)
+      << "| ms\n";
   std::vector<const SyncMatch*> worst;
   for (const SyncMatch& m : f.matches) worst.push_back(&m);
   std::stable_sort(worst.begin(), worst.end(), [](const SyncMatch* a, const SyncMatch* b) {
@@ -136,6 +188,8 @@ void register_sync_report_command(Commands& commands) {
   command.flag("--no-attack-compensation", state->no_attack_compensation,
                "every note at its score time, not early by its sample's attack");
   command.flag("--check", state->options.check, "exit 1 unless mean <= 5 ms and max <= 16.67 ms");
+  command.flag("--json", state->options.json,
+               "the figures and every match (contact and onset times) as JSON on stdout");
   command.on_run([state](std::ostream& out, std::ostream& err) {
     state->options.compensate_attacks = !state->no_attack_compensation;
     return run_sync_report(state->options, out, err);

@@ -21,6 +21,7 @@ struct SyncReportOptions {
   double tolerance_ms = 50.0;       // furthest match
   int worst = 5;                    // list this many largest offsets
   bool check = false;               // exit 1 when the goal is missed
+  bool json = false;                // the figures and every match as JSON on stdout
   bool compensate_attacks = true;   // false: every note at its score time (audio/attack_time.hpp)
 };
 

@@ -8,8 +8,11 @@
 #include <tutti/performance/families.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include <tutti/cli/frame_range.hpp>
 #include <tutti/cli/scene_audio.hpp>
@@ -131,6 +134,30 @@ TEST(SyncReport, TheCommandPrintsTheFiguresAndChecksTheGoal) {
             std::string::npos)
       << out.str();
   EXPECT_NE(out.str().find("key bottom"), std::string::npos) << out.str();
+}
+
+// --json: every match with its contact and onset, the median and p95, and where the WAV starts —
+// what scripts/sync-energy-check reads. The sparse two-hand piece: one note at a time, every key
+// bottom heard within a few milliseconds by the project's detector.
+TEST(SyncReport, JsonListsEveryMatchOfTheSparsePiece) {
+  SyncReportOptions options;
+  options.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" / "sync" /
+                  "sparse_two_hands.json";
+  options.json = true;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_sync_report(options, out, err), 0) << err.str();
+  const auto doc = nlohmann::json::parse(out.str());
+  // The first note sounds at 0 s, before the first sampled frame: its stroke is not seen.
+  EXPECT_EQ(doc.at("expected"), 69);
+  ASSERT_EQ(doc.at("matches").size(), 69u);
+  EXPECT_EQ(doc.at("audio_start_s"), 0.0);
+  EXPECT_LE(std::abs(doc.at("median_ms").get<double>()), 3.0);
+  EXPECT_LE(doc.at("p95_abs_ms").get<double>(), 10.0);
+  for (const auto& m : doc.at("matches")) {
+    EXPECT_NEAR(m.at("onset_s").get<double>() - m.at("contact_s").get<double>(),
+                m.at("offset_ms").get<double>() / 1000.0, 1e-9);
+    EXPECT_EQ(m.at("contacts").at(0).at("kind"), "key bottom");
+  }
 }
 
 TEST(SyncReport, BadOptionsAreOneLineErrors) {
