@@ -1,5 +1,7 @@
 #include <tutti/cli/sync_report.hpp>
 
+#include <tutti/audio/energy_rise.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -196,7 +198,18 @@ SyncFigures measure_sync(const std::vector<Contact>& contacts, const audio::Audi
       continue;
     }
     used[best] = true;
-    figures.matches.push_back({e.time_s, detected[best], std::move(e.contacts)});
+    // A key's sound (a struck string) is heard where its energy jumps, as the attack compensation
+    // places struck notes (audio/attack_time.hpp); blown notes keep the detector's point.
+    double heard = detected[best];
+    const bool struck = std::all_of(e.contacts.begin(), e.contacts.end(), [](const Contact* c) {
+      return c->kind == ContactKind::key_bottom;
+    });
+    if (struck) {
+      const double at = (heard - audio_start_s) / options.tempo_factor;
+      heard = audio_start_s + audio::steepest_energy_rise_s(audio, at - 0.020, at + 0.003, at) *
+                                  options.tempo_factor;
+    }
+    figures.matches.push_back({e.time_s, heard, std::move(e.contacts)});
   }
   for (std::size_t i = 0; i < detected.size(); ++i) {
     if (!used[i]) figures.unmatched_detected_s.push_back(detected[i]);

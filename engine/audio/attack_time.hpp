@@ -1,14 +1,16 @@
 #pragma once
 // Sampled instruments take time to speak: in Debian's General MIDI font a piano note is heard
-// (its partials at −6 dB of their settled power, audio/onset_detection.hpp) some 5 ms after its
-// note-on, a trumpet note 5–20 ms after, a trombone note 20–80 ms after: the recorded attack. A
-// key reaching its bottom or a player's tongue, valve or slide, on screen, lands on the beat, and
-// so does the sound of a real instrument; notation players schedule samples early by their
-// attack. This does the same, with the attack of every (program, key, velocity / 8) measured
-// from the sound font itself:
+// about 2 ms after its note-on, a trumpet note 5-20 ms after, a trombone note 20-80 ms after: the
+// recorded attack. A key reaching its bottom or a player's tongue, valve or slide, on screen,
+// lands on the beat, and so does the sound of a real instrument; notation players schedule
+// samples early by their attack. This does the same, with the attack of every (program, key,
+// velocity / 8) measured from the sound font itself:
 //
-//   render the note alone from silence with FluidSynth, find where the onset detector hears it,
-//   and send its note-on that much earlier (for a slur, the old note's note-off with it).
+//   render the note alone from silence with FluidSynth, find it with the onset detector, and send
+//   its note-on that much earlier (for a slur, the old note's note-off with it). A struck note
+//   (GM programs 0-15: pianos, chromatic percussion) is heard where its energy jumps
+//   (energy_rise.hpp), which the detector's -6 dB point places some 7 ms later; a blown note
+//   swells and is heard at the detector's point.
 //
 // The attack is measured with the same ear `tutti sync-report` uses, on the note alone; the
 // report then listens to the whole mix, where the other players and the old note's release
