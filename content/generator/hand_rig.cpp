@@ -122,13 +122,14 @@ Result<HandRig> load_hand_rig(const std::filesystem::path& content_dir, componen
     for (double& length : g.phalanges_mm) length *= scale;
     g.root_y_mm *= scale;
     g.root_z_mm *= scale;
+    g.pad_drop_mm *= scale;
     FingerRig& out = rig.fingers[f];
     out.root_mm = {rest_x(static_cast<int>(f) + 1) - rest_x(3),
                    g.root_y_mm - middle.root_y_mm * scale, g.root_z_mm - middle.root_z_mm * scale};
     out.phalanges_mm = g.phalanges_mm;
     const finger_motion::ChainShape shape = finger_motion::chain_shape(g, g.neutral_bend_rad);
     const finger_motion::StrokeSolution stroke =
-        finger_motion::solve_stroke(shape, g.root_z_mm - neutral_z);
+        finger_motion::solve_stroke(shape, g.root_z_mm - (neutral_z + g.pad_drop_mm));
     out.rest_angles_rad = {stroke.joint1_rad, shape.bend_rad, shape.joint3_rad};
   }
   return rig;

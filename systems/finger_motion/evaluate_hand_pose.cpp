@@ -128,7 +128,8 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   }
 
   const ChainShape shape = shape_for(plan, f, bend);
-  const StrokeSolution stroke = solve_stroke(shape, g.root_z_mm - z);
+  // z is where the finger meets the key (its pad); the fingertip is held pad_drop above it.
+  const StrokeSolution stroke = solve_stroke(shape, g.root_z_mm - (z + g.pad_drop_mm));
   const double mirror = side == components::HandSide::left ? -1.0 : 1.0;
   out.spread_rad = spread_angle_rad(x - rest_x, stroke.reach_y_mm, mirror);
   if (f == 0) {  // thumb: strikes by abduction; the bend is its MCP and IP
@@ -146,7 +147,11 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
   out.tip_x_mm = x;
   out.tip_y_mm = g.root_y_mm + stroke.reach_y_mm;
-  out.tip_z_mm = z;
+  out.tip_z_mm = z + g.pad_drop_mm;
+  out.contact_y_mm = g.pad_drop_mm > 0.0
+                         ? g.root_y_mm + solve_stroke(shape, g.root_z_mm - z).reach_y_mm
+                         : out.tip_y_mm;
+  out.contact_z_mm = z;
 }
 
 void evaluate_hand_pose(const FingerMotionPlan& plan, const motion::HandPath& path,

@@ -82,7 +82,7 @@ Status read_finger(const JsonReader& reader, const nlohmann::json& fingers, int 
   const nlohmann::json& object = fingers.at(name);
   if (auto ok = reader.check_keys(object, path,
                                   {"phalanges_mm", "root_y_mm", "root_z_mm", "neutral_bend_rad",
-                                   "white_bend_rad", "black_bend_rad", "coupling"});
+                                   "white_bend_rad", "black_bend_rad", "coupling", "pad_drop_mm"});
       !ok) {
     return ok;
   }
@@ -120,6 +120,10 @@ Status read_finger(const JsonReader& reader, const nlohmann::json& fingers, int 
   if (!coupling) return coupling.error();
   if (*coupling < 0 || *coupling > 1.5) return reader.error(path + "/coupling", "expected 0..1.5");
   out.coupling = *coupling;
+  auto pad_drop = reader.number_or(object, path, "pad_drop_mm", 0.0);
+  if (!pad_drop) return pad_drop.error();
+  if (*pad_drop < 0 || *pad_drop > 15) return reader.error(path + "/pad_drop_mm", "expected 0..15 mm");
+  out.pad_drop_mm = *pad_drop;
   return Status::success();
 }
 

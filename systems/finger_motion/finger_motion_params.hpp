@@ -26,6 +26,10 @@ struct FingerGeometry {
   double white_bend_rad = 0.0;           // joint 2 while playing a white key
   double black_bend_rad = 0.0;           // joint 2 while playing a black key (flatter: reaches in)
   double coupling = 2.0 / 3.0;           // joint 3 / joint 2, in [0, 1.5]
+  // How far the pad's lowest point lies below the fingertip at a stroke's bottom: the posed tip
+  // is held this much above the contact so the flesh meets the key top instead of sinking into
+  // it (the thumb strikes with the side of its tip; tutti check-pose measures it).
+  double pad_drop_mm = 0.0;
 };
 
 struct KeyHeights {

@@ -14,9 +14,13 @@ struct FingerPose {
   double pip_flexion_rad = 0.0;  // thumb: IP
   double dip_flexion_rad = 0.0;  // thumb: 0
   double press_depth = 0.0;      // 0 = key up .. 1 = key bottom
-  double tip_x_mm = 0.0;
+  double tip_x_mm = 0.0;  // the posed fingertip
   double tip_y_mm = 0.0;
   double tip_z_mm = 0.0;
+  // Where the finger meets the key: the pad, pad_drop_mm below the tip (the same point for
+  // fingers without a drop). The key follows it.
+  double contact_y_mm = 0.0;
+  double contact_z_mm = 0.0;
   int key = -1;  // MIDI key the finger is pressing (press_depth > 0), else -1
 };
 

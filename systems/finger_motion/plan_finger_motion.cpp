@@ -180,6 +180,7 @@ std::array<FingerGeometry, 5> scaled_geometry(const FingerMotionParams& params,
     for (double& length : g.phalanges_mm) length *= scale;
     g.root_y_mm *= scale;
     g.root_z_mm *= scale;
+    g.pad_drop_mm *= scale;
   }
   return geometry;
 }

@@ -33,7 +33,7 @@ double finger_angle(const finger_motion::FingerMotionPlan& plan, const Presser& 
   // Lateral position does not change the tip's height or reach: hand x = 0 is enough here.
   finger_motion::evaluate_finger_pose(plan, p.side, p.finger, 0.0, t, pose);
   if (pose.key != p.contact->key) return 0.0;
-  return lever.angle_rad(pose.tip_y_mm, top_z - pose.tip_z_mm);
+  return lever.angle_rad(pose.contact_y_mm, top_z - pose.contact_z_mm);
 }
 
 void simulate_key(const finger_motion::FingerMotionPlan& plan, std::vector<Presser>& pressers,

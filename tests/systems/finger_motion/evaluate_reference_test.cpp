@@ -97,7 +97,7 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
                    g.phalanges_mm[2] * std::cos(bend + j3);
   const double b = g.phalanges_mm[1] * std::sin(bend) + g.phalanges_mm[2] * std::sin(bend + j3);
   const double reach = std::hypot(a, b);
-  const double drop = std::clamp(g.root_z_mm - z, -reach, reach);
+  const double drop = std::clamp(g.root_z_mm - (z + g.pad_drop_mm), -reach, reach);
   const double joint1 = std::asin(drop / reach) - std::atan2(b, a);
   const double reach_y = std::sqrt(std::max(reach * reach - drop * drop, 0.0));
   FingerPose out;
@@ -111,7 +111,13 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
   out.tip_x_mm = x;
   out.tip_y_mm = g.root_y_mm + reach_y;
-  out.tip_z_mm = z;
+  out.tip_z_mm = z + g.pad_drop_mm;
+  out.contact_z_mm = z;
+  out.contact_y_mm = out.tip_y_mm;
+  if (g.pad_drop_mm > 0.0) {
+    const double contact_drop = std::clamp(g.root_z_mm - z, -reach, reach);
+    out.contact_y_mm = g.root_y_mm + std::sqrt(std::max(reach * reach - contact_drop * contact_drop, 0.0));
+  }
   return out;
 }
 
@@ -127,6 +133,8 @@ void expect_close(const FingerPose& got, const FingerPose& want, double t, std::
   EXPECT_NEAR(got.tip_x_mm, want.tip_x_mm, kTol);
   EXPECT_NEAR(got.tip_y_mm, want.tip_y_mm, kTol);
   EXPECT_NEAR(got.tip_z_mm, want.tip_z_mm, kTol);
+  EXPECT_NEAR(got.contact_y_mm, want.contact_y_mm, kTol);
+  EXPECT_NEAR(got.contact_z_mm, want.contact_z_mm, kTol);
   // The key is reported while pressed; right at depth 0 rounding may decide either way.
   if (want.press_depth > kTol) {
     EXPECT_EQ(got.key, want.key);

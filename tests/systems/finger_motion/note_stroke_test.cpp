@@ -23,10 +23,10 @@ TEST(NoteStroke, TheContactFollowsTheStroke) {
   // The tip reaches that bed at the bottom time, pressing fully, and is above it before.
   FingerPose pose;
   evaluate_finger_pose(*plan, components::HandSide::right, 3, 600.0, 1.01, pose);
-  EXPECT_NEAR(pose.tip_z_mm, c.bottom_z_mm, 1e-9);
+  EXPECT_NEAR(pose.contact_z_mm, c.bottom_z_mm, 1e-9);
   EXPECT_DOUBLE_EQ(pose.press_depth, 1.0);
   evaluate_finger_pose(*plan, components::HandSide::right, 3, 600.0, 0.99, pose);
-  EXPECT_GT(pose.tip_z_mm, c.bottom_z_mm + 0.5);
+  EXPECT_GT(pose.contact_z_mm, c.bottom_z_mm + 0.5);
   EXPECT_GT(pose.press_depth, 0.0);
   EXPECT_LT(pose.press_depth, 1.0);
 }

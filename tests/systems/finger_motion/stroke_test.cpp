@@ -26,7 +26,7 @@ TEST(KeyStroke, PressDepthReachesOneAtOnsetAndIsHeld) {
   const FingerPose at_onset = pose_at(plan, 3, x, 1.0);
   EXPECT_EQ(at_onset.press_depth, 1.0);
   EXPECT_EQ(at_onset.key, 60);
-  EXPECT_EQ(at_onset.tip_z_mm, m.params.keys.white_top_z_mm - m.params.keys.dip_mm);
+  EXPECT_EQ(at_onset.contact_z_mm, m.params.keys.white_top_z_mm - m.params.keys.dip_mm);
   EXPECT_EQ(pose_at(plan, 3, x, 1.25).press_depth, 1.0);
   EXPECT_EQ(pose_at(plan, 3, x, 1.5).press_depth, 1.0);
   const double mid_release = pose_at(plan, 3, x, 1.5 + 0.2 * m.params.timing.release_s).press_depth;
@@ -91,7 +91,7 @@ TEST(KeyStroke, BlackKeyBendIsChosenBeforeTheStroke) {
   EXPECT_GT(pip, std::min(g.black_bend_rad, g.white_bend_rad) - 0.3);
   const FingerPose at_onset = pose_at(plan, 3, x, 2.0);
   EXPECT_EQ(at_onset.press_depth, 1.0);
-  EXPECT_EQ(at_onset.tip_z_mm, m.params.keys.black_top_z_mm - m.params.keys.dip_mm);
+  EXPECT_EQ(at_onset.contact_z_mm, m.params.keys.black_top_z_mm - m.params.keys.dip_mm);
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ TEST(KeySimulation, TheNoteSoundsWhenTheFingertipTakesTheKeyPastEscapement) {
         finger_motion::FingerPose pose;
         finger_motion::evaluate_finger_pose(plan, components::HandSide::right,
                                             static_cast<int>(f) + 1, 0.0, t, pose);
-        if (pose.key == c.key && lever.angle_rad(pose.tip_y_mm, top - pose.tip_z_mm) >= escape) {
+        if (pose.key == c.key && lever.angle_rad(pose.contact_y_mm, top - pose.contact_z_mm) >= escape) {
           crossed = t;
           break;
         }
