@@ -52,6 +52,9 @@ struct BrassRig {
   int slide = -1;
   int mouthpiece = -1, grip_left = -1, grip_right = -1;
   Hold hold;  // content/instruments/holds/<model>.json
+  // The player's phrases [first onset, last offset] (s), rests shorter than a few seconds inside:
+  // the instrument is up for them (raised before, lowered after), down between them.
+  std::vector<std::array<double, 2>> phrases;
   // The instrument's nodes under each fingertip [left, right][thumb .. little] (-1: none).
   std::array<std::array<int, 5>, 2> fingertip_on{};
   glm::mat4 placement{1.0f};  // feet on the floor, facing

@@ -58,6 +58,21 @@ void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const Bra
   }
 }
 
+// The player's phrases: playable notes joined across rests shorter than kLongRestS.
+std::vector<std::array<double, 2>> phrases_of(const brass::BrassLine& line) {
+  constexpr double kLongRestS = 4.0;
+  std::vector<std::array<double, 2>> phrases;
+  for (const brass::LineNote& note : line.notes) {
+    if (!note.playable) continue;
+    if (!phrases.empty() && note.onset_s - phrases.back()[1] < kLongRestS) {
+      phrases.back()[1] = std::max(phrases.back()[1], note.offset_s);
+    } else {
+      phrases.push_back({note.onset_s, note.offset_s});
+    }
+  }
+  return phrases;
+}
+
 // The instrument and, when there is one, the body of the player; their nodes; the stand and the
 // chair.
 Status bind_player(stage::StageBuilder& builder, const scene::Performer& performer,
@@ -247,6 +262,7 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
     horn.label = std::filesystem::path(builder.stage().model_files()[horn.model]).stem().string();
 
     ensemble_inputs.push_back(ensemble_input(performer, builder.scores()[performer.music_file], plan));
+    rig.phrases = phrases_of(*plan.line);
     world.add<BrassRig>(player, std::move(rig));
     world.add<BrassPlan>(player, std::move(plan));
     players.push_back(player);

@@ -101,7 +101,8 @@ Result<Hold> load_hold(const std::filesystem::path& file) {
   if (!doc) return doc.error();
   const content::JsonReader r(file.filename().string());
   if (auto ok = r.check_keys(*doc, "",
-                             {"description", "carriage", "elbows", "left_hand", "right_hand"});
+                             {"description", "carriage", "elbows", "left_hand", "right_hand",
+                              "rest"});
       !ok) {
     return ok.error();
   }
@@ -138,6 +139,19 @@ Result<Hold> load_hold(const std::filesystem::path& file) {
     return ok.error();
   }
   hold.elbow_pole = {static_cast<float>(down), static_cast<float>(out), static_cast<float>(back)};
+  if (doc->contains("rest")) {
+    double below = 0.0, forward = 0.0, tilt = 0.0;
+    const content::NumberField rest[] = {{"below_lips_m", &below, 0.0, 1.0},
+                                         {"forward_m", &forward, -0.3, 0.6},
+                                         {"bell_tilt_deg", &tilt, -90.0, 90.0}};
+    if (auto ok = r.read_number_fields(doc->at("rest"), "/rest", rest, true); !ok) {
+      return ok.error();
+    }
+    hold.has_rest = true;
+    hold.rest_below_lips_m = static_cast<float>(below);
+    hold.rest_forward_m = static_cast<float>(forward);
+    hold.rest_bell_tilt_rad = static_cast<float>(tilt) * kDegree;
+  }
   for (std::size_t side = 0; side < 2; ++side) {
     const std::string key = side == 0 ? "left_hand" : "right_hand";
     auto hand = read_hand(r, doc->at(key), "/" + key);

@@ -34,6 +34,13 @@ struct Hold {
   // have turned toward it (the trombone's far positions).
   float reach_dip_rad = 0.0f;
   glm::vec3 elbow_pole{1.0f, 0.8f, 0.3f};  // down, out to the side, back
+  // Between phrases (rests of several seconds, before the first entrance, after the last note)
+  // the instrument comes down from the lips to this place in front of the body; has_rest false:
+  // it stays up.
+  bool has_rest = false;
+  float rest_below_lips_m = 0.0f;
+  float rest_forward_m = 0.0f;
+  float rest_bell_tilt_rad = 0.0f;
   std::array<HandHold, 2> hands;             // left, right
 
   bool fingertips_place(int hand) const {

@@ -20,7 +20,26 @@ using stage::PlacedModel;
 
 constexpr float kPi = 3.14159265f;
 
-void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig) {
+double min_jerk(double u) {
+  u = std::clamp(u, 0.0, 1.0);
+  return u * u * u * (10.0 - 15.0 * u + 6.0 * u * u);
+}
+
+// How far up the instrument is at t (0 = at rest in front of the body, 1 = at the lips): raised
+// over a second, done well before a phrase's first note (the breath before it is taken with the
+// instrument up), lowered over a second after its last.
+double raised_at(const std::vector<std::array<double, 2>>& phrases, double t_s) {
+  constexpr double kRaiseS = 1.0, kUpBeforeS = 1.6, kHoldAfterS = 0.6, kLowerS = 1.0;
+  double raised = 0.0;
+  for (const auto& [start, end] : phrases) {
+    const double up = min_jerk((t_s - (start - kUpBeforeS - kRaiseS)) / kRaiseS);
+    const double down = 1.0 - min_jerk((t_s - (end + kHoldAfterS)) / kLowerS);
+    raised = std::max(raised, std::min(up, down));
+  }
+  return raised;
+}
+
+void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double t_s) {
   auto* horn = world.try_get<PlacedModel>(rig.horn);
   if (horn == nullptr) return;
   const model::ModelAsset& horn_asset = *horn->asset;
@@ -33,10 +52,14 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig) {
       stage::turn(horn->pose, rig.rotors[v], 0.5f * kPi * valve->press[v], glm::vec3(0, 1, 0));
     }
   }
+  // Between phrases the instrument comes down in front of the body (the hold's rest), the
+  // hands with it, and a trombonist closes the slide.
+  const float raised =
+      rig.hold.has_rest ? static_cast<float>(raised_at(rig.phrases, t_s)) : 1.0f;
   if (const auto* slide = world.try_get<components::Slide>(rig.instrument);
       slide != nullptr && rig.slide >= 0) {
     horn->pose.local[static_cast<std::size_t>(rig.slide)].translation +=
-        rig.slide_axis * static_cast<float>(slide->extension_mm / 1000.0);
+        rig.slide_axis * static_cast<float>(raised * slide->extension_mm / 1000.0);
   }
 
   std::vector<glm::mat4>& horn_world = rig.scratch_horn_world;
@@ -86,9 +109,14 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig) {
   // faces, the bell a little down. The generated instruments point their bell along -Z (their
   // player at +Z); performers face +Z.
   const auto hang_instrument = [&] {
-    horn->root = glm::translate(glm::mat4(1.0f), lips) * facing *
+    const glm::vec3 rest_at =
+        lips + glm::vec3(facing * glm::vec4(0, -rig.hold.rest_below_lips_m,
+                                            rig.hold.rest_forward_m, 0));
+    const glm::vec3 at = glm::mix(rest_at, lips, raised);
+    const float bell_tilt = raised * tilt + (1.0f - raised) * rig.hold.rest_bell_tilt_rad;
+    horn->root = glm::translate(glm::mat4(1.0f), at) * facing *
                  glm::rotate(glm::mat4(1.0f), kPi, glm::vec3(0, 1, 0)) *
-                 glm::rotate(glm::mat4(1.0f), tilt, glm::vec3(1, 0, 0)) *
+                 glm::rotate(glm::mat4(1.0f), bell_tilt, glm::vec3(1, 0, 0)) *
                  glm::translate(glm::mat4(1.0f), -mouthpiece) * rig.horn_correction;
   };
   hang_instrument();
@@ -225,9 +253,10 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig) {
 
 }  // namespace
 
-void brass_skeleton_system(ecs::World& world, const ecs::FrameTime&) {
-  world.view<BrassRig>().each(
-      [&world](ecs::Entity performer, BrassRig& rig) { pose_player(world, performer, rig); });
+void brass_skeleton_system(ecs::World& world, const ecs::FrameTime& frame) {
+  world.view<BrassRig>().each([&world, &frame](ecs::Entity performer, BrassRig& rig) {
+    pose_player(world, performer, rig, frame.t_s);
+  });
 }
 
 }  // namespace tutti::brass_family

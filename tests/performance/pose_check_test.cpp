@@ -12,6 +12,9 @@
 #include <sstream>
 
 #include <tutti/performance/families.hpp>
+#include <tutti/model/model_asset.hpp>
+#include <tutti/brass/brass_components.hpp>
+#include <glm/glm.hpp>
 #include <tutti/scene/load_scene.hpp>
 
 #include "scratch_dir.hpp"
@@ -112,6 +115,42 @@ TEST(PoseCheck, TheEuphoniumPlaysItsButtons) {
   EXPECT_GT(tips.samples.size(), 100u);
   EXPECT_LE(tips.percentile(0.95), 10.0);
   for (const PoseMeasure& m : report.measures) EXPECT_TRUE(m.within_limit()) << m.name;
+}
+
+// Between phrases the instrument comes down from the lips (the holds' rest) and goes back up
+// before the first note: before the quintet's entrance every mouthpiece is away from its mouth,
+// a second into the music every one is at it.
+TEST(PoseCheck, InstrumentsComeDownBetweenPhrases) {
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "quintet.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto staged = build_stage(*scene, {});
+  ASSERT_TRUE(staged) << staged.error().message;
+  stage::Stage& stage = **staged;
+  const auto mouthpiece_to_mouth = [&](ecs::Entity performer) {
+    const auto& rig = stage.world().get<brass_family::BrassRig>(performer);
+    const auto& horn = stage.world().get<stage::PlacedModel>(rig.horn);
+    const auto& body = stage.world().get<stage::PlacedModel>(rig.body);
+    std::vector<glm::mat4> horn_world(horn.asset->nodes.size()), body_world(body.asset->nodes.size());
+    model::compute_world_matrices(*horn.asset, horn.pose, horn.root, horn_world);
+    model::compute_world_matrices(*body.asset, body.pose, body.root, body_world);
+    return glm::distance(glm::vec3(horn_world[static_cast<std::size_t>(rig.mouthpiece)][3]),
+                         glm::vec3(body_world[static_cast<std::size_t>(rig.body_nodes.mouth)][3]));
+  };
+  std::size_t players = 0;
+  for (const double t : {-2.4, 1.0}) {
+    stage.run({t, 1.0 / 30});
+    for (ecs::Entity performer : stage.performers()) {
+      if (stage.world().try_get<brass_family::BrassRig>(performer) == nullptr) continue;
+      const float distance = mouthpiece_to_mouth(performer);
+      if (t < 0) {
+        EXPECT_GT(distance, 0.1f) << "at rest, t = " << t;
+        ++players;
+      } else {
+        EXPECT_LT(distance, 0.01f) << "playing, t = " << t;
+      }
+    }
+  }
+  EXPECT_EQ(players, 5u);
 }
 
 TEST(PoseCheck, PianistsPadsMeetTheKeyTopsAndNoKeyIsLeftHanging) {
