@@ -116,7 +116,7 @@ struct HornDimensions {
   double bell_diameter_mm = 310.0;
   double bell_flare_mm = 280.0;          // the bell's length from its throat to the rim
   double bell_back_x = 0.55;             // the bell's axis: (x, -y, 1) normalised, pointing back
-  double bell_back_y = 0.45;             //   toward the player's right side and down
+  double bell_back_y = 0.8;              //   toward the player's right side and down
   double mouthpiece_length_mm = 80.0;
   double mouthpiece_rim_diameter_mm = 27.0;
   double valves_left_mm = 60.0;          // rotor row to the player's left of the mouthpiece
@@ -128,7 +128,7 @@ struct HornDimensions {
   double lever_rise_mm = 8.0;            // pad tops above the casings' tops
   double lever_travel_mm = 10.0;         // pad top at rest to fully down
   double coil_right_mm = 60.0;           // the coils' centre
-  double coil_drop_mm = 250.0;
+  double coil_drop_mm = 270.0;
   double coil_forward_mm = 240.0;
   double coil_radius_mm = 150.0;
 };
