@@ -7,9 +7,8 @@
 #include <ostream>
 
 #include <tutti/cli/exit_codes.hpp>
-#include <tutti/performance/families.hpp>
 #include <tutti/performance/pose_check.hpp>
-#include <tutti/scene/load_scene.hpp>
+#include <tutti/cli/stage_scene.hpp>
 
 namespace tutti::app {
 
@@ -19,13 +18,10 @@ int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& e
     return kExitBadInput;
   };
   if (o.fps < 1 || o.fps > 240) return fail("--fps " + std::to_string(o.fps) + ": must be 1..240");
-  auto scene = scene::load_scene(o.scene);
-  if (!scene) return fail(scene.error().message);
-  stage::StageOptions stage_options;
-  stage_options.asset_dir = o.assets;
-  auto staged = performance::build_stage(*scene, stage_options);
-  if (!staged) return fail(scene->source + ": " + staged.error().message);
+  auto staged = stage_scene_file(o.scene, o.assets);
+  if (!staged) return fail(staged.error().message);
   stage::Stage& stage = **staged;
+  const scene::Scene* scene = &stage.scene();
   performance::PoseCheckOptions options;
   options.fps = o.fps;
   options.from_s = stage.start_s();

@@ -10,8 +10,7 @@
 #include <tutti/cli/frame_range.hpp>
 #include <tutti/core/file_io.hpp>
 #include <tutti/export/scene_export.hpp>
-#include <tutti/scene/load_scene.hpp>
-#include <tutti/performance/families.hpp>
+#include <tutti/cli/stage_scene.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::app {
@@ -27,13 +26,10 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   if (o.fps != 0 && (o.fps < 1 || o.fps > 240)) return fail("--fps: must be in [1, 240]");
   if (!o.frames.empty() && !o.seconds.empty()) return fail("--frames and --seconds: give one");
 
-  auto scene = scene::load_scene(o.scene);
-  if (!scene) return fail(scene.error().message);
-  stage::StageOptions stage_options;
-  stage_options.asset_dir = o.assets;
-  auto staged = performance::build_stage(*scene, stage_options);
-  if (!staged) return fail(scene->source + ": " + staged.error().message);
+  auto staged = stage_scene_file(o.scene, o.assets);
+  if (!staged) return fail(staged.error().message);
   stage::Stage& stage = **staged;
+  const scene::Scene* scene = &stage.scene();
 
   const int fps = o.fps != 0 ? o.fps : scene->output.fps;
   const std::int64_t total = frame_count(stage.start_s(), stage.end_s(), fps);

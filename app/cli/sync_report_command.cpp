@@ -16,8 +16,7 @@
 #include <tutti/cli/scene_audio.hpp>
 #include <tutti/cli/sync_report.hpp>
 #include <tutti/audio/wav_file.hpp>
-#include <tutti/performance/families.hpp>
-#include <tutti/scene/load_scene.hpp>
+#include <tutti/cli/stage_scene.hpp>
 
 namespace tutti::app {
 namespace {
@@ -50,13 +49,10 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
   if (!(o.tolerance_ms >= 1.0 && o.tolerance_ms <= 500.0)) {
     return fail("--tolerance-ms: must be in [1, 500]");
   }
-  auto scene = scene::load_scene(o.scene);
-  if (!scene) return fail(scene.error().message);
-  stage::StageOptions stage_options;
-  stage_options.asset_dir = o.assets;
-  auto built = performance::build_stage(*scene, stage_options);
-  if (!built) return fail(scene->source + ": " + built.error().message);
+  auto built = stage_scene_file(o.scene, o.assets);
+  if (!built) return fail(built.error().message);
   stage::Stage& stage = **built;
+  const scene::Scene* scene = &stage.scene();
 
   const int fps = scene->output.fps;
   const std::int64_t frames = frame_count(0.0, (stage.end_s() - stage.start_s()) / o.tempo, fps);

@@ -1,0 +1,19 @@
+#include <tutti/cli/stage_scene.hpp>
+
+#include <tutti/performance/families.hpp>
+#include <tutti/scene/load_scene.hpp>
+
+namespace tutti::app {
+
+Result<std::unique_ptr<stage::Stage>> stage_scene_file(const std::filesystem::path& scene_file,
+                                                       const std::filesystem::path& assets) {
+  auto scene = scene::load_scene(scene_file);
+  if (!scene) return scene.error();
+  stage::StageOptions options;
+  options.asset_dir = assets;
+  auto staged = performance::build_stage(*scene, options);
+  if (!staged) return Error{scene->source + ": " + staged.error().message, staged.error().code};
+  return std::move(*staged);
+}
+
+}  // namespace tutti::app

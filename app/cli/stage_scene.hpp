@@ -1,0 +1,17 @@
+#pragma once
+// A scene file loaded and staged (plans, ECS world, models) for a command: its errors are one
+// line naming the file (scene::load_scene's own, or "<scene>: <why it cannot be staged>").
+
+#include <filesystem>
+#include <memory>
+
+#include <tutti/core/result.hpp>
+#include <tutti/stage/stage.hpp>
+
+namespace tutti::app {
+
+// `assets`: the folder of the generated .glb files; empty: the build's or the installation's.
+Result<std::unique_ptr<stage::Stage>> stage_scene_file(const std::filesystem::path& scene_file,
+                                                       const std::filesystem::path& assets);
+
+}  // namespace tutti::app
