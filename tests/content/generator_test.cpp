@@ -218,6 +218,10 @@ TEST(ContentGenerator, BadDimensionsAreOneLineErrorsWithTheJsonPath) {
   inverted["chair"]["backrest_top_mm"] = 600.0;
   nlohmann::json performer = *document;
   performer["performer"]["upper_arm_length_mm"] = 5000.0;
+  nlohmann::json tuba = *document;
+  tuba["tuba"]["valve_pitch_mm"] = 10.0;
+  nlohmann::json horn = *document;
+  horn["horn"].erase("rotor_diameter_mm");
   const Case cases[] = {
       {"negative", negative.dump(), "dimensions.json: /chair/seat_top_mm"},
       {"unknown", unknown.dump(), "dimensions.json: /piano"},
@@ -225,6 +229,8 @@ TEST(ContentGenerator, BadDimensionsAreOneLineErrorsWithTheJsonPath) {
       {"inverted", inverted.dump(), "dimensions.json: /chair/backrest_bottom_mm"},
       {"not_json", "{\"piano\": ", "dimensions.json"},
       {"performer", performer.dump(), "dimensions.json: /performer/upper_arm_length_mm"},
+      {"tuba", tuba.dump(), "dimensions.json: /tuba/valve_pitch_mm"},
+      {"horn", horn.dump(), "dimensions.json: /horn/rotor_diameter_mm: missing"},
   };
   for (const Case& c : cases) {
     const auto content = content_with_dimensions(dir / c.name, c.json);

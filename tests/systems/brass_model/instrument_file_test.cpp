@@ -131,6 +131,11 @@ TEST(InstrumentFile, BrokenFilesNameTheFileAndThePath) {
   with(
       "missing field", [](json& d) { d.erase("gm_programs"); }, "/gm_programs: missing");
   with(
+      "model not a name", [](json& d) { d["model"] = "../trumpet"; },
+      "/model: expected lower-case letters, digits and '_'");
+  with(
+      "model not a string", [](json& d) { d["model"] = 3; }, "/model: expected a string");
+  with(
       "missing range end", [](json& d) { d["range"].erase("highest"); }, "/range/highest: missing");
   with(
       "range upside down", [](json& d) { d["range"]["lowest"] = "C7"; },

@@ -47,6 +47,12 @@ TEST(FingerMotionParams, BadValuesAreNamed) {
   EXPECT_EQ(p.error().message, "f.json: /keys/dip_mm: missing");
 
   doc = content_json();
+  doc["fingers"]["1"]["pad_drop_mm"] = 40;
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().message, "f.json: /fingers/1/pad_drop_mm: expected 0..15 mm");
+
+  doc = content_json();
   doc["timing"]["move_max_s"] = 0.01;
   p = finger_motion_params_from_json(doc, "f.json");
   ASSERT_FALSE(p.ok());
