@@ -31,6 +31,11 @@ constexpr float kHeadLengthM = 0.12f;
 constexpr float kHeadRadiusM = 0.095f;
 // The torso as a capsule from the hips to the neck, as thick as the mannequin's chest is deep.
 constexpr float kTorsoRadiusM = 0.10f;
+// The sleeves as capsules (content/generator/performer_asset.cpp): the upper arm's is 50 to 41 mm,
+// the forearm's 40 to 35 mm and ends 30 mm short of the wrist, where the hand begins to hold.
+constexpr float kUpperArmRadiusM = 0.045f;
+constexpr float kForearmRadiusM = 0.037f;
+constexpr float kSleeveShortOfWristM = 0.03f;
 constexpr double kDegree = 3.14159265358979 / 180.0;
 
 // Flexion and spread limits of one finger joint (degrees), from hand_rig.json.
@@ -154,6 +159,87 @@ class Checker {
         .samples.push_back(std::max(0.0, -clearance) * 1000.0);
   }
 
+  // How deep the instrument's surface reaches into either arm's sleeve (shoulder to elbow, elbow to
+  // the cuff): an arm passing through a tube or the bell shows here. Hands are left out: they hold.
+  void arms_clear_of_instrument(const std::string& who, const stage::PlacedModel& horn,
+                                const stage::BodyNodes& nodes) {
+    struct Capsule {
+      glm::vec3 a, b;
+      float radius;
+    };
+    std::vector<Capsule> arms;
+    for (const stage::TwoBoneChain* arm : {&nodes.arm_left, &nodes.arm_right}) {
+      if (arm->upper < 0 || arm->lower < 0 || arm->end < 0) continue;
+      const glm::vec3 shoulder = origin(body_world_[static_cast<std::size_t>(arm->upper)]);
+      const glm::vec3 elbow = origin(body_world_[static_cast<std::size_t>(arm->lower)]);
+      const glm::vec3 wrist = origin(body_world_[static_cast<std::size_t>(arm->end)]);
+      const float forearm = glm::distance(elbow, wrist);
+      if (forearm <= kSleeveShortOfWristM) continue;
+      const glm::vec3 cuff = elbow + (wrist - elbow) * ((forearm - kSleeveShortOfWristM) / forearm);
+      arms.push_back({shoulder, elbow, kUpperArmRadiusM});
+      arms.push_back({elbow, cuff, kForearmRadiusM});
+    }
+    if (arms.empty()) return;
+    double depth = 0.0;
+    const model::ModelAsset& asset = *horn.asset;
+    for (std::size_t n = 0; n < asset.nodes.size(); ++n) {
+      const model::Node& node = asset.nodes[n];
+      if (node.mesh < 0 || node.skin >= 0) continue;
+      const glm::mat4& world = horn_world_[n];
+      for (const model::Primitive& primitive : asset.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
+        for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
+          const glm::vec3 p =
+              world * glm::vec4(asset.vertices[primitive.first_vertex + v].position, 1.0f);
+          for (const Capsule& arm : arms) {
+            depth = std::max(depth, static_cast<double>(arm.radius) -
+                                        distance_to_segment(p, arm.a, arm.b));
+          }
+        }
+      }
+    }
+    measure(who + ": instrument inside an arm's sleeve (depth; 0 = clear)", "mm", 0.0)
+        .samples.push_back(depth * 1000.0);
+  }
+
+  // A hand held in the bell (the horn's right hand: its palm_at node inside the bell): how far its
+  // fingertips' pads reach through the bell's wall, by the profile the model's bell_rim carries.
+  void hand_in_bell(const std::string& who, const stage::PlacedModel& horn,
+                    const brass_family::BrassRig& rig) {
+    const int rim = horn.asset->find_node("bell_rim");
+    if (rim < 0) return;
+    const model::Node& rim_node = horn.asset->nodes[static_cast<std::size_t>(rim)];
+    const double rim_mm = rim_node.number("rim_radius_mm", 0.0);
+    const double d0_mm = rim_node.number("flare_d0_mm", 0.0);
+    const double flare_mm = rim_node.number("flare_mm", 0.0);
+    if (rim_mm <= 0.0 || d0_mm <= 0.0 || flare_mm <= 0.0) return;
+    const glm::mat4 into_bell = glm::inverse(horn_world_[static_cast<std::size_t>(rim)]);
+    for (std::size_t side = 0; side < 2; ++side) {
+      const int grip = side == 0 ? rig.grip_left : rig.grip_right;
+      if (rig.hold.hands[side].palm_at.empty() || grip < 0) continue;
+      // Only a grip inside the bell makes this a hand in the bell.
+      const glm::vec3 g = into_bell * horn_world_[static_cast<std::size_t>(grip)][3];
+      if (g.z >= 0.0f) continue;
+      double through = 0.0;
+      for (std::size_t f = 0; f < 5; ++f) {
+        const int tip = rig.body_nodes.fingertips[side][f];
+        if (tip < 0) continue;
+        const glm::vec3 local = into_bell * body_world_[static_cast<std::size_t>(tip)][3];
+        const double behind_mm = -static_cast<double>(local.z) * 1000.0;
+        const double off_axis_mm = std::hypot(static_cast<double>(local.x), static_cast<double>(local.y)) * 1000.0;
+        if (behind_mm < 0.0) {
+          through = std::max(through, -behind_mm);  // out past the rim
+          continue;
+        }
+        const double wall_mm = rim_mm * d0_mm / (std::min(behind_mm, flare_mm) + d0_mm);
+        through = std::max(through, off_axis_mm + kPadRadiusMm[f] - wall_mm);
+      }
+      measure(who + (side == 0 ? ": left" : ": right") +
+                  " fingertips through the bell's wall or out past its rim",
+              "mm", 0.0)
+          .samples.push_back(through);
+    }
+  }
+
   // The worst finger joint (index .. little) of a posed hand past its limits.
   void finger_limits(const std::string& who, const model::ModelAsset& asset,
                      const model::ModelPose& pose, const stage::BodyNodes& nodes) {
@@ -264,6 +350,8 @@ class Checker {
       if (elbow >= 0) hands.push_back(origin(body_world_[static_cast<std::size_t>(elbow)]));
     }
     torso_clearance(who, rig.body_nodes.hips, rig.body_nodes.neck, hands);
+    arms_clear_of_instrument(who, *horn, rig.body_nodes);
+    hand_in_bell(who, *horn, rig);
     if (!rig.body_nodes.mapped) finger_limits(who, body_asset, body->pose, rig.body_nodes);
   }
 
@@ -319,6 +407,7 @@ class Checker {
       const int node = rig.key_nodes[static_cast<std::size_t>(key)];
       const double dip = rig.key_dip_rad[static_cast<std::size_t>(key)];
       if (node < 0 || dip <= 0.0) continue;
+      all_key_seconds_ += dt_s;
       const glm::quat& r = piano->pose.local[static_cast<std::size_t>(node)].rotation;
       const double angle = 2.0 * std::asin(std::min(
                                      1.0, static_cast<double>(glm::length(glm::vec3(r.x, r.y, r.z)))));
@@ -353,7 +442,12 @@ class Checker {
 
   void finish() {
     if (key_seconds_ <= 0.0) return;
-    // Informational: a key passes through half travel on every stroke and release.
+    // Of every animated key's seconds (all the piano's keys over the range): the figure.
+    measure(pianist_ + ": keys half down (25-75 %), no note sounding, of all keys' seconds", "%",
+            1.0)
+        .samples.push_back(100.0 * key_mid_silent_ / all_key_seconds_);
+    // Of the seconds keys are off their rest (stricter, informational): a key passes through half
+    // travel before its hammer escapes and after its damper falls, on every stroke and release.
     measure(pianist_ + ": key-seconds half down (25-75 %) with no note of the key sounding", "%")
         .samples.push_back(100.0 * key_mid_silent_ / key_seconds_);
     measure(pianist_ + ": ... of them outside the keys' strokes (a key left hanging)", "%", 1.0)
@@ -367,7 +461,7 @@ class Checker {
   std::vector<glm::vec3> head_tips_;
   FingerLimits limits_;
   std::vector<std::pair<ecs::Entity, const components::Note*>> notes_;
-  double key_seconds_ = 0.0, key_mid_silent_ = 0.0, key_mid_resting_ = 0.0;
+  double key_seconds_ = 0.0, all_key_seconds_ = 0.0, key_mid_silent_ = 0.0, key_mid_resting_ = 0.0;
   std::string pianist_;
 };
 

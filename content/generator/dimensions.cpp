@@ -156,7 +156,8 @@ Result<AssetDimensions> AssetDimensions::from_json(const nlohmann::json& documen
   const std::array horn{
       NumberField{"bore_mm", &h.bore_mm, 8.0, 16.0},
       NumberField{"bell_diameter_mm", &h.bell_diameter_mm, 200.0, 400.0},
-      NumberField{"bell_flare_mm", &h.bell_flare_mm, 150.0, 450.0},
+      NumberField{"bell_flare_mm", &h.bell_flare_mm, 150.0, 600.0},
+      NumberField{"bell_throat_diameter_mm", &h.bell_throat_diameter_mm, 15.0, 80.0},
       NumberField{"bell_back_x", &h.bell_back_x, 0.0, 2.0},
       NumberField{"bell_back_y", &h.bell_back_y, 0.0, 2.0},
       NumberField{"mouthpiece_length_mm", &h.mouthpiece_length_mm, 50.0, 120.0},

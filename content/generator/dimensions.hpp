@@ -114,7 +114,8 @@ struct UprightDimensions {
 struct HornDimensions {
   double bore_mm = 12.0;
   double bell_diameter_mm = 310.0;
-  double bell_flare_mm = 280.0;          // the bell's length from its throat to the rim
+  double bell_flare_mm = 450.0;          // the bell's length from its throat to the rim
+  double bell_throat_diameter_mm = 40.0; // where the last coil turn, widening, becomes the bell
   double bell_back_x = 0.55;             // the bell's axis: (x, -y, 1) normalised, pointing back
   double bell_back_y = 0.8;              //   toward the player's right side and down
   double mouthpiece_length_mm = 80.0;

@@ -61,6 +61,8 @@ tinygltf::Model build_horn(const HornDimensions& dims) {
   const int nickel = builder.add_material({"nickel_silver", {0.80, 0.80, 0.78, 1.0}, 1.0, 0.25});
 
   const double bore = dims.bore_mm / 2;
+  // The last coil turn widens into the bell's throat.
+  const double throat_r = std::max(dims.bell_throat_diameter_mm / 2, bore);
   const double casing_r = dims.rotor_diameter_mm / 2;
   // The valve cluster: four rotor casings with vertical axes in a row from the player forward,
   // on their left; the levers' pads further left, the fingers' row.
@@ -119,7 +121,7 @@ tinygltf::Model build_horn(const HornDimensions& dims) {
   coil_tube.centres = coil;
   for (std::size_t k = 0; k < coil.size(); ++k) {
     const double s = static_cast<double>(k) / static_cast<double>(coil.size() - 1);
-    coil_tube.radii.push_back(m(bore * (0.9 + 1.3 * s * s)));
+    coil_tube.radii.push_back(m(0.9 * bore + (throat_r - 0.9 * bore) * s * s));
   }
   coil_tube.segments = 14;
   coil_tube.start = Tube::End::open;
@@ -132,7 +134,6 @@ tinygltf::Model build_horn(const HornDimensions& dims) {
   // The bell: from the coil's end, flaring back toward the player's right side and down.
   const DVec3 bell_axis = unit({dims.bell_back_x, -dims.bell_back_y, 1.0});
   const double rim_r = dims.bell_diameter_mm / 2;
-  const double throat_r = bore * 2.2;
   const std::size_t bell_first = body.vertex_count();
   add_bell(body, 0, 0, 0, -dims.bell_flare_mm, throat_r, rim_r);
   transform_vertices(body, bell_first,
@@ -208,14 +209,25 @@ tinygltf::Model build_horn(const HornDimensions& dims) {
     const DVec3 y = scaled(palm_normal, -1.0);
     const DVec3 z = scaled(fingers, -1.0);
     const DVec3 x = cross(y, z);
-    const double depth = 0.62 * dims.bell_flare_mm;
+    const double depth = 0.88 * dims.bell_flare_mm;
     // The bell's radius there (add_bell's flare: r = B / (d + d0), d from the rim).
     const double d = dims.bell_flare_mm - depth;
     const double d0 = dims.bell_flare_mm / (rim_r / throat_r - 1.0);
     const double radius = rim_r * d0 / (d + d0);
-    const DVec3 palm = add(add(last, scaled(bell_axis, depth)), scaled(palm_normal, -(radius - 16.0)));
+    const DVec3 palm = add(add(last, scaled(bell_axis, depth)), scaled(palm_normal, -(radius - 40)));
     builder.add_child(root, builder.add_node("grip_right", -1, scaled(palm, 1.0 / 1000),
                                              from_basis(x, y, z)));
+    // The rim's centre, its -Z into the bell, with the flare's profile (add_bell: the radius
+    // rim · d0 / (d + d0) at d behind the rim): check-pose measures the hand in the bell by it.
+    const int rim = builder.add_node("bell_rim", -1,
+                                     scaled(add(last, scaled(bell_axis, dims.bell_flare_mm)), 1.0 / 1000),
+                                     from_minus_z(scaled(bell_axis, -1.0)));
+    tinygltf::Value::Object profile;
+    profile["rim_radius_mm"] = tinygltf::Value(rim_r);
+    profile["flare_d0_mm"] = tinygltf::Value(d0);
+    profile["flare_mm"] = tinygltf::Value(dims.bell_flare_mm);
+    builder.set_extras(rim, tinygltf::Value(std::move(profile)));
+    builder.add_child(root, rim);
   }
   return builder.finish();
 }

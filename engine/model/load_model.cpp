@@ -432,6 +432,14 @@ class Converter {
       }
       out.mesh = in.mesh;
       out.skin = in.skin;
+      if (in.extras.IsObject()) {
+        for (const std::string& key : in.extras.Keys()) {
+          const tinygltf::Value& value = in.extras.Get(key);
+          if (value.IsNumber() && std::isfinite(value.GetNumberAsDouble())) {
+            out.numbers.emplace_back(key, value.GetNumberAsDouble());
+          }
+        }
+      }
     }
     return {};
   }

@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <tutti/core/result.hpp>
@@ -78,6 +79,14 @@ struct Node {
   NodeTransform rest;  // the file's TRS (a `matrix` is decomposed; non-TRS matrices are errors)
   int mesh = -1;       // into ModelAsset::meshes
   int skin = -1;       // into ModelAsset::skins
+  // The node's `extras` members that are numbers (a valve's travel_mm, a bell's profile), by name.
+  std::vector<std::pair<std::string, double>> numbers;
+  double number(std::string_view key, double fallback) const {
+    for (const auto& [member, value] : numbers) {
+      if (member == key) return value;
+    }
+    return fallback;
+  }
 };
 
 struct Skin {

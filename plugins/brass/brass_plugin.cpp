@@ -25,9 +25,11 @@
 namespace tutti::brass_family {
 namespace {
 
-double extra_number(const model::ModelAsset&, int, const char*, double fallback) {
-  // Node extras are not kept by the loader yet; the generator's defaults are used.
-  return fallback;
+// A number from a node's glTF extras (the generated models' travel_mm), else the fallback: a user
+// model without the node or the extra.
+double extra_number(const model::ModelAsset& asset, int node, const char* key, double fallback) {
+  if (node < 0 || static_cast<std::size_t>(node) >= asset.nodes.size()) return fallback;
+  return asset.nodes[static_cast<std::size_t>(node)].number(key, fallback);
 }
 
 // The player's notes on the stage: who plays them, whether the instrument can, and the notes

@@ -103,6 +103,14 @@ void pose_fingers(const model::ModelAsset& body, const stage::BodyNodes& nodes, 
   for (std::size_t f = 0; f < 5; ++f) {
     const auto& bones = nodes.fingers[s][f];
     if (f == 0 && (targets == nullptr || !targets->has[0])) {
+      const FingerChain middle = chain_of(body, nodes, side, 2);
+      if (hold.thumb_adduct_rad != 0.0f && bones[0] >= 0 && middle.valid()) {
+        // The palm's normal in the hand's frame: across the flexion axis and the middle finger.
+        const glm::vec3 normal = glm::normalize(glm::cross(axis, middle.offset[0]));
+        const auto b = static_cast<std::size_t>(bones[0]);
+        pose.local[b].rotation =
+            glm::angleAxis(hold.thumb_adduct_rad, normal) * body.nodes[b].rest.rotation;
+      }
       for (std::size_t k = 1; k < 3; ++k) {
         if (bones[k] >= 0) {
           pose.local[static_cast<std::size_t>(bones[k])].rotation =

@@ -28,12 +28,22 @@ Result<std::array<float, 3>> curl(const content::JsonReader& r, const json& valu
   return out;
 }
 
+// Where an elbow points: down, out to the player's side, back (each a weight of that direction).
+Result<glm::vec3> read_elbow_pole(const content::JsonReader& r, const json& object,
+                                  const std::string& path) {
+  double down = 1.0, out = 0.8, back = 0.3;
+  const content::NumberField pole[] = {
+      {"down", &down, 0.0, 2.0}, {"out", &out, -1.0, 2.0}, {"back", &back, -1.0, 2.0}};
+  if (auto ok = r.read_number_fields(object, path, pole, true); !ok) return ok.error();
+  return glm::vec3(static_cast<float>(down), static_cast<float>(out), static_cast<float>(back));
+}
+
 Result<HandHold> read_hand(const content::JsonReader& r, const json& object,
                            const std::string& path) {
   if (auto ok = r.check_keys(object, path,
                              {"palm_at", "fingertips_on", "pad_above_button_mm",
                               "metacarpal_lean_deg", "finger_curl_deg", "little_curl_deg",
-                              "thumb_curl_deg", "wraps_valves"});
+                              "thumb_curl_deg", "thumb_adduct_deg", "wraps_valves", "elbow"});
       !ok) {
     return ok.error();
   }
@@ -91,6 +101,15 @@ Result<HandHold> read_hand(const content::JsonReader& r, const json& object,
   if (!thumb) return thumb.error();
   if (std::abs(*thumb) > 90.0) return r.error(path + "/thumb_curl_deg", "must be in -90..90");
   hand.thumb_curl_rad = static_cast<float>(*thumb) * kDegree;
+  auto adduct = r.number_or(object, path, "thumb_adduct_deg", 0.0);
+  if (!adduct) return adduct.error();
+  if (std::abs(*adduct) > 60.0) return r.error(path + "/thumb_adduct_deg", "must be in -60..60");
+  hand.thumb_adduct_rad = static_cast<float>(*adduct) * kDegree;
+  if (object.contains("elbow")) {
+    auto pole = read_elbow_pole(r, object.at("elbow"), path + "/elbow");
+    if (!pole) return pole.error();
+    hand.elbow_pole = *pole;
+  }
   return hand;
 }
 
@@ -132,13 +151,9 @@ Result<Hold> load_hold(const std::filesystem::path& file) {
     (std::string(stance) == "standing" ? hold.bell_tilt_standing_rad : hold.bell_tilt_seated_rad) =
         static_cast<float>(tilt) * kDegree;
   }
-  double down = 1.0, out = 0.8, back = 0.3;
-  const content::NumberField pole[] = {
-      {"down", &down, 0.0, 2.0}, {"out", &out, -1.0, 2.0}, {"back", &back, -1.0, 2.0}};
-  if (auto ok = r.read_number_fields(doc->at("elbows"), "/elbows", pole, true); !ok) {
-    return ok.error();
-  }
-  hold.elbow_pole = {static_cast<float>(down), static_cast<float>(out), static_cast<float>(back)};
+  auto pole = read_elbow_pole(r, doc->at("elbows"), "/elbows");
+  if (!pole) return pole.error();
+  hold.elbow_pole = *pole;
   if (doc->contains("rest")) {
     double below = 0.0, forward = 0.0, tilt = 0.0;
     const content::NumberField rest[] = {{"below_lips_m", &below, 0.0, 1.0},

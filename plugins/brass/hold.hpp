@@ -6,6 +6,7 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -24,7 +25,12 @@ struct HandHold {
   std::array<float, 3> little_curl_rad{};  // the little finger's, when it has its own
   bool little_own_curl = false;
   float thumb_curl_rad = 0.0f;
-  bool wraps_valves = false;  // the palm holds the valve casings (check-pose: wrist to their axis)
+  // The thumb turned in at its base, about the palm's normal, toward the index: along the fingers
+  // (the horn's hand in the bell); 0 leaves the rig's rest.
+  float thumb_adduct_rad = 0.0f;
+  bool wraps_valves = false;
+  // This arm's elbow pole (down, out, back), when it differs from the hold's `elbows`.
+  std::optional<glm::vec3> elbow_pole;  // the palm holds the valve casings (check-pose: wrist to their axis)
 };
 
 struct Hold {

@@ -141,9 +141,9 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
       const HandHold& hold = rig.hold.hands[side];
       const stage::TwoBoneChain& arm =
           hand == 0 ? rig.body_nodes.arm_left : rig.body_nodes.arm_right;
-      const glm::vec3 pole = rig.hold.elbow_pole.x * down +
-                             rig.hold.elbow_pole.y * (hand == 0 ? left : -left) +
-                             rig.hold.elbow_pole.z * back;
+      const glm::vec3 weights = hold.elbow_pole.value_or(rig.hold.elbow_pole);
+      const glm::vec3 pole =
+          weights.x * down + weights.y * (hand == 0 ? left : -left) + weights.z * back;
       FingertipTargets targets;
       bool by_fingertips = false;
       if (rig.hold.fingertips_place(hand) && canned_fingers && arm.end >= 0) {

@@ -222,6 +222,8 @@ TEST(ContentGenerator, BadDimensionsAreOneLineErrorsWithTheJsonPath) {
   tuba["tuba"]["valve_pitch_mm"] = 10.0;
   nlohmann::json horn = *document;
   horn["horn"].erase("rotor_diameter_mm");
+  nlohmann::json throat = *document;
+  throat["horn"]["bell_throat_diameter_mm"] = 500.0;
   const Case cases[] = {
       {"negative", negative.dump(), "dimensions.json: /chair/seat_top_mm"},
       {"unknown", unknown.dump(), "dimensions.json: /piano"},
@@ -231,6 +233,7 @@ TEST(ContentGenerator, BadDimensionsAreOneLineErrorsWithTheJsonPath) {
       {"performer", performer.dump(), "dimensions.json: /performer/upper_arm_length_mm"},
       {"tuba", tuba.dump(), "dimensions.json: /tuba/valve_pitch_mm"},
       {"horn", horn.dump(), "dimensions.json: /horn/rotor_diameter_mm: missing"},
+      {"throat", throat.dump(), "dimensions.json: /horn/bell_throat_diameter_mm"},
   };
   for (const Case& c : cases) {
     const auto content = content_with_dimensions(dir / c.name, c.json);

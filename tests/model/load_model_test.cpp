@@ -218,6 +218,19 @@ TEST(LoadModel, ReordersNodesSoParentsComeFirst) {
   expect_near(glm::vec3(world[static_cast<std::size_t>(hand)][3]), {0, 1, 0});
 }
 
+// A node's numeric extras are kept (a valve's travel_mm); other extras and non-numbers are not.
+TEST(LoadModel, KeepsTheNumbersOfANodesExtras) {
+  GltfBuilder b = test::two_bone_strip();
+  b.json["nodes"][0]["extras"] = {{"travel_mm", 10.5}, {"label", "valve"}, {"steps", 3}};
+  const ModelAsset asset = must_load(b.glb(), "extras.glb");
+  const Node& node = asset.nodes.at(static_cast<std::size_t>(
+      asset.find_node(b.json["nodes"][0]["name"].get<std::string>())));
+  EXPECT_DOUBLE_EQ(node.number("travel_mm", 18.0), 10.5);
+  EXPECT_DOUBLE_EQ(node.number("steps", 0.0), 3.0);
+  EXPECT_DOUBLE_EQ(node.number("label", -1.0), -1.0);
+  EXPECT_DOUBLE_EQ(node.number("absent", 7.0), 7.0);
+}
+
 TEST(LoadModel, KeepsTheFileOrderWhenItIsAlreadyParentsFirst) {
   const ModelAsset asset = must_load(test::two_bone_strip().glb(), "strip.glb");
   EXPECT_EQ(asset.find_node("root_joint"), 0);

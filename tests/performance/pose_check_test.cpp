@@ -72,6 +72,8 @@ TEST(PoseCheck, TrumpetersFingertipsRideTheButtonsTheyPress) {
   }
   for (const char* who : {"Trumpet 1", "Trumpet 2", "Trombone 1", "Trombone 2"}) {
     const std::string w = who;
+    EXPECT_EQ(get(report, w + ": instrument inside an arm's sleeve (depth; 0 = clear)").worst(), 0.0)
+        << who;
     if (w.starts_with("Trombone")) {
       EXPECT_LE(get(report, w + ": left palm to its grip (grip_left)").worst(), 1.0) << who;
     }
@@ -100,6 +102,15 @@ TEST(PoseCheck, TheQuintetsPlayersHoldTheirOwnInstruments) {
   EXPECT_LE(get(report, "Horn: right palm to its grip (grip_right)").worst(), 1.0);
   EXPECT_LE(get(report, "Tuba: left palm to its grip (grip_left)").worst(), 1.0);
   EXPECT_LE(get(report, "Trombone: right palm to its grip (grip_right)").worst(), 20.0);
+  // The horn's right hand is in its bell: every fingertip's pad inside the wall.
+  EXPECT_EQ(get(report, "Horn: right fingertips through the bell's wall or out past its rim").worst(),
+            0.0);
+  for (const char* who : {"Trumpet 1", "Trumpet 2", "Horn", "Trombone", "Tuba"}) {
+    EXPECT_EQ(get(report, std::string(who) + ": instrument inside an arm's sleeve (depth; 0 = clear)")
+                  .worst(),
+              0.0)
+        << who;
+  }
   for (const PoseMeasure& m : report.measures) {
     if (m.name.find("inside") != std::string::npos || m.name.find("limits") != std::string::npos) {
       EXPECT_TRUE(m.within_limit()) << m.name << ": " << m.worst();
@@ -167,6 +178,10 @@ TEST(PoseCheck, PianistsPadsMeetTheKeyTopsAndNoKeyIsLeftHanging) {
     EXPECT_GT(thumb.samples.size(), 50u) << scene;
     EXPECT_TRUE(thumb.within_limit()) << scene << ": " << thumb.percentile(0.0) << " .. "
                                       << thumb.worst();
+    EXPECT_LE(get(report, "pianist: keys half down (25-75 %), no note sounding, of all keys' seconds")
+                  .worst(),
+              1.0)
+        << scene;
     EXPECT_LE(get(report, "pianist: ... of them outside the keys' strokes (a key left hanging)")
                   .worst(),
               1.0)
@@ -200,6 +215,50 @@ TEST(PoseCheck, AHoldWithoutFingertipsOnTheButtonsFails) {
   const PoseMeasure& tips = get(report, "Trumpet 1: pressing fingertip to its button top");
   EXPECT_GT(tips.percentile(0.95), 20.0);
   EXPECT_FALSE(tips.within_limit());
+}
+
+// A hold file edited in a copy of the content: `edit` changes its text.
+stage::StageOptions with_hold(const test::ScratchDir& dir, const char* model,
+                              const std::string& from, const std::string& to) {
+  const std::filesystem::path content = dir.path() / "content";
+  std::filesystem::copy(kSource / "content", content, std::filesystem::copy_options::recursive);
+  const std::filesystem::path hold = content / "instruments" / "holds" / (std::string(model) + ".json");
+  std::stringstream text;
+  text << std::ifstream(hold).rdbuf();
+  std::string json = text.str();
+  const auto at = json.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) json.replace(at, from.size(), to);
+  std::ofstream(hold, std::ios::trunc) << json;
+  stage::StageOptions options;
+  options.content_dir = content;
+  return options;
+}
+
+// The horn's thumb left spread at the rig's rest (no thumb_adduct_deg): it leaves the bell through
+// its wall, and the check says so.
+TEST(PoseCheck, AHornThumbOutsideTheBellFails) {
+  test::ScratchDir dir;
+  const PoseReport report = check("quintet.json",
+                                  with_hold(dir, "horn", "\"thumb_adduct_deg\": 60.0", "\"thumb_adduct_deg\": 0.0"),
+                                  2.0, 4.0);
+  const PoseMeasure& bell =
+      get(report, "Horn: right fingertips through the bell's wall or out past its rim");
+  EXPECT_GT(bell.worst(), 20.0);
+  EXPECT_FALSE(bell.within_limit());
+}
+
+// The trombone's left elbow out to the side like the right one (no own "elbow"): the forearm's
+// sleeve runs through the bell section's tube.
+TEST(PoseCheck, ATromboneLeftElbowOutPutsTheTubeThroughTheSleeve) {
+  test::ScratchDir dir;
+  const PoseReport report =
+      check("quartet.json",
+            with_hold(dir, "trombone", "\"elbow\": {\"down\": 1.0, \"out\": -0.2, \"back\": -0.5},", ""));
+  const PoseMeasure& sleeve =
+      get(report, "Trombone 1: instrument inside an arm's sleeve (depth; 0 = clear)");
+  EXPECT_GT(sleeve.worst(), 3.0);
+  EXPECT_FALSE(sleeve.within_limit());
 }
 
 TEST(PoseCheck, AnEmptyRangeIsAnError) {

@@ -35,6 +35,20 @@ TEST(Hold, TheTromboneIsHeldByItsGrips) {
   EXPECT_EQ(hold->hands[1].palm_at, "grip_right");
 }
 
+// The horn's right hand goes into the bell with its thumb turned in; the trombone's left elbow has
+// its own pole (tucked in and forward), the right follows the hold's.
+TEST(Hold, HandsCarryTheirOwnThumbAndElbow) {
+  auto horn = load_hold(kHolds / "horn.json");
+  ASSERT_TRUE(horn) << horn.error().message;
+  EXPECT_GT(horn->hands[1].thumb_adduct_rad, 0.5f);
+  EXPECT_EQ(horn->hands[0].thumb_adduct_rad, 0.0f);
+  auto trombone = load_hold(kHolds / "trombone.json");
+  ASSERT_TRUE(trombone) << trombone.error().message;
+  ASSERT_TRUE(trombone->hands[0].elbow_pole.has_value());
+  EXPECT_LT(trombone->hands[0].elbow_pole->y, 0.0f);  // in, not out
+  EXPECT_FALSE(trombone->hands[1].elbow_pole.has_value());
+}
+
 TEST(Hold, BrokenFilesAreRefusedWithTheFileAndThePath) {
   test::ScratchDir dir;
   const std::string carriage =
@@ -59,6 +73,12 @@ TEST(Hold, BrokenFilesAreRefusedWithTheFileAndThePath) {
        "/right_hand/finger_curl_deg/2"},
       {"neither.json", "{" + carriage + left + R"(, "right_hand": {"finger_curl_deg": [1, 2, 3]}})",
        "either palm_at or fingertips_on"},
+      {"adduct.json", "{" + carriage + left + R"(, "right_hand": {"palm_at": "grip_right",
+          "finger_curl_deg": [1, 2, 3], "thumb_adduct_deg": 95}})",
+       "/right_hand/thumb_adduct_deg: must be in -60..60"},
+      {"elbow.json", "{" + carriage + left + R"(, "right_hand": {"palm_at": "grip_right",
+          "finger_curl_deg": [1, 2, 3], "elbow": {"down": "low"}}})",
+       "/right_hand/elbow"},
       {"tilt.json", R"({"carriage": {"standing": {"bell_tilt_deg": "down"}, "seated": {}},
           "elbows": {"down": 1, "out": 0.8, "back": 0.3},)" + left +
                         R"(, "right_hand": {"palm_at": "grip_right", "finger_curl_deg": [1, 2, 3]}})",
