@@ -164,6 +164,31 @@ TEST(SyncReport, JsonListsEveryMatchOfTheSparsePiece) {
   }
 }
 
+// The sparse brass piece: a trumpet and a trombone taking turns, one note at a time. Every note is
+// heard on its tongue, the valves arriving with it (trumpet) and the slide arriving (trombone).
+TEST(SyncReport, BrassNotesAreHeardOnTheirValvesAndSlide) {
+  SyncReportOptions options;
+  options.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" / "sync" /
+                  "sparse_brass.json";
+  options.json = true;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_sync_report(options, out, err), 0) << err.str();
+  const auto doc = nlohmann::json::parse(out.str());
+  EXPECT_GE(doc.at("expected").get<int>(), 38);
+  EXPECT_EQ(doc.at("matches").size(), doc.at("expected").get<std::size_t>());
+  EXPECT_LE(std::abs(doc.at("median_ms").get<double>()), 3.0);
+  EXPECT_LE(doc.at("p95_abs_ms").get<double>(), 10.0);
+  int valves = 0, slides = 0;
+  for (const auto& m : doc.at("matches")) {
+    for (const auto& c : m.at("contacts")) {
+      valves += c.at("kind") == "valve down" ? 1 : 0;
+      slides += c.at("kind") == "slide arrives" ? 1 : 0;
+    }
+  }
+  EXPECT_GE(valves, 10);
+  EXPECT_GE(slides, 10);
+}
+
 TEST(SyncReport, BadOptionsAreOneLineErrors) {
   std::ostringstream out, err;
   SyncReportOptions options;
