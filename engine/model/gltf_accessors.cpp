@@ -230,14 +230,40 @@ Result<AccessorSpan> locate_accessor(const tinygltf::Model& model, int index,
   return span;
 }
 
-Result<std::vector<glm::vec3>> read_vec3_floats(const tinygltf::Model& model, int index,
-                                                std::size_t max_count) {
-  auto span = locate_accessor(model, index,
-                              {TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, {}, max_count});
+Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int index,
+                                         std::size_t max_count, Vec3Kind kind) {
+  constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE;
+  constexpr int kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  constexpr int kShort = TINYGLTF_COMPONENT_TYPE_SHORT;
+  constexpr int kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  AccessorRule rule{TINYGLTF_TYPE_VEC3, {kFloat}, {}, max_count};
+  // KHR_mesh_quantization's table.
+  switch (kind) {
+    case Vec3Kind::position:
+      rule.allowed = {kFloat, kByte, kUByte, kShort, kUShort};
+      rule.allowed_normalized = {kByte, kUByte, kShort, kUShort};
+      break;
+    case Vec3Kind::normal:
+      rule.allowed_normalized = {kByte, kShort};
+      break;
+    case Vec3Kind::morph_position:
+      rule.allowed = {kFloat, kByte, kShort};
+      rule.allowed_normalized = {kByte, kShort};
+      break;
+    case Vec3Kind::morph_normal:
+      rule.allowed_normalized = {kByte, kShort};
+      break;
+  }
+  auto span = locate_accessor(model, index, rule);
   if (!span) return span.error();
+  const std::size_t size = component_size(span->component_type);
   std::vector<glm::vec3> out(span->count);
   for_each_element(*span, [&](std::size_t i, const std::uint8_t* p) {
-    for (int c = 0; c < 3; ++c) out[i][c] = float_component(p + 4 * c, span->component_type, false);
+    for (int c = 0; c < 3; ++c) {
+      out[i][c] = float_component(p + size * static_cast<std::size_t>(c), span->component_type,
+                                  span->normalized);
+    }
   });
   return out;
 }

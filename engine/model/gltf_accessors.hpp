@@ -3,7 +3,8 @@
 // view and buffer (offsets, stride, count, with no integer overflow) and against the component
 // types the attribute allows before one byte is read, and its count against a cap before
 // anything is allocated. Integer components marked `normalized` map to [0, 1] (unsigned) or
-// [-1, 1] (signed) as the glTF spec says. Sparse accessors are refused.
+// [-1, 1] (signed) as the glTF spec says. Sparse accessors are made dense before
+// (gltf_extensions.hpp); one still sparse here is refused.
 //
 // Internal to tutti_model. Errors are reasons without the file name ("accessor 4: ...").
 
@@ -47,8 +48,11 @@ Result<AccessorSpan> locate_accessor(const tinygltf::Model& model, int index,
                                      const AccessorRule& rule);
 
 // Typed reads (they call locate_accessor with the rule the spec gives for the attribute).
-Result<std::vector<glm::vec3>> read_vec3_floats(const tinygltf::Model& model, int index,
-                                                std::size_t max_count);
+// VEC3 attributes: float, or the integer types KHR_mesh_quantization allows for each (positions
+// any byte or short, normalized or not; normals normalized byte or short; morph deltas signed).
+enum class Vec3Kind { position, normal, morph_position, morph_normal };
+Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int index,
+                                         std::size_t max_count, Vec3Kind kind);
 // JOINTS_n: VEC4 of unsigned byte or unsigned short.
 Result<std::vector<glm::uvec4>> read_joints(const tinygltf::Model& model, int index,
                                             std::size_t max_count);

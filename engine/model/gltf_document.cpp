@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <tutti/core/file_io.hpp>
+#include <tutti/model/gltf_extensions.hpp>
 
 namespace tutti::model::detail {
 namespace {
@@ -236,6 +237,9 @@ Result<tinygltf::Model> parse_gltf(std::span<const std::uint8_t> bytes,
   }
   JsonScan scan;
   if (auto scanned = scan_json(json, scan); !scanned) return scanned.error();
+  auto prepared = prepare_extensions(bytes, binary, json);
+  if (!prepared) return prepared.error();
+  if (prepared->rewritten) bytes = prepared->bytes;
 
   FileAccess access;
   if (base_dir) {
@@ -267,6 +271,7 @@ Result<tinygltf::Model> parse_gltf(std::span<const std::uint8_t> bytes,
     if (!access.read_error.empty()) return Error{fold_message(access.read_error)};
     return Error{fold_message(err.empty() ? warn : err)};
   }
+  if (auto resolved = resolve_extensions(model, *prepared); !resolved) return resolved.error();
   return model;
 }
 

@@ -1,6 +1,7 @@
 // tinygltf::Model → ModelAsset: every reference, count and accessor range checked
 // (model_asset.hpp).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 
@@ -94,6 +95,26 @@ void make_flat(PrimitiveData& data) {
   flat.indices.resize(corners);
   for (std::size_t c = 0; c < corners; ++c) flat.indices[c] = static_cast<std::uint32_t>(c);
   data = std::move(flat);
+}
+
+// Eight influences per vertex (sets 0 and 1) down to the four largest, into set 0.
+void keep_four_largest(std::vector<glm::uvec4>& joints, std::vector<glm::vec4>& weights,
+                       const std::vector<glm::uvec4>& joints_1, const std::vector<glm::vec4>& weights_1) {
+  for (std::size_t v = 0; v < weights.size(); ++v) {
+    std::array<std::pair<float, std::uint32_t>, 8> all{};
+    for (int c = 0; c < 4; ++c) {
+      const auto k = static_cast<std::size_t>(c);
+      all[k] = {std::isfinite(weights[v][c]) ? weights[v][c] : 0.0f, joints[v][c]};
+      all[k + 4] = {std::isfinite(weights_1[v][c]) ? weights_1[v][c] : 0.0f, joints_1[v][c]};
+    }
+    // Ties keep the earlier influence: stable, so the result is deterministic.
+    std::stable_sort(all.begin(), all.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (int c = 0; c < 4; ++c) {
+      weights[v][c] = all[static_cast<std::size_t>(c)].first;
+      joints[v][c] = all[static_cast<std::size_t>(c)].second;
+    }
+  }
 }
 
 // Weights clamped to finite non-negative values and scaled to sum 1; all zero → joint 0 alone.
@@ -242,7 +263,7 @@ class Converter {
     PrimitiveData data;
     const int position = attribute("POSITION");
     if (position < 0) return Error{where + ": no POSITION attribute"};
-    auto positions = read_vec3_floats(m_, position, vertex_budget);
+    auto positions = read_vec3(m_, position, vertex_budget, Vec3Kind::position);
     if (!positions) return prefixed(where + ": POSITION", positions.error(), " ");
     data.positions = std::move(*positions);
     const std::size_t n = data.positions.size();
@@ -253,7 +274,7 @@ class Converter {
     };
 
     if (const int normal = attribute("NORMAL"); normal >= 0) {
-      auto normals = read_vec3_floats(m_, normal, n);
+      auto normals = read_vec3(m_, normal, n, Vec3Kind::normal);
       if (!normals) return prefixed(where + ": NORMAL", normals.error(), " ");
       if (auto s = same_count("NORMAL", normals->size()); !s) return s.error();
       data.normals = std::move(*normals);
@@ -274,6 +295,24 @@ class Converter {
       if (auto s = same_count("WEIGHTS_0", w->size()); !s) return s.error();
       data.joints = std::move(*j);
       data.weights = std::move(*w);
+      // More than four influences (JOINTS_1 / WEIGHTS_1): the four largest of the eight are kept
+      // (normalise_weights then scales them to sum 1).
+      const int joints_1 = attribute("JOINTS_1");
+      const int weights_1 = attribute("WEIGHTS_1");
+      if ((joints_1 >= 0) != (weights_1 >= 0)) {
+        return Error{where + (joints_1 >= 0 ? ": JOINTS_1 without WEIGHTS_1"
+                                            : ": WEIGHTS_1 without JOINTS_1")};
+      }
+      if (joints_1 >= 0) {
+        auto j1 = read_joints(m_, joints_1, n);
+        if (!j1) return prefixed(where + ": JOINTS_1", j1.error(), " ");
+        if (auto s = same_count("JOINTS_1", j1->size()); !s) return s.error();
+        auto w1 = read_weights(m_, weights_1, n);
+        if (!w1) return prefixed(where + ": WEIGHTS_1", w1.error(), " ");
+        if (auto s = same_count("WEIGHTS_1", w1->size()); !s) return s.error();
+        keep_four_largest(data.joints, data.weights, *j1, *w1);
+        ++asset_.primitives_over_four_weights;
+      }
     }
 
     if (in.indices >= 0) {
@@ -313,7 +352,8 @@ class Converter {
       for (const auto& [name, accessor] : in.targets[k]) {
         const bool is_position = name == "POSITION";
         if (!is_position && name != "NORMAL") continue;  // TANGENT etc. are not used
-        auto deltas = read_vec3_floats(m_, accessor, n);
+        auto deltas = read_vec3(m_, accessor, n,
+                                is_position ? Vec3Kind::morph_position : Vec3Kind::morph_normal);
         if (!deltas) return prefixed(target_where + ": " + name, deltas.error(), " ");
         if (deltas->size() != n) {
           return Error{target_where + ": " + name + " has " + std::to_string(deltas->size()) +
@@ -354,7 +394,10 @@ class Converter {
     for (std::size_t v = 0; v < data.positions.size(); ++v) {
       Vertex vertex;
       vertex.position = data.positions[v];
-      vertex.normal = data.normals[v];
+      // Quantized normals (KHR_mesh_quantization) come back a little off unit length.
+      const glm::vec3 normal = data.normals[v];
+      const float length = glm::length(normal);
+      vertex.normal = length > 1e-12f && std::isfinite(length) ? normal / length : normal;
       if (!data.joints.empty()) {
         vertex.joints = data.joints[v];
         vertex.weights = data.weights[v];

@@ -107,6 +107,9 @@ struct ModelAsset {
   std::vector<Vertex> vertices;
   std::vector<std::uint32_t> indices;
   std::vector<MorphDelta> morph_deltas;
+  // Primitives whose vertices had eight influences (JOINTS_1 / WEIGHTS_1), cut to the four
+  // largest and renormalised: tools print a note when this is not 0.
+  std::size_t primitives_over_four_weights = 0;
 
   // Index of the first node with this exact name, -1 if none.
   int find_node(std::string_view name) const;

@@ -203,10 +203,11 @@ TEST(HostileModel, CyclesAndTwoParents) {
 
 TEST(HostileModel, WrongComponentTypesAndTypes) {
   GltfBuilder b = strip();
-  b.json["accessors"][0]["componentType"] = kUnsignedShort;
+  // KHR_mesh_quantization allows byte and short positions; 32-bit integers never.
+  b.json["accessors"][0]["componentType"] = test::kUnsignedInt;
   b.json["accessors"][0]["count"] = 1;
   expect_error(b, "component",
-               "mesh \"strip\" primitive 0: POSITION accessor 0: component type unsigned short "
+               "mesh \"strip\" primitive 0: POSITION accessor 0: component type unsigned int "
                "is not allowed here");
   GltfBuilder type = strip();
   type.json["accessors"][0]["type"] = "VEC2";
@@ -280,12 +281,22 @@ TEST(HostileModel, MorphTargetMismatches) {
 }
 
 TEST(HostileModel, SparseAccessorsAndBadReferences) {
+  // Sparse accessors are read (pipeline_gltf_test.cpp); their indices are checked: here the
+  // strip's index data (values up to 5) as sparse indices into a 2-element accessor.
   GltfBuilder sparse = strip();
-  sparse.json["accessors"][0]["sparse"] = {
-      {"count", 1},
+  sparse.json["accessors"][1]["count"] = 2;
+  sparse.json["accessors"][1]["sparse"] = {
+      {"count", 2},
+      {"indices", {{"bufferView", 4}, {"byteOffset", 2}, {"componentType", kUnsignedShort}}},
+      {"values", {{"bufferView", 0}}}};
+  EXPECT_NE(error_for(sparse.glb(), "sparse.glb").find("sparse index"), std::string::npos);
+  GltfBuilder too_many = strip();
+  too_many.json["accessors"][0]["sparse"] = {
+      {"count", 7},
       {"indices", {{"bufferView", 4}, {"componentType", kUnsignedShort}}},
       {"values", {{"bufferView", 0}}}};
-  error_for(sparse.glb(), "sparse.glb");
+  EXPECT_NE(error_for(too_many.glb(), "too_many.glb").find("7 sparse values for 6 elements"),
+            std::string::npos);
   GltfBuilder material = strip();
   material.json["meshes"][0]["primitives"][0]["material"] = 3;
   expect_error(material, "material",
