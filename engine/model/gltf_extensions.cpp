@@ -10,6 +10,7 @@
 
 #include <tutti/model/gltf_accessors.hpp>
 #include <tutti/model/gltf_document.hpp>
+#include <tutti/model/gltf_draco.hpp>
 
 namespace tutti::model::detail {
 namespace {
@@ -22,7 +23,8 @@ constexpr std::size_t kMaxDecodedBytes = kMaxModelFileBytes;
 constexpr std::size_t kMaxDecodedCount = std::size_t{1} << 24;
 
 // Extensions whose data tutti decodes.
-const std::set<std::string> kDecoded = {"KHR_mesh_quantization", kMeshopt};
+const std::set<std::string> kDecoded = {"KHR_mesh_quantization", kMeshopt,
+                                         "KHR_draco_mesh_compression"};
 // Appearance only: the geometry is whole without them.
 bool appearance_only(const std::string& name) {
   return name.rfind("KHR_materials_", 0) == 0 || name == "KHR_texture_transform" ||
@@ -80,11 +82,6 @@ Status check_required(const json& doc) {
     if (!name.is_string()) return Error{"extensionsRequired holds a non-string"};
     const std::string extension = name.get<std::string>();
     if (kDecoded.count(extension) != 0 || appearance_only(extension)) continue;
-    if (extension == "KHR_draco_mesh_compression") {
-      return Error{"requires KHR_draco_mesh_compression (Draco-compressed meshes), which tutti "
-                   "does not read yet; re-export without Draco (gltfpack -cc gives meshopt "
-                   "compression, which it reads)"};
-    }
     return Error{"requires the glTF extension " + extension + ", which tutti does not read"};
   }
   return {};
@@ -138,6 +135,46 @@ Status rewrite_meshopt(json& doc, std::vector<MeshoptView>& views) {
     }
   }
   return {};
+}
+
+// tinygltf (built without Draco) wants a buffer view on every accessor a primitive uses; the
+// accessors a Draco primitive decodes into have none. They are pointed at the compressed view
+// until decode_draco_primitives gives them their decoded data.
+void point_draco_accessors(json& doc) {
+  if (!doc.contains("meshes") || !doc.at("meshes").is_array() || !doc.contains("accessors") ||
+      !doc.at("accessors").is_array()) {
+    return;
+  }
+  json& accessors = doc.at("accessors");
+  const auto point = [&](const json& index, const json& view) {
+    if (!index.is_number_unsigned() || index.get<std::size_t>() >= accessors.size()) return;
+    json& accessor = accessors[index.get<std::size_t>()];
+    if (accessor.is_object() && !accessor.contains("bufferView")) accessor["bufferView"] = view;
+  };
+  for (const json& mesh : doc.at("meshes")) {
+    if (!mesh.is_object() || !mesh.contains("primitives") || !mesh.at("primitives").is_array()) {
+      continue;
+    }
+    for (const json& primitive : mesh.at("primitives")) {
+      if (!primitive.is_object() || !primitive.contains("extensions") ||
+          !primitive.at("extensions").is_object() ||
+          !primitive.at("extensions").contains("KHR_draco_mesh_compression")) {
+        continue;
+      }
+      const json& e = primitive.at("extensions").at("KHR_draco_mesh_compression");
+      if (!e.is_object() || !e.contains("bufferView") || !e.contains("attributes") ||
+          !e.at("attributes").is_object()) {
+        continue;  // decode_draco_primitives names the problem
+      }
+      if (primitive.contains("indices")) point(primitive.at("indices"), e.at("bufferView"));
+      if (!primitive.contains("attributes") || !primitive.at("attributes").is_object()) continue;
+      for (const auto& [name, id] : e.at("attributes").items()) {
+        if (primitive.at("attributes").contains(name)) {
+          point(primitive.at("attributes").at(name), e.at("bufferView"));
+        }
+      }
+    }
+  }
 }
 
 std::vector<std::uint8_t> rebuild_glb(std::span<const std::uint8_t> bytes, const std::string& text) {
@@ -318,8 +355,9 @@ Result<PreparedDocument> prepare_extensions(std::span<const std::uint8_t> bytes,
   PreparedDocument prepared;
   const std::string_view text(reinterpret_cast<const char*>(json_text.data()), json_text.size());
   // Most files use none of this: only those that name an extension are parsed here.
-  if (text.find("extensionsRequired") == std::string_view::npos &&
-      text.find(kMeshopt) == std::string_view::npos) {
+  const bool meshopt = text.find(kMeshopt) != std::string_view::npos;
+  const bool draco = text.find("KHR_draco_mesh_compression") != std::string_view::npos;
+  if (text.find("extensionsRequired") == std::string_view::npos && !meshopt && !draco) {
     return prepared;
   }
   json doc;
@@ -330,8 +368,11 @@ Result<PreparedDocument> prepare_extensions(std::span<const std::uint8_t> bytes,
   }
   if (!doc.is_object()) return prepared;
   if (auto ok = check_required(doc); !ok) return ok.error();
-  if (text.find(kMeshopt) == std::string_view::npos) return prepared;
-  if (auto ok = rewrite_meshopt(doc, prepared.meshopt); !ok) return ok.error();
+  if (!meshopt && !draco) return prepared;
+  if (meshopt) {
+    if (auto ok = rewrite_meshopt(doc, prepared.meshopt); !ok) return ok.error();
+  }
+  if (draco) point_draco_accessors(doc);
   const std::string rewritten = doc.dump();
   prepared.rewritten = true;
   if (binary) {
@@ -346,6 +387,7 @@ Status resolve_extensions(tinygltf::Model& model, const PreparedDocument& prepar
   for (const MeshoptView& job : prepared.meshopt) {
     if (auto ok = decode_meshopt(model, job); !ok) return ok;
   }
+  if (auto ok = decode_draco_primitives(model); !ok) return ok;
   const std::size_t accessors = model.accessors.size();
   for (std::size_t i = 0; i < accessors; ++i) {
     if (!model.accessors[i].sparse.isSparse) continue;

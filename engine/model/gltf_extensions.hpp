@@ -8,6 +8,7 @@
 //  - EXT_meshopt_compression (gltfpack): before tinygltf, each compressed buffer view is pointed
 //    at its compressed bytes and the "fallback" buffer (no data) gets a 3-byte stand-in; after,
 //    the views are decoded with meshoptimizer's decoders and filters into new buffers.
+//  - KHR_draco_mesh_compression: decoded with libdraco (gltf_draco.hpp).
 //  - Sparse accessors: written out dense into new buffers.
 //
 // Every count, stride and range is checked before anything is decoded or allocated; the
