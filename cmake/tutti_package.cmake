@@ -17,6 +17,7 @@ include(CMakePackageConfigHelpers)
 #  - tuttiRenderTargets: the Vulkan renderer, windows, the runtime and tutti::tutti.
 set(TUTTI_PERFORMANCE_TARGETS
   tutti_core tutti_ecs tutti_components tutti_music tutti_content tutti_image tutti_model
+  tutti_humanoid
   tutti_scene tutti_stage tutti_piano_plugin tutti_brass_plugin tutti_performance tutti_c
   tutti_export
   tutti_piano_model tutti_fingering_planner tutti_brass_planner tutti_spline_motion

@@ -184,8 +184,8 @@ Result<AssetMapping> parse_asset_mapping(const nlohmann::json& document,
   std::string extension = std::filesystem::path(*model).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".glb" && extension != ".gltf") {
-    return reader.error("/model", "expected a .glb or .gltf file");
+  if (extension != ".glb" && extension != ".gltf" && extension != ".vrm") {
+    return reader.error("/model", "expected a .glb, .gltf or .vrm file");
   }
   mapping.model = (base_dir / *model).lexically_normal();
 

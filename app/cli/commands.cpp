@@ -1,5 +1,6 @@
 #include <tutti/cli/brass_command.hpp>
 #include <tutti/cli/check_pose_command.hpp>
+#include <tutti/cli/rig_command.hpp>
 #include <tutti/cli/commands.hpp>
 #include <tutti/cli/concat_command.hpp>
 #include <tutti/cli/export_command.hpp>
@@ -24,6 +25,7 @@ void register_commands(Commands& commands) {
   register_render_command(commands);
   register_sync_report_command(commands);
   register_check_pose_command(commands);
+  register_rig_command(commands);
   register_play_command(commands);
 }
 

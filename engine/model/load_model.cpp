@@ -154,6 +154,7 @@ class Converter {
     if (auto s = convert_nodes(*order); !s) return s.error();
     if (auto s = check_skinned_nodes(); !s) return s.error();
     if (auto s = find_roots(*order); !s) return s.error();
+    read_humanoid_table(*order);
     return std::move(asset_);
   }
 
@@ -162,6 +163,34 @@ class Converter {
     bool skin_attributes = false;
     std::uint32_t max_joint = 0;
   };
+
+  // VRM's humanoid bone table (0.x: extensions.VRM.humanoid.humanBones [{bone, node}]; 1.0:
+  // extensions.VRMC_vrm.humanoid.humanBones {bone: {node}}), node indices remapped. Entries
+  // that are not a valid node are left out; the recogniser reports what is missing.
+  void read_humanoid_table(const NodeOrder& order) {
+    const auto add = [&](const std::string& bone, const tinygltf::Value& node) {
+      if (!node.IsInt()) return;
+      const int file = node.GetNumberAsInt();
+      if (file < 0 || static_cast<std::size_t>(file) >= m_.nodes.size()) return;
+      asset_.humanoid_table.emplace_back(bone, order.new_index[static_cast<std::size_t>(file)]);
+    };
+    if (const auto vrm1 = m_.extensions.find("VRMC_vrm"); vrm1 != m_.extensions.end()) {
+      const tinygltf::Value& bones = vrm1->second.Get("humanoid").Get("humanBones");
+      if (bones.IsObject()) {
+        for (const std::string& bone : bones.Keys()) add(bone, bones.Get(bone).Get("node"));
+        asset_.humanoid_table_source = "VRM 1.0";
+      }
+    } else if (const auto vrm0 = m_.extensions.find("VRM"); vrm0 != m_.extensions.end()) {
+      const tinygltf::Value& bones = vrm0->second.Get("humanoid").Get("humanBones");
+      if (bones.IsArray()) {
+        for (std::size_t i = 0; i < bones.ArrayLen(); ++i) {
+          const tinygltf::Value& entry = bones.Get(static_cast<int>(i));
+          if (entry.Get("bone").IsString()) add(entry.Get("bone").Get<std::string>(), entry.Get("node"));
+        }
+        asset_.humanoid_table_source = "VRM 0.x";
+      }
+    }
+  }
 
   Status convert_materials() {
     for (std::size_t i = 0; i < m_.materials.size(); ++i) {

@@ -110,6 +110,10 @@ struct ModelAsset {
   // Primitives whose vertices had eight influences (JOINTS_1 / WEIGHTS_1), cut to the four
   // largest and renormalised: tools print a note when this is not 0.
   std::size_t primitives_over_four_weights = 0;
+  // A VRM file's humanoid bone table: (VRM bone name, node), and "VRM 0.x" / "VRM 1.0"; empty
+  // for other files (engine/humanoid recognises those by their bone names and hierarchy).
+  std::vector<std::pair<std::string, int>> humanoid_table;
+  std::string humanoid_table_source;
 
   // Index of the first node with this exact name, -1 if none.
   int find_node(std::string_view name) const;

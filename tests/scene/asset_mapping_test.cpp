@@ -104,7 +104,7 @@ TEST(AssetMappingErrors, BadValues) {
   EXPECT_EQ(error_of(doc), "m.json: /kind: must be one of character, hand, trumpet, trombone");
   doc = trumpet();
   doc["model"] = "horn.fbx";
-  EXPECT_EQ(error_of(doc), "m.json: /model: expected a .glb or .gltf file");
+  EXPECT_EQ(error_of(doc), "m.json: /model: expected a .glb, .gltf or .vrm file");
   doc = trumpet();
   doc["scale"] = 0;
   EXPECT_EQ(error_of(doc), "m.json: /scale: must be positive");
