@@ -1,6 +1,9 @@
 #include <tutti/stage/model_binding.hpp>
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <tutti/humanoid/humanoid.hpp>
 #include <vector>
 
 namespace tutti::stage {
@@ -17,6 +20,41 @@ glm::mat4 mapping_correction(const scene::AssetMapping& mapping) {
   return glm::scale(m, glm::vec3(f(mapping.scale)));
 }
 
+// A character model without a mapping file: its humanoid recognised (engine/humanoid), and the
+// mapping it would have written (`tutti rig --mapping`) made here.
+Result<MappedModel> load_recognised(StageBuilder& builder, const std::filesystem::path& file) {
+  auto model = builder.user_model(file);
+  if (!model) return model.error();
+  const humanoid::Humanoid h = humanoid::recognise(builder.model(*model));
+  if (!h.playable()) {
+    std::string missing;
+    for (std::string_view role : h.missing_required) {
+      missing += (missing.empty() ? "" : ", ") + std::string(role);
+    }
+    return Error{file.filename().string() + ": not a humanoid tutti can play: no " + missing +
+                 " (tutti rig " + file.filename().string() + " shows what was recognised)"};
+  }
+  scene::AssetMapping mapping;
+  mapping.source = file.filename().string();
+  mapping.model = file;
+  mapping.kind = scene::AssetKind::character;
+  mapping.scale = h.metres_per_unit;
+  const glm::dvec3 rotation = humanoid::rotation_to_tutti_deg(h);
+  mapping.rotation_deg = {rotation.x, rotation.y, rotation.z};
+  const model::ModelAsset& asset = builder.model(*model);
+  for (const auto& [role, node] : h.nodes) {
+    if (node >= 0) mapping.nodes.emplace_back(role, asset.nodes[static_cast<std::size_t>(node)].name);
+  }
+  std::sort(mapping.nodes.begin(), mapping.nodes.end());
+  mapping.morphs = h.morphs;
+  std::sort(mapping.morphs.begin(), mapping.morphs.end());
+  MappedModel out;
+  out.model = *model;
+  out.correction = mapping_correction(mapping);
+  out.mapping = std::move(mapping);
+  return out;
+}
+
 }  // namespace
 
 Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::path& mapping_file,
@@ -27,6 +65,10 @@ Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::pa
     if (!model) return model.error();
     out.model = *model;
     return out;
+  }
+  const std::string extension = mapping_file.extension().string();
+  if (extension == ".glb" || extension == ".gltf" || extension == ".vrm") {
+    return load_recognised(builder, mapping_file);
   }
   auto mapping = scene::load_asset_mapping(mapping_file);
   if (!mapping) return mapping.error();

@@ -31,23 +31,6 @@ std::string axis_name(const glm::vec3& v) {
   return text;
 }
 
-// The rotation (degrees about X, then Y, then Z: the mapping's rotation_deg) that turns the
-// file's up to +Y and its facing to +Z.
-glm::dvec3 rotation_to_tutti(const glm::vec3& up, const glm::vec3& facing) {
-  const glm::dvec3 y = glm::normalize(glm::dvec3(up));
-  glm::dvec3 z = glm::dvec3(facing) - glm::dot(glm::dvec3(facing), y) * y;
-  z = glm::length(z) > 1e-9 ? glm::normalize(z) : glm::dvec3(0, 0, 1);
-  const glm::dvec3 x = glm::cross(y, z);
-  // Rows of the rotation are the file's axes x, y, z (so it maps them onto X, Y, Z).
-  const double r00 = x.x, r10 = y.x, r20 = z.x, r21 = z.y, r22 = z.z;
-  const double deg = 180.0 / 3.14159265358979;
-  const double b = std::asin(std::clamp(-r20, -1.0, 1.0));
-  const double a = std::atan2(r21, r22);
-  const double c = std::atan2(r10, r00);
-  const auto clean = [](double v) { return std::abs(v) < 1e-6 ? 0.0 : std::round(v * 1000.0) / 1000.0; };
-  return {clean(a * deg), clean(b * deg), clean(c * deg)};
-}
-
 }  // namespace
 
 int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
@@ -61,10 +44,7 @@ int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
   const auto name_of = [&](int node) {
     return node < 0 ? std::string() : model->nodes[static_cast<std::size_t>(node)].name;
   };
-  const glm::dvec3 rotation = rotation_to_tutti(h.up, h.facing);
-  if (model->primitives_over_four_weights > 0) {
-    // Reported with the rest; the loader kept the four largest of eight.
-  }
+  const glm::dvec3 rotation = humanoid::rotation_to_tutti_deg(h);
   if (o.json) {
     nlohmann::json doc;
     doc["model"] = file;

@@ -351,12 +351,15 @@ class Recogniser {
     const int arm_l = get("upper_arm_l"), arm_r = get("upper_arm_r");
     if (hips >= 0 && head >= 0) {
       const glm::vec3 d = s_.at(head) - s_.at(hips);
-      if (glm::length(d) > 1e-9f) out_.up = glm::normalize(d);
+      // A spine leans; the figure still stands on its file's axis when it is within 25 degrees.
+      if (glm::length(d) > 1e-9f) out_.up = snapped(glm::normalize(d), 25.0f);
     }
     if (arm_l >= 0 && arm_r >= 0) {
       const glm::vec3 left = s_.at(arm_l) - s_.at(arm_r);
       const glm::vec3 across = left - glm::dot(left, out_.up) * out_.up;
-      if (glm::length(across) > 1e-9f) out_.facing = glm::normalize(glm::cross(across, out_.up));
+      if (glm::length(across) > 1e-9f) {
+        out_.facing = snapped(glm::normalize(glm::cross(across, out_.up)), 10.0f);
+      }
       const int fore = get("forearm_l");
       if (fore >= 0) {
         const glm::vec3 bone = s_.at(fore) - s_.at(arm_l);
@@ -420,6 +423,18 @@ class Recogniser {
     if (glm::dot(out_.up, y) < 0.9f) {
       out_.notes.emplace_back("the figure's up is not +Y in the file");
     }
+  }
+
+  // `v` on the nearest axis when it is within `degrees` of it.
+  static glm::vec3 snapped(const glm::vec3& v, float degrees) {
+    int best = 0;
+    for (int c = 1; c < 3; ++c) {
+      if (std::abs(v[c]) > std::abs(v[best])) best = c;
+    }
+    if (std::abs(v[best]) < std::cos(degrees * 3.14159265f / 180.0f)) return v;
+    glm::vec3 axis(0.0f);
+    axis[best] = v[best] > 0 ? 1.0f : -1.0f;
+    return axis;
   }
 
   void find_morphs() {
@@ -490,5 +505,20 @@ int Humanoid::node(std::string_view role) const {
 }
 
 Humanoid recognise(const model::ModelAsset& asset) { return Recogniser(asset).run(); }
+
+glm::dvec3 rotation_to_tutti_deg(const Humanoid& h) {
+  const glm::dvec3 y = glm::normalize(glm::dvec3(h.up));
+  glm::dvec3 z = glm::dvec3(h.facing) - glm::dot(glm::dvec3(h.facing), y) * y;
+  z = glm::length(z) > 1e-9 ? glm::normalize(z) : glm::dvec3(0, 0, 1);
+  const glm::dvec3 x = glm::cross(y, z);
+  // The rotation's rows are the file's x, y, z (it maps them onto X, Y, Z); as Rz * Ry * Rx.
+  const double r00 = x.x, r10 = y.x, r20 = z.x, r21 = z.y, r22 = z.z;
+  const double deg = 180.0 / 3.14159265358979;
+  const auto clean = [](double v) {
+    return std::abs(v) < 1e-6 ? 0.0 : std::round(v * 1000.0) / 1000.0;
+  };
+  return {clean(std::atan2(r21, r22) * deg), clean(std::asin(std::clamp(-r20, -1.0, 1.0)) * deg),
+          clean(std::atan2(r10, r00) * deg)};
+}
 
 }  // namespace tutti::humanoid

@@ -46,8 +46,9 @@ struct Humanoid {
   double metres_per_unit = 1.0;
   bool units_guessed = false;
   double height_m = 0.0;  // soles to the top of the head, in metres
-  glm::vec3 up{0, 1, 0};       // the file's world frame
-  glm::vec3 facing{0, 0, 1};   // where the character looks
+  // The file's world frame; on an axis when within 25 (up) or 10 (facing) degrees of it.
+  glm::vec3 up{0, 1, 0};
+  glm::vec3 facing{0, 0, 1};  // where the character looks
   RestPose rest = RestPose::other;
   double arm_below_horizontal_deg = 0.0;
   // Bones found along each finger (side, thumb .. little): 3, or 4 with a metacarpal (dropped).
@@ -61,5 +62,9 @@ struct Humanoid {
 };
 
 Humanoid recognise(const model::ModelAsset& asset);
+
+// Degrees about X, then Y, then Z (a mapping file's rotation_deg) that stand the figure on +Y
+// facing +Z.
+glm::dvec3 rotation_to_tutti_deg(const Humanoid& humanoid);
 
 }  // namespace tutti::humanoid
