@@ -4,6 +4,7 @@
 // seated legs, the breathing chest, the ensemble's body motion — plus small pose helpers.
 
 #include <array>
+#include <vector>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -30,6 +31,11 @@ struct BodyNodes {
   // Their tips' nodes [left, right][thumb .. little] (-1 when the rig has none).
   std::array<std::array<int, 5>, 2> fingertips{};
   bool mapped = false;  // a user's rig (mapping file): only IK and morphs, no canned bends
+  // A user's rig: each node's parent at rest in the character's frame (metres, +Y up, facing
+  // +Z; the mapping's correction applied), so body motion defined on tutti's axes turns and moves
+  // its bones whatever their own axes, rest rotations and units. Empty for the generated rig,
+  // whose local axes are the character's.
+  std::vector<glm::mat3> parent_rest;
 };
 
 Result<BodyNodes> find_body_nodes(const model::ModelAsset& asset, const MappedModel& body);
@@ -42,6 +48,13 @@ glm::quat rotation_of(const glm::mat4& m);
 void reset_pose(const model::ModelAsset& asset, model::ModelPose& pose);
 // Turns `node` (if any) by `radians` about its local `axis`.
 void turn(model::ModelPose& pose, int node, float radians, const glm::vec3& axis);
+// Turns `node` by `radians` about `axis` of the character's frame (+X its left, +Y up, +Z its
+// front): on the generated rig that is its local axis; on a user's rig it is carried into the
+// bone's own frame (BodyNodes::parent_rest).
+void turn_body(const BodyNodes& n, model::ModelPose& pose, int node, float radians,
+               const glm::vec3& axis);
+// Moves `node` by `delta` metres of the character's frame.
+void move_body(const BodyNodes& n, model::ModelPose& pose, int node, const glm::vec3& delta);
 // Sets morph `index` (if any) to `value` clamped to [0, 1].
 void set_morph(model::ModelPose& pose, int index, double value);
 

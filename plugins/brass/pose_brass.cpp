@@ -83,9 +83,9 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
     body_motion = world.try_get<components::BodyMotion>(performer);
     // With ensemble motion the breathing body comes from it (per-player depth); without, from
     // the Breath component alone.
-    stage::pose_body_base(rig.body_nodes, rig.seated && !rig.body_nodes.mapped, body_asset,
+    stage::pose_body_base(rig.body_nodes, rig.seated, body_asset,
                           body_motion != nullptr ? nullptr : breath, body->pose);
-    if (body_motion != nullptr && !rig.body_nodes.mapped) {
+    if (body_motion != nullptr) {
       stage::pose_body_motion(rig.body_nodes, rig.seated, body_asset, *body_motion, body->pose);
     }
     if (mouth != nullptr) {

@@ -8,6 +8,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
+#include <tutti/brass/brass_components.hpp>
+#include <tutti/humanoid/humanoid.hpp>
 #include <tutti/performance/families.hpp>
 #include <tutti/performance/pose_check.hpp>
 #include <tutti/scene/load_scene.hpp>
@@ -65,6 +69,61 @@ TEST(UserCharacter, ModelFilesPlayWithoutAMapping) {
       report->find("Trumpet 1: left hand's origin (wrist) to the valve casings' axis");
   ASSERT_NE(wrist, nullptr);
   EXPECT_LE(wrist->percentile(0.5), 60.0);
+}
+
+// The sideways sway of a player's head (standard deviation of its world x over 12 s) in the
+// duo's first seat: with `character` set, a user's rig; without, tutti's performer.
+double head_sway_m(const std::filesystem::path& dir, const std::string& character) {
+  nlohmann::json scene = duo("", "");
+  scene["performers"].erase(1);
+  if (character.empty()) {
+    scene["performers"][0].erase("character");
+  } else {
+    scene["performers"][0]["character"] = character;
+  }
+  const std::filesystem::path file = dir / ("sway_" + std::to_string(character.size()) + ".json");
+  std::ofstream(file) << scene.dump(1);
+  auto loaded = scene::load_scene(file);
+  EXPECT_TRUE(loaded) << loaded.error().message;
+  if (!loaded) return 0.0;
+  auto staged = build_stage(*loaded, {});
+  EXPECT_TRUE(staged) << staged.error().message;
+  if (!staged) return 0.0;
+  stage::Stage& stage = **staged;
+  const ecs::Entity performer = stage.performers().at(0);
+  const auto* rig = stage.world().try_get<brass_family::BrassRig>(performer);
+  EXPECT_NE(rig, nullptr);
+  if (rig == nullptr) return 0.0;
+  double sum = 0.0, sum2 = 0.0;
+  int n = 0;
+  std::vector<glm::mat4> world;
+  for (double t = 0.0; t < 12.0; t += 1.0 / 30.0) {
+    stage.run({t, 1.0 / 30.0});
+    const auto* body = stage.world().try_get<stage::PlacedModel>(rig->body);
+    world.resize(body->asset->nodes.size());
+    model::compute_world_matrices(*body->asset, body->pose, body->root, world);
+    const double x = world[static_cast<std::size_t>(rig->body_nodes.head)][3].x;
+    sum += x;
+    sum2 += x * x;
+    ++n;
+  }
+  const double mean = sum / n;
+  return std::sqrt(std::max(0.0, sum2 / n - mean * mean));
+}
+
+// Body motion on user rigs: the head sways as much as tutti's performer's in the same seat
+// (within 20 %, the user's rig being 2.0 m tall to the performer's 1.75 m).
+TEST(UserCharacter, UserRigsSwayLikeTuttisPerformer) {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
+  test::ScratchDir dir;
+  ASSERT_TRUE(make_fixtures(dir.path()));
+  const double own = head_sway_m(dir.path(), "");
+  ASSERT_GT(own, 0.002);  // tutti's performer sways by millimetres to centimetres
+  for (const char* fixture : {"unreal_cm_t.glb", "rigify_a_vrm1.vrm", "mixamo_ns_cm_a.glb"}) {
+    const double theirs = head_sway_m(dir.path(), fixture);
+    EXPECT_GT(theirs / own, 0.8) << fixture << ": " << theirs << " m against " << own << " m";
+    EXPECT_LT(theirs / own, 1.2) << fixture << ": " << theirs << " m against " << own << " m";
+  }
 }
 
 TEST(UserCharacter, NotAHumanoidAndModelHandsAreOneLineErrors) {
