@@ -27,12 +27,9 @@ Result<MappedModel> load_recognised(StageBuilder& builder, const std::filesystem
   if (!model) return model.error();
   const humanoid::Humanoid h = humanoid::recognise(builder.model(*model));
   if (!h.playable()) {
-    std::string missing;
-    for (std::string_view role : h.missing_required) {
-      missing += (missing.empty() ? "" : ", ") + std::string(role);
-    }
-    return Error{file.filename().string() + ": not a humanoid tutti can play: no " + missing +
-                 " (tutti rig " + file.filename().string() + " shows what was recognised)"};
+    return Error{file.filename().string() + ": not a humanoid tutti can play: " +
+                 h.what_is_missing() + " (tutti rig " + file.filename().string() +
+                 " shows what was recognised)"};
   }
   scene::AssetMapping mapping;
   mapping.source = file.filename().string();

@@ -69,6 +69,7 @@ int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
     doc["morphs"] = nlohmann::json::object();
     for (const auto& [role, name] : h.morphs) doc["morphs"][role] = name;
     doc["notes"] = h.notes;
+    doc["problems"] = h.problems;
     if (model->primitives_over_four_weights > 0) {
       doc["notes"].push_back(std::to_string(model->primitives_over_four_weights) +
                              " primitives had 8 weights per vertex: the 4 largest kept");
@@ -113,6 +114,7 @@ int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
       for (std::string_view r : h.missing_optional) out << " " << r;
       out << "\n";
     }
+    for (const std::string& problem : h.problems) out << "  problem: " << problem << "\n";
     for (const std::string& note : h.notes) out << "  note: " << note << "\n";
     if (model->primitives_over_four_weights > 0) {
       out << "  note: " << model->primitives_over_four_weights
@@ -120,9 +122,7 @@ int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
     }
   }
   if (!h.playable()) {
-    std::string missing;
-    for (std::string_view r : h.missing_required) missing += (missing.empty() ? "" : ", ") + std::string(r);
-    err << "error: " << file << ": not a humanoid tutti can play: no " << missing << "\n";
+    err << "error: " << file << ": not a humanoid tutti can play: " << h.what_is_missing() << "\n";
     return kExitBadInput;
   }
   if (o.mapping) {

@@ -136,6 +136,9 @@ class Recogniser {
       if (node >= 0) continue;
       (is_required ? out_.missing_required : out_.missing_optional).push_back(role);
     }
+    bool skinned = false;
+    for (const model::Node& node : s_.asset.nodes) skinned = skinned || (node.mesh >= 0 && node.skin >= 0);
+    if (!skinned) out_.problems.emplace_back("no skin: no mesh follows its bones");
     measure();
     find_morphs();
     return std::move(out_);
@@ -325,9 +328,11 @@ class Recogniser {
       while (!line.empty()) {
         const int last = line.back();
         const bool leaf = s_.asset.nodes[static_cast<std::size_t>(last)].children.empty();
-        // An end bone: no vertex follows it (in a skinned file), or, without skin weights to
-        // tell, numbered past the third joint ("LeftHandIndex4").
-        const bool end = s_.any_weights ? !s_.weighted[static_cast<std::size_t>(last)]
+        // An end bone: no vertex follows it where the skin reaches the finger, or, without
+        // weights on the finger to tell, numbered past the third joint ("LeftHandIndex4").
+        bool finger_skinned = false;
+        for (const int bone : line) finger_skinned = finger_skinned || s_.weighted[static_cast<std::size_t>(bone)];
+        const bool end = finger_skinned ? !s_.weighted[static_cast<std::size_t>(last)]
                                         : trailing_number(last) >= 4;
         if (s_.is_helper(last) || (leaf && end && line.size() > 3)) {
           line.pop_back();
@@ -495,6 +500,18 @@ std::string_view rest_pose_name(RestPose pose) {
     default:
       return "neither T nor A";
   }
+}
+
+std::string Humanoid::what_is_missing() const {
+  std::string text;
+  if (!missing_required.empty()) {
+    text = "no ";
+    for (std::size_t i = 0; i < missing_required.size(); ++i) {
+      text += (i == 0 ? "" : ", ") + std::string(missing_required[i]);
+    }
+  }
+  for (const std::string& problem : problems) text += (text.empty() ? "" : "; ") + problem;
+  return text;
 }
 
 int Humanoid::node(std::string_view role) const {

@@ -56,9 +56,13 @@ struct Humanoid {
   // Face morphs: tutti's morph role -> the target's name ("open" -> "jawOpen").
   std::vector<std::pair<std::string, std::string>> morphs;
   std::vector<std::string> notes;  // guesses and cuts, one line each
+  // What keeps it from playing besides missing roles ("no skin: no vertex follows its bones").
+  std::vector<std::string> problems;
 
   int node(std::string_view role) const;
-  bool playable() const { return missing_required.empty(); }
+  bool playable() const { return missing_required.empty() && problems.empty(); }
+  // "no hips, spine; no skin: ..." — what playable() found missing, for a one-line error.
+  std::string what_is_missing() const;
 };
 
 Humanoid recognise(const model::ModelAsset& asset);

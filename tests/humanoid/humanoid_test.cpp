@@ -283,7 +283,15 @@ GltfBuilder skeleton(const Convention& c, bool t_pose, float scale = 1.0f, float
   test::add_triangle_mesh(b, "body",
                           {{-0.2f * s, 0, 0}, {0.2f * s, 0, 0}, {0, 1.75f * s, 0}},
                           {0, 1, 2});
-  const int body = b.add_node({{"name", "body"}, {"mesh", 0}});
+  // Skinned to the root joint (identity bind: the triangle rides the hips, its height unchanged).
+  const std::vector<std::uint8_t> skin_joints(12, 0);
+  const std::vector<float> skin_weights = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
+  b.json["meshes"][0]["primitives"][0]["attributes"]["JOINTS_0"] =
+      b.add_data(skin_joints, test::kUnsignedByte, "VEC4");
+  b.json["meshes"][0]["primitives"][0]["attributes"]["WEIGHTS_0"] =
+      b.add_data(skin_weights, test::kFloat, "VEC4");
+  b.json["skins"] = nlohmann::json::array({{{"joints", {0}}}});
+  const int body = b.add_node({{"name", "body"}, {"mesh", 0}, {"skin", 0}});
   b.json["nodes"][0]["children"].push_back(body);
   b.set_scene({0});
   return b;
@@ -411,6 +419,17 @@ TEST(Humanoid, AnUnrecognisedRigListsWhatIsMissing) {
   const Humanoid h = recognise(load(skeleton(numbers, true), "numbers.glb"));
   EXPECT_FALSE(h.playable());
   EXPECT_EQ(h.missing_required.size(), required_roles().size());
+}
+
+// Bones but no skin: nothing would follow them; not playable, and said so.
+TEST(Humanoid, ARigWithoutASkinIsNotPlayable) {
+  GltfBuilder b = skeleton(conventions()[0], true);
+  b.json.erase("skins");
+  for (auto& node : b.json["nodes"]) node.erase("skin");
+  const Humanoid h = recognise(load(b, "unskinned.glb"));
+  EXPECT_TRUE(h.missing_required.empty());
+  EXPECT_FALSE(h.playable());
+  EXPECT_EQ(h.what_is_missing(), "no skin: no mesh follows its bones");
 }
 
 TEST(Humanoid, FaceMorphsAreFoundByTheirNames) {
