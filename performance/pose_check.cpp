@@ -263,7 +263,9 @@ class Checker {
   void brass(ecs::Entity performer, const brass_family::BrassRig& rig) {
     const ecs::World& world = stage_.world();
     const auto* horn = world.try_get<stage::PlacedModel>(rig.horn);
-    const auto* body = world.try_get<stage::PlacedModel>(rig.body);
+    // A user's character is measured on its stand-in, whose joints its own follow exactly.
+    const auto* body =
+        stage::posed_body(world.try_get<stage::PlacedModel>(rig.body), rig.body_retarget);
     if (horn == nullptr || body == nullptr) return;
     const std::string who = name_of(world, performer);
     world_of(*horn, horn_world_);
@@ -352,7 +354,7 @@ class Checker {
     torso_clearance(who, rig.body_nodes.hips, rig.body_nodes.neck, hands);
     arms_clear_of_instrument(who, *horn, rig.body_nodes);
     hand_in_bell(who, *horn, rig);
-    if (!rig.body_nodes.mapped) finger_limits(who, body_asset, body->pose, rig.body_nodes);
+    finger_limits(who, body_asset, body->pose, rig.body_nodes);
   }
 
   void piano(ecs::Entity performer, const piano_family::PianoRig& rig, double t_s, double dt_s) {

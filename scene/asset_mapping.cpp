@@ -206,19 +206,27 @@ Result<AssetMapping> parse_asset_mapping(const nlohmann::json& document,
   if (!scale) return scale.error();
   if (*scale <= 0.0) return reader.error("/scale", "must be positive");
   mapping.scale = *scale;
+  mapping.scale_given = document.contains("scale");
   auto rotation = reader.vec3_or(document, "", "rotation_deg", 360.0, {});
   if (!rotation) return rotation.error();
   mapping.rotation_deg = *rotation;
+  mapping.rotation_given = document.contains("rotation_deg");
   auto translation = reader.vec3_or(document, "", "translation_m", 100.0, {});
   if (!translation) return translation.error();
   mapping.translation_m = *translation;
+  mapping.translation_given = document.contains("translation_m");
 
-  if (!document.contains("nodes")) return reader.error("/nodes", "missing");
-  auto nodes =
-      read_roles(reader, document.at("nodes"), "/nodes", node_roles(mapping.kind), mapping.kind);
-  if (!nodes) return nodes.error();
-  mapping.nodes = std::move(*nodes);
+  // A character's mapping overrides what is recognised: it may name any roles, or none.
+  const bool overrides = mapping.kind == AssetKind::character;
+  if (!document.contains("nodes") && !overrides) return reader.error("/nodes", "missing");
+  if (document.contains("nodes")) {
+    auto nodes =
+        read_roles(reader, document.at("nodes"), "/nodes", node_roles(mapping.kind), mapping.kind);
+    if (!nodes) return nodes.error();
+    mapping.nodes = std::move(*nodes);
+  }
   for (std::string_view role : required_node_roles(mapping.kind)) {
+    if (overrides) break;
     if (mapping.node(role).empty()) {
       return reader.error("/nodes", "missing role \"" + std::string(role) + "\" (required for " +
                                         article(mapping.kind) + ": " +

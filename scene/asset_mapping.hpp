@@ -33,6 +33,9 @@ struct AssetMapping {
   double scale = 1.0;  // model units -> metres, (0, 1000]
   Vec3 rotation_deg;   // applied to the model root: about X, then Y, then Z
   Vec3 translation_m;  // applied after the rotation
+  // Which of the three the file gives: a character's mapping only overrides what tutti
+  // recognises by itself (stage/model_binding.hpp), the units and facing included.
+  bool scale_given = false, rotation_given = false, translation_given = false;
   // role -> node name in the model, sorted by role; every role is one of node_roles(kind).
   std::vector<std::pair<std::string, std::string>> nodes;
   // role -> morph target name, sorted by role; every role is one of morph_roles(kind).
@@ -46,7 +49,8 @@ struct AssetMapping {
 // Every node role of a kind, in documentation order (character: hips .. foot_r, the 30 finger
 // joints thumb_1_l .. little_3_r, the attach points mouth, grip_l, grip_r).
 std::span<const std::string_view> node_roles(AssetKind kind);
-// The roles a mapping of this kind must name.
+// The roles a mapping of this kind must name (a character's: the roles it must end up with once
+// its mapping overrides what was recognised; its file may name none).
 std::span<const std::string_view> required_node_roles(AssetKind kind);
 // Morph-target roles ("tension", "open" for a character; none for the other kinds).
 std::span<const std::string_view> morph_roles(AssetKind kind);

@@ -20,30 +20,59 @@ glm::mat4 mapping_correction(const scene::AssetMapping& mapping) {
   return glm::scale(m, glm::vec3(f(mapping.scale)));
 }
 
-// A character model without a mapping file: its humanoid recognised (engine/humanoid), and the
-// mapping it would have written (`tutti rig --mapping`) made here.
-Result<MappedModel> load_recognised(StageBuilder& builder, const std::filesystem::path& file) {
+// A character model: its humanoid recognised (engine/humanoid) into the mapping `tutti rig
+// --mapping` would write, then whatever the user's mapping file (`overrides`, if any) names put
+// over it: roles, morphs, and the scale, rotation and translation it gives.
+Result<MappedModel> load_recognised(StageBuilder& builder, const std::filesystem::path& file,
+                                    const scene::AssetMapping* overrides) {
   auto model = builder.user_model(file);
   if (!model) return model.error();
-  const humanoid::Humanoid h = humanoid::recognise(builder.model(*model));
-  if (!h.playable()) {
-    return Error{file.filename().string() + ": not a humanoid tutti can play: " +
-                 h.what_is_missing() + " (tutti rig " + file.filename().string() +
-                 " shows what was recognised)"};
+  const model::ModelAsset& asset = builder.model(*model);
+  const humanoid::Humanoid h = humanoid::recognise(asset);
+  const std::string source = overrides != nullptr ? overrides->source : file.filename().string();
+  if (!h.problems.empty() || (overrides == nullptr && !h.playable())) {
+    return Error{source + ": not a humanoid tutti can play: " + h.what_is_missing() +
+                 " (tutti rig " + file.filename().string() + " shows what was recognised)"};
   }
   scene::AssetMapping mapping;
-  mapping.source = file.filename().string();
+  mapping.source = source;
   mapping.model = file;
   mapping.kind = scene::AssetKind::character;
   mapping.scale = h.metres_per_unit;
   const glm::dvec3 rotation = humanoid::rotation_to_tutti_deg(h);
   mapping.rotation_deg = {rotation.x, rotation.y, rotation.z};
-  const model::ModelAsset& asset = builder.model(*model);
   for (const auto& [role, node] : h.nodes) {
     if (node >= 0) mapping.nodes.emplace_back(role, asset.nodes[static_cast<std::size_t>(node)].name);
   }
-  std::sort(mapping.nodes.begin(), mapping.nodes.end());
   mapping.morphs = h.morphs;
+  if (overrides != nullptr) {
+    const auto put = [](std::vector<std::pair<std::string, std::string>>& into,
+                        const std::vector<std::pair<std::string, std::string>>& from) {
+      for (const auto& [role, name] : from) {
+        const auto at = std::find_if(into.begin(), into.end(),
+                                     [&](const auto& entry) { return entry.first == role; });
+        if (at != into.end()) {
+          at->second = name;
+        } else {
+          into.emplace_back(role, name);
+        }
+      }
+    };
+    put(mapping.nodes, overrides->nodes);
+    put(mapping.morphs, overrides->morphs);
+    if (overrides->scale_given) mapping.scale = overrides->scale;
+    if (overrides->rotation_given) mapping.rotation_deg = overrides->rotation_deg;
+    if (overrides->translation_given) mapping.translation_m = overrides->translation_m;
+    std::string missing;
+    for (const std::string_view role : scene::required_node_roles(scene::AssetKind::character)) {
+      if (mapping.node(role).empty()) missing += (missing.empty() ? "" : ", ") + std::string(role);
+    }
+    if (!missing.empty()) {
+      return Error{source + ": " + file.filename().string() + " has no " + missing +
+                   " that tutti recognises, and the mapping does not name them"};
+    }
+  }
+  std::sort(mapping.nodes.begin(), mapping.nodes.end());
   std::sort(mapping.morphs.begin(), mapping.morphs.end());
   MappedModel out;
   out.model = *model;
@@ -65,10 +94,13 @@ Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::pa
   }
   const std::string extension = mapping_file.extension().string();
   if (extension == ".glb" || extension == ".gltf" || extension == ".vrm") {
-    return load_recognised(builder, mapping_file);
+    return load_recognised(builder, mapping_file, nullptr);
   }
   auto mapping = scene::load_asset_mapping(mapping_file);
   if (!mapping) return mapping.error();
+  if (mapping->kind == scene::AssetKind::character) {
+    return load_recognised(builder, mapping->model, &*mapping);
+  }
   auto model = builder.user_model(mapping->model);
   if (!model) return model.error();
   out.model = *model;

@@ -32,6 +32,9 @@ struct MappedModel {
 };
 
 // The user's model named by `mapping_file`, or the generated `generated_file` when it is empty.
+// A character (a model file, or a mapping file of kind character) is recognised by itself and
+// the mapping file's roles, morphs, scale, rotation and translation override what was found; an
+// instrument's or hand's mapping file is taken as it is.
 Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::path& mapping_file,
                                 const std::string& generated_file);
 

@@ -44,17 +44,6 @@ Result<BodyNodes> find_body_nodes(const model::ModelAsset& asset, const MappedMo
   }
   n.morph_tension = morph_index(asset, body.morph_name("tension"));
   n.morph_open = morph_index(asset, body.morph_name("open"));
-  n.mapped = body.mapping.has_value();
-  if (n.mapped) {
-    std::vector<glm::mat4> world(asset.nodes.size());
-    model::compute_world_matrices(asset, model::rest_pose(asset), body.correction, world);
-    n.parent_rest.resize(asset.nodes.size());
-    for (std::size_t i = 0; i < asset.nodes.size(); ++i) {
-      const int parent = asset.nodes[i].parent;
-      n.parent_rest[i] = parent >= 0 ? glm::mat3(world[static_cast<std::size_t>(parent)])
-                                     : glm::mat3(body.correction);
-    }
-  }
   return n;
 }
 
@@ -79,39 +68,18 @@ void turn(model::ModelPose& pose, int node, float radians, const glm::vec3& axis
   r = glm::normalize(r * glm::angleAxis(radians, axis));
 }
 
-void turn_body(const BodyNodes& n, model::ModelPose& pose, int node, float radians,
-               const glm::vec3& axis) {
-  if (node < 0) return;
-  if (n.parent_rest.empty()) {
-    turn(pose, node, radians, axis);
-    return;
-  }
-  // In the parent's frame the character's axis is P⁻¹·axis; the turn goes before the bone's own
-  // rotation there, so the bone turns about that world direction.
-  const glm::mat3& parent = n.parent_rest[static_cast<std::size_t>(node)];
-  const glm::vec3 local_axis = glm::inverse(parent) * axis;
-  if (glm::length(local_axis) < 1e-12f) return;
-  glm::quat& r = pose.local[static_cast<std::size_t>(node)].rotation;
-  r = glm::normalize(glm::angleAxis(radians, glm::normalize(local_axis)) * r);
-}
-
-void move_body(const BodyNodes& n, model::ModelPose& pose, int node, const glm::vec3& delta) {
+void move(model::ModelPose& pose, int node, const glm::vec3& delta) {
   if (node < 0) return;
   glm::vec3& t = pose.local[static_cast<std::size_t>(node)].translation;
-  const glm::vec3 local =
-      n.parent_rest.empty() ? delta
-                            : glm::inverse(n.parent_rest[static_cast<std::size_t>(node)]) * delta;
   // Only the components that move: adding 0 would turn a -0 into +0 in the exports.
   for (int c = 0; c < 3; ++c) {
-    if (local[c] != 0.0f) t[c] += local[c];
+    if (delta[c] != 0.0f) t[c] += delta[c];
   }
 }
 
-// A bone's length at rest in metres of the character's frame: its offset from its parent.
-float rest_length(const BodyNodes& n, const model::ModelAsset& body, int node) {
-  const glm::vec3 offset = body.nodes[static_cast<std::size_t>(node)].rest.translation;
-  return n.parent_rest.empty() ? glm::length(offset)
-                               : glm::length(n.parent_rest[static_cast<std::size_t>(node)] * offset);
+// A bone's length at rest: its offset from its parent.
+float rest_length(const model::ModelAsset& body, int node) {
+  return glm::length(body.nodes[static_cast<std::size_t>(node)].rest.translation);
 }
 
 void set_morph(model::ModelPose& pose, int index, double value) {
@@ -135,21 +103,21 @@ void pose_body_base(const BodyNodes& n, bool seated, const model::ModelAsset& bo
                     const components::Breath* breath, model::ModelPose& pose) {
   if (seated) {
     // Thighs forward, shins down again, the hips lowered onto a 460 mm seat.
-    turn_body(n, pose, n.thigh_left, -kPi / 2, {1, 0, 0});
-    turn_body(n, pose, n.thigh_right, -kPi / 2, {1, 0, 0});
-    turn_body(n, pose, n.shin_left, kPi / 2, {1, 0, 0});
-    turn_body(n, pose, n.shin_right, kPi / 2, {1, 0, 0});
+    turn(pose, n.thigh_left, -kPi / 2, {1, 0, 0});
+    turn(pose, n.thigh_right, -kPi / 2, {1, 0, 0});
+    turn(pose, n.shin_left, kPi / 2, {1, 0, 0});
+    turn(pose, n.shin_right, kPi / 2, {1, 0, 0});
     if (n.hips >= 0 && n.thigh_left >= 0 && n.shin_left >= 0) {
-      const float thigh_length = rest_length(n, body, n.shin_left);
-      move_body(n, pose, n.hips, {0.0f, -thigh_length * 0.92f, -0.05f});
+      const float thigh_length = rest_length(body, n.shin_left);
+      move(pose, n.hips, {0.0f, -thigh_length * 0.92f, -0.05f});
     }
   }
   if (breath != nullptr) {
     // Inhaling lifts the chest and leans back a little; the preparation before a long rest's
     // breath starts the motion early.
     const float lift = static_cast<float>(std::max(breath->inhale, 0.5 * breath->preparing));
-    turn_body(n, pose, n.chest, -0.06f * lift, {1, 0, 0});
-    turn_body(n, pose, n.neck, 0.04f * lift, {1, 0, 0});
+    turn(pose, n.chest, -0.06f * lift, {1, 0, 0});
+    turn(pose, n.neck, 0.04f * lift, {1, 0, 0});
   }
 }
 
@@ -159,20 +127,20 @@ void pose_body_motion(const BodyNodes& n, bool seated, const model::ModelAsset& 
     glm::vec3 shift{m.hips_shift_m, 0.0f, 0.0f};
     if (!seated && m.knee_flex_m > 0.0f && n.shin_left >= 0) {
       // Thigh forward and shin back by the same angle keep the feet where they were.
-      const float leg = rest_length(n, body, n.shin_left);
+      const float leg = rest_length(body, n.shin_left);
       const float angle = std::acos(std::clamp(1.0f - m.knee_flex_m / (2.0f * leg), 0.5f, 1.0f));
-      for (int thigh : {n.thigh_left, n.thigh_right}) turn_body(n, pose, thigh, -angle, {1, 0, 0});
-      for (int shin : {n.shin_left, n.shin_right}) turn_body(n, pose, shin, 2.0f * angle, {1, 0, 0});
+      for (int thigh : {n.thigh_left, n.thigh_right}) turn(pose, thigh, -angle, {1, 0, 0});
+      for (int shin : {n.shin_left, n.shin_right}) turn(pose, shin, 2.0f * angle, {1, 0, 0});
       shift.y -= 2.0f * leg * (1.0f - std::cos(angle));
     }
-    move_body(n, pose, n.hips, shift);
+    move(pose, n.hips, shift);
   }
-  turn_body(n, pose, n.spine, -m.sway_rad, {0, 0, 1});
-  turn_body(n, pose, n.spine, m.twist_rad, {0, 1, 0});
-  turn_body(n, pose, n.chest, -m.lean_back_rad, {1, 0, 0});
-  turn_body(n, pose, n.neck, 0.6f * m.lean_back_rad, {1, 0, 0});
-  move_body(n, pose, n.chest, {0.0f, m.shoulder_lift_m, 0.0f});
-  turn_body(n, pose, n.head, m.head_nod_rad, {1, 0, 0});
+  turn(pose, n.spine, -m.sway_rad, {0, 0, 1});
+  turn(pose, n.spine, m.twist_rad, {0, 1, 0});
+  turn(pose, n.chest, -m.lean_back_rad, {1, 0, 0});
+  turn(pose, n.neck, 0.6f * m.lean_back_rad, {1, 0, 0});
+  move(pose, n.chest, {0.0f, m.shoulder_lift_m, 0.0f});
+  turn(pose, n.head, m.head_nod_rad, {1, 0, 0});
 }
 
 }  // namespace tutti::stage

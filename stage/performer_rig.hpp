@@ -1,7 +1,9 @@
 #pragma once
-// The performer rig both families pose (content/generator's performer.glb, or a user's character
-// through a mapping file): the nodes a family needs of it, and the pose steps they share — the
-// seated legs, the breathing chest, the ensemble's body motion — plus small pose helpers.
+// The performer rig both families pose (content/generator's performer.glb, or the stand-in for a
+// user's character, body_retarget.hpp — both with tutti's conventions: identity rest rotations,
+// +X the player's left, +Y up, +Z their front): the nodes a family needs of it, and the pose steps
+// they share — the seated legs, the breathing chest, the ensemble's body motion — plus small pose
+// helpers.
 
 #include <array>
 #include <vector>
@@ -30,12 +32,6 @@ struct BodyNodes {
   std::array<std::array<std::array<int, 3>, 5>, 2> fingers{};
   // Their tips' nodes [left, right][thumb .. little] (-1 when the rig has none).
   std::array<std::array<int, 5>, 2> fingertips{};
-  bool mapped = false;  // a user's rig (mapping file): only IK and morphs, no canned bends
-  // A user's rig: each node's parent at rest in the character's frame (metres, +Y up, facing
-  // +Z; the mapping's correction applied), so body motion defined on tutti's axes turns and moves
-  // its bones whatever their own axes, rest rotations and units. Empty for the generated rig,
-  // whose local axes are the character's.
-  std::vector<glm::mat3> parent_rest;
 };
 
 Result<BodyNodes> find_body_nodes(const model::ModelAsset& asset, const MappedModel& body);
@@ -48,13 +44,8 @@ glm::quat rotation_of(const glm::mat4& m);
 void reset_pose(const model::ModelAsset& asset, model::ModelPose& pose);
 // Turns `node` (if any) by `radians` about its local `axis`.
 void turn(model::ModelPose& pose, int node, float radians, const glm::vec3& axis);
-// Turns `node` by `radians` about `axis` of the character's frame (+X its left, +Y up, +Z its
-// front): on the generated rig that is its local axis; on a user's rig it is carried into the
-// bone's own frame (BodyNodes::parent_rest).
-void turn_body(const BodyNodes& n, model::ModelPose& pose, int node, float radians,
-               const glm::vec3& axis);
-// Moves `node` by `delta` metres of the character's frame.
-void move_body(const BodyNodes& n, model::ModelPose& pose, int node, const glm::vec3& delta);
+// Moves `node` (if any) by `delta` in its parent's frame (the character's, on these rigs).
+void move(model::ModelPose& pose, int node, const glm::vec3& delta);
 // Sets morph `index` (if any) to `value` clamped to [0, 1].
 void set_morph(model::ModelPose& pose, int index, double value);
 

@@ -16,6 +16,7 @@
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/brass_motion/brass_pose_system.hpp>
 #include <tutti/ecs/entity.hpp>
+#include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/performer_rig.hpp>
 
 namespace tutti::brass_family {
@@ -36,7 +37,8 @@ struct BrassRig {
   ecs::Entity body = ecs::Entity::null;        // PlacedModel; null until the rig is generated
   bool trombone = false;
   bool seated = false;
-  stage::BodyNodes body_nodes;
+  stage::BodyNodes body_nodes;  // of the model posed: tutti's performer, or the stand-in
+  std::optional<stage::BodyRetarget> body_retarget;  // a user's character: its stand-in
   static constexpr std::size_t kMaxValves = 4;  // the models' pistons (valve_1 .. valve_4)
   std::array<int, kMaxValves> valves{-1, -1, -1, -1};
   std::array<double, kMaxValves> valve_travel_m{};

@@ -10,6 +10,7 @@
 #include <tutti/brass/plan_brass_player.hpp>
 #include <tutti/brass/pose_brass.hpp>
 #include <tutti/components/body_motion.hpp>
+#include <tutti/stage/body_retarget.hpp>
 #include <tutti/components/breath.hpp>
 #include <tutti/components/breath_schedule.hpp>
 #include <tutti/components/instrument.hpp>
@@ -83,12 +84,11 @@ Status bind_player(stage::StageBuilder& builder, const scene::Performer& perform
   auto horn = stage::load_mapped(builder, performer.instrument_mapping, model_stem + ".glb");
   if (!horn) return horn.error();
   if (rig_generated || !performer.character_mapping.empty()) {
-    auto body = stage::load_mapped(builder, performer.character_mapping, "performer.glb");
+    auto body = stage::place_body(builder, performer.character_mapping, rig.placement);
     if (!body) return body.error();
-    rig.body = builder.place(body->model, rig.placement * body->correction);
-    auto nodes = stage::find_body_nodes(builder.model(body->model), *body);
-    if (!nodes) return nodes.error();
-    rig.body_nodes = *nodes;
+    rig.body = body->placed;
+    rig.body_nodes = body->nodes;
+    rig.body_retarget = std::move(body->retarget);
   }
   rig.horn = builder.place(horn->model, rig.placement);
   rig.horn_correction = horn->correction;

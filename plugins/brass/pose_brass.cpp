@@ -10,6 +10,7 @@
 #include <tutti/components/mouth.hpp>
 #include <tutti/components/slide.hpp>
 #include <tutti/components/valve.hpp>
+#include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::brass_family {
@@ -72,7 +73,8 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   facing[3] = glm::vec4(0, 0, 0, 1);
   // Lips of a 1.75 m player, or the rig's mouth node.
   glm::vec3 lips = origin(rig.placement) + glm::vec3(facing * glm::vec4(0, 1.58f, 0.1f, 0));
-  PlacedModel* body = world.try_get<PlacedModel>(rig.body);
+  // A user's character: the families pose its stand-in (body_retarget.hpp).
+  PlacedModel* body = stage::posed_body(world.try_get<PlacedModel>(rig.body), rig.body_retarget);
   const components::BodyMotion* body_motion = nullptr;
   std::vector<glm::mat4>& body_world = rig.scratch_body_world;
   if (body != nullptr) {
@@ -131,7 +133,6 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   const glm::vec3 back = glm::vec3(facing * glm::vec4(0, 0, -1, 0));
   const glm::vec3 down(0, -1, 0);
   const float body_scale = glm::length(glm::vec3(body->root[0]));
-  const bool canned_fingers = !rig.body_nodes.mapped;
   // Places both hands; returns how far each palm stayed from its grip (0 for fingertip holds).
   const auto place_hands = [&]() -> std::array<float, 2> {
     std::array<float, 2> short_by{0.0f, 0.0f};
@@ -146,7 +147,7 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
           weights.x * down + weights.y * (hand == 0 ? left : -left) + weights.z * back;
       FingertipTargets targets;
       bool by_fingertips = false;
-      if (rig.hold.fingertips_place(hand) && canned_fingers && arm.end >= 0) {
+      if (rig.hold.fingertips_place(hand) && arm.end >= 0) {
         for (std::size_t f = 0; f < 5; ++f) {
           const int node = rig.fingertip_on[side][f];
           if (node < 0) continue;
@@ -195,10 +196,8 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
         short_by[side] =
             glm::distance(origin(body_world[static_cast<std::size_t>(rig_grip)]), palm_goal);
       }
-      if (canned_fingers) {
-        pose_fingers(body_asset, rig.body_nodes, hand, hold, by_fingertips ? &targets : nullptr,
-                     body_world, body->pose);
-      }
+      pose_fingers(body_asset, rig.body_nodes, hand, hold, by_fingertips ? &targets : nullptr,
+                   body_world, body->pose);
     }
     return short_by;
   };
@@ -211,7 +210,6 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   constexpr float kReachTolerance = 0.002f;
   constexpr float kMaxTurn = 30.0f * kPi / 180.0f;
   constexpr float kShoulderForwardPerRad = 0.33f;  // chest (0.18 m) + collarbone (0.15 m) arms
-  if (!canned_fingers) return;
   float turned = 0.0f;
   float dipped = 0.0f;
   for (int pass = 0; pass < 6; ++pass) {
@@ -256,6 +254,11 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
 void brass_skeleton_system(ecs::World& world, const ecs::FrameTime& frame) {
   world.view<BrassRig>().each([&world, &frame](ecs::Entity performer, BrassRig& rig) {
     pose_player(world, performer, rig, frame.t_s);
+    if (rig.body_retarget) {
+      if (auto* user = world.try_get<PlacedModel>(rig.body)) {
+        stage::apply_body_retarget(*rig.body_retarget, *user);
+      }
+    }
   });
 }
 

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include <tutti/brass/brass_components.hpp>
+#include <tutti/stage/stage.hpp>
 #include <tutti/humanoid/humanoid.hpp>
 #include <tutti/performance/families.hpp>
 #include <tutti/performance/pose_check.hpp>
@@ -102,7 +103,10 @@ double head_sway_m(const std::filesystem::path& dir, const std::string& characte
     const auto* body = stage.world().try_get<stage::PlacedModel>(rig->body);
     world.resize(body->asset->nodes.size());
     model::compute_world_matrices(*body->asset, body->pose, body->root, world);
-    const double x = world[static_cast<std::size_t>(rig->body_nodes.head)][3].x;
+    // The rendered model's own head bone (a user's, through its stand-in).
+    const int head = rig->body_retarget ? rig->body_retarget->user_node_of(rig->body_nodes.head)
+                                        : rig->body_nodes.head;
+    const double x = world[static_cast<std::size_t>(head)][3].x;
     sum += x;
     sum2 += x * x;
     ++n;
@@ -124,6 +128,138 @@ TEST(UserCharacter, UserRigsSwayLikeTuttisPerformer) {
     EXPECT_GT(theirs / own, 0.8) << fixture << ": " << theirs << " m against " << own << " m";
     EXPECT_LT(theirs / own, 1.2) << fixture << ": " << theirs << " m against " << own << " m";
   }
+}
+
+// Every fixture the Blender script makes (each naming convention, units, A- and T-pose, VRM),
+// plus one packed by gltfpack, plays a trumpet and a trombone with no mapping file, and issue 11's
+// contacts hold on it: fingertips on the buttons, palms on the grips, no hand in a head or torso.
+TEST(UserCharacter, EveryFixtureHoldsTrumpetAndTromboneByItsFingertipsAndPalms) {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
+  test::ScratchDir dir;
+  ASSERT_TRUE(make_fixtures(dir.path()));
+  std::vector<std::string> files;
+  for (const auto& f : nlohmann::json::parse(std::ifstream(dir.path() / "fixtures.json"))) {
+    files.push_back(f.at("file"));
+  }
+  ASSERT_GE(files.size(), 7u);
+  if (std::system("command -v gltfpack > /dev/null 2>&1") == 0) {
+    const std::string pack = "gltfpack -kn -cc -i '" + (dir.path() / "unreal_cm_t.glb").string() +
+                             "' -o '" + (dir.path() / "unreal_cm_t_packed.glb").string() +
+                             "' > /dev/null 2>&1";
+    ASSERT_EQ(std::system(pack.c_str()), 0);
+    files.push_back("unreal_cm_t_packed.glb");
+  }
+  for (const std::string& file : files) {
+    const std::filesystem::path scene_file = dir.path() / (file + ".json");
+    std::ofstream(scene_file) << duo(file, file).dump(1);
+    auto scene = scene::load_scene(scene_file);
+    ASSERT_TRUE(scene) << scene.error().message;
+    auto staged = build_stage(*scene, {});
+    ASSERT_TRUE(staged) << file << ": " << staged.error().message;
+    PoseCheckOptions options;
+    options.from_s = 0.0;
+    options.to_s = 8.0;
+    auto report = check_pose(**staged, options);
+    ASSERT_TRUE(report) << report.error().message;
+    const auto worst = [&](const std::string& name) {
+      const PoseMeasure* m = report->find(name);
+      EXPECT_NE(m, nullptr) << file << ": no \"" << name << "\"";
+      return m == nullptr ? 1e9 : m->worst();
+    };
+    const PoseMeasure* press = report->find("Trumpet 1: pressing fingertip to its button top");
+    ASSERT_NE(press, nullptr) << file;
+    EXPECT_LE(press->percentile(0.95), 10.0) << file;
+    EXPECT_LE(worst("Trumpet 1: left palm to its grip (grip_left)"), 20.0) << file;
+    EXPECT_LE(worst("Trombone 1: left palm to its grip (grip_left)"), 20.0) << file;
+    EXPECT_LE(worst("Trombone 1: right palm to its grip (grip_right)"), 20.0) << file;
+    for (const char* who : {"Trumpet 1", "Trombone 1"}) {
+      const std::string w = who;
+      EXPECT_EQ(worst(w + ": hands and fingertips inside the head (depth; 0 = outside)"), 0.0) << file;
+      EXPECT_EQ(worst(w + ": hands, fingertips and elbows inside the torso (depth; 0 = outside)"), 0.0)
+          << file;
+    }
+  }
+}
+
+// What is measured on the stand-in is what is rendered: every user bone the stand-in drives sits
+// on its stand-in joint, frame after frame (the retarget carries positions exactly).
+TEST(UserCharacter, TheUsersJointsSitOnTheStandInsJoints) {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
+  test::ScratchDir dir;
+  ASSERT_TRUE(make_fixtures(dir.path()));
+  for (const char* file : {"mixamo_ns_cm_a.glb", "rigify_t.glb"}) {
+    const std::filesystem::path scene_file = dir.path() / "duo.json";
+    std::ofstream(scene_file) << duo(file, file).dump(1);
+    auto scene = scene::load_scene(scene_file);
+    ASSERT_TRUE(scene) << scene.error().message;
+    auto staged = build_stage(*scene, {});
+    ASSERT_TRUE(staged) << staged.error().message;
+    stage::Stage& stage = **staged;
+    double worst_m = 0.0;
+    std::size_t driven = 0;
+    std::vector<glm::mat4> user_world, proxy_world;
+    for (double t = 0.0; t < 20.0; t += 0.7) {
+      stage::evaluate_stage(stage, t);
+      for (const ecs::Entity performer : stage.performers()) {
+        const auto& rig = stage.world().get<brass_family::BrassRig>(performer);
+        ASSERT_TRUE(rig.body_retarget.has_value());
+        const auto& user = stage.world().get<stage::PlacedModel>(rig.body);
+        const auto& proxy = rig.body_retarget->proxy;
+        user_world.resize(user.asset->nodes.size());
+        proxy_world.resize(proxy.asset->nodes.size());
+        model::compute_world_matrices(*user.asset, user.pose, user.root, user_world);
+        model::compute_world_matrices(*proxy.asset, proxy.pose, proxy.root, proxy_world);
+        for (std::size_t n = 0; n < proxy.asset->nodes.size(); ++n) {
+          const int u = rig.body_retarget->user_node_of(static_cast<int>(n));
+          if (u < 0) continue;
+          ++driven;
+          worst_m = std::max(worst_m, static_cast<double>(glm::distance(
+                                          glm::vec3(user_world[static_cast<std::size_t>(u)][3]),
+                                          glm::vec3(proxy_world[n][3]))));
+        }
+      }
+    }
+    EXPECT_GT(driven, 1000u) << file;
+    EXPECT_LT(worst_m, 0.0005) << file << ": a user joint " << worst_m * 1000.0
+                               << " mm from its stand-in's";
+  }
+}
+
+// A mapping file only overrides: it names the roles it wants changed (here the head, moved one
+// bone down the neck, and the scale); everything else is recognised. A node the model lacks is a
+// one-line error naming the mapping file.
+TEST(UserCharacter, AMappingFileOnlyOverrides) {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
+  test::ScratchDir dir;
+  ASSERT_TRUE(make_fixtures(dir.path()));
+  const auto stage_with = [&](const nlohmann::json& nodes) {
+    std::ofstream(dir.path() / "over.mapping.json")
+        << nlohmann::json{{"model", "rigify_t.glb"}, {"kind", "character"}, {"nodes", nodes}}.dump();
+    std::ofstream(dir.path() / "over.json") << duo("over.mapping.json", "over.mapping.json").dump(1);
+    auto scene = scene::load_scene(dir.path() / "over.json");
+    EXPECT_TRUE(scene) << scene.error().message;
+    return build_stage(*scene, {});
+  };
+  auto staged = stage_with({{"head", "spine.005"}});
+  ASSERT_TRUE(staged) << staged.error().message;
+  const auto& rig =
+      (*staged)->world().get<brass_family::BrassRig>((*staged)->find_performer("brass", 0));
+  ASSERT_TRUE(rig.body_retarget.has_value());
+  const auto& user = (*staged)->world().get<stage::PlacedModel>(rig.body);
+  const auto name_of = [&](int proxy_node) {
+    const int node = rig.body_retarget->user_node_of(proxy_node);
+    return node < 0 ? std::string() : user.asset->nodes[static_cast<std::size_t>(node)].name;
+  };
+  EXPECT_EQ(name_of(rig.body_nodes.head), "spine.005");                  // the override
+  EXPECT_EQ(name_of(rig.body_nodes.arm_left.end), "hand.L");             // recognised
+  EXPECT_EQ(name_of(rig.body_nodes.fingers[1][1][2]), "f_index.03.R");  // recognised
+
+  auto refused = stage_with({{"head", "no_such_bone"}});
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().message.find("over.mapping.json: node \"no_such_bone\" for \"head\""),
+            std::string::npos)
+      << refused.error().message;
+  EXPECT_EQ(refused.error().message.find('\n'), std::string::npos);
 }
 
 TEST(UserCharacter, NotAHumanoidAndModelHandsAreOneLineErrors) {
