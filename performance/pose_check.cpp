@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <tutti/brass/brass_components.hpp>
+#include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/components/finger.hpp>
 #include <tutti/components/note.hpp>
 #include <tutti/content/content_dir.hpp>
@@ -25,7 +26,10 @@ namespace {
 
 constexpr const char* kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
 // The fingertip pad's radius (content/generator/hand_rig.json: finger radius × tip ratio).
-constexpr double kPadRadiusMm[5] = {10.5 * 0.78, 9.0 * 0.78, 9.0 * 0.78, 9.0 * 0.78, 7.5 * 0.78};
+constexpr double kPadRadiusMm[5] = {
+    1000.0 * stage::kFingertipPadRadiusM[0], 1000.0 * stage::kFingertipPadRadiusM[1],
+    1000.0 * stage::kFingertipPadRadiusM[2], 1000.0 * stage::kFingertipPadRadiusM[3],
+    1000.0 * stage::kFingertipPadRadiusM[4]};
 // The head as a capsule: from the head node up its local +Y, and its radius.
 constexpr float kHeadLengthM = 0.12f;
 constexpr float kHeadRadiusM = 0.095f;
@@ -364,15 +368,36 @@ class Checker {
     const std::string who = name_of(world, performer);
     world_of(*piano, horn_world_);
     std::vector<glm::vec3> tips;
+    // A user's character plays with its own hands: its stand-in's fingertips and last joints.
+    const auto* body =
+        stage::posed_body(world.try_get<stage::PlacedModel>(rig.body), rig.body_retarget);
+    if (body != nullptr) world_of(*body, body_world_);
     for (std::size_t side = 0; side < 2; ++side) {
       const auto* hand = world.try_get<stage::PlacedModel>(rig.hand_models[side]);
-      if (hand == nullptr) continue;
-      world_of(*hand, hand_world_);
+      if (hand != nullptr) world_of(*hand, hand_world_);
+      const std::size_t body_side = side == 0 ? 1 : 0;  // the rig's _r is its side 1
+      // The fingertip and its last joint (-1 when the hand has none).
+      const auto joints = [&](std::size_t f, glm::vec3& tip, glm::vec3& dip) {
+        if (rig.body_retarget && body != nullptr) {
+          const int t = rig.body_nodes.fingertips[body_side][f];
+          const int d = rig.body_nodes.fingers[body_side][f][2];
+          if (t < 0 || d < 0) return false;
+          tip = origin(body_world_[static_cast<std::size_t>(t)]);
+          dip = origin(body_world_[static_cast<std::size_t>(d)]);
+          return true;
+        }
+        if (hand == nullptr) return false;
+        const std::string suffix = side == 0 ? "_r" : "_l";
+        const int t = hand->asset->find_node(std::string(kFingerNames[f]) + "_tip" + suffix);
+        if (t < 0) return false;
+        tip = origin(hand_world_[static_cast<std::size_t>(t)]);
+        const int d = hand->asset->find_node(std::string(kFingerNames[f]) + "_3" + suffix);
+        dip = d >= 0 ? origin(hand_world_[static_cast<std::size_t>(d)]) : tip + glm::vec3(0, 1, 0);
+        return true;
+      };
       for (std::size_t f = 0; f < 5; ++f) {
-        const int tip_node =
-            hand->asset->find_node(std::string(kFingerNames[f]) + "_tip" + (side == 0 ? "_r" : "_l"));
-        if (tip_node < 0) continue;
-        const glm::vec3 tip = origin(hand_world_[static_cast<std::size_t>(tip_node)]);
+        glm::vec3 tip, dip;
+        if (!joints(f, tip, dip)) continue;
         tips.push_back(tip);
         const auto* finger = world.try_get<components::Finger>(rig.fingers[side][f]);
         if (finger == nullptr || finger->press_depth < 0.999 || finger->key < 0 ||
@@ -384,11 +409,7 @@ class Checker {
         // The key's top surface is its node's y = 0 plane (the pivot at the top's back edge). The
         // flesh ends in a rounded cap whose outermost point is the tip node: the pad's lowest
         // point is the cap's centre less its radius.
-        const int dip_node =
-            hand->asset->find_node(std::string(kFingerNames[f]) + "_3" + (side == 0 ? "_r" : "_l"));
-        const glm::vec3 last_bone =
-            dip_node >= 0 ? tip - origin(hand_world_[static_cast<std::size_t>(dip_node)])
-                          : glm::vec3(0, -1, 0);
+        const glm::vec3 last_bone = tip - dip;
         const float radius = static_cast<float>(kPadRadiusMm[f] / 1000.0);
         const glm::vec3 cap_centre = tip - radius * glm::normalize(last_bone);
         const glm::mat4 key_frame = glm::inverse(horn_world_[static_cast<std::size_t>(key_node)]);
@@ -429,10 +450,7 @@ class Checker {
       }
     }
     head_tips_ = tips;
-    if (const auto* body = world.try_get<stage::PlacedModel>(rig.body)) {
-      world_of(*body, body_world_);
-      head_clearance(who, rig.body_nodes.head, head_tips_);
-    }
+    if (body != nullptr) head_clearance(who, rig.body_nodes.head, head_tips_);
     pianist_ = who;
   }
 

@@ -38,6 +38,9 @@ class StageBuilder {
   // A user's model, by path.
   Result<std::uint32_t> user_model(const std::filesystem::path& path);
   const model::ModelAsset& model(std::uint32_t index) const { return *stage_.models_[index]; }
+  std::shared_ptr<const model::ModelAsset> shared_model(std::uint32_t index) const {
+    return stage_.models_[index];
+  }
 
   // A new instance of `model` at `root`, in its rest pose.
   ecs::Entity place(std::uint32_t model, const glm::mat4& root);

@@ -13,6 +13,8 @@
 
 #include <tutti/core/result.hpp>
 
+#include <tutti/stage/fingertip_reach.hpp>
+
 namespace tutti::brass_family {
 
 struct HandHold {
@@ -31,6 +33,10 @@ struct HandHold {
   bool wraps_valves = false;
   // This arm's elbow pole (down, out, back), when it differs from the hold's `elbows`.
   std::optional<glm::vec3> elbow_pole;  // the palm holds the valve casings (check-pose: wrist to their axis)
+
+  stage::FingerCurls curls() const {
+    return {finger_curl_rad, little_curl_rad, little_own_curl, thumb_curl_rad, thumb_adduct_rad};
+  }
 };
 
 struct Hold {

@@ -4,13 +4,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <tutti/brass/brass_components.hpp>
-#include <tutti/brass/hand_hold.hpp>
 #include <tutti/components/body_motion.hpp>
 #include <tutti/components/breath.hpp>
 #include <tutti/components/mouth.hpp>
 #include <tutti/components/slide.hpp>
 #include <tutti/components/valve.hpp>
 #include <tutti/stage/body_retarget.hpp>
+#include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::brass_family {
@@ -126,7 +126,7 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
 
   // Hands (content/instruments/holds/): a palm on its grip — the hand turned so the rig's grip
   // frame matches the instrument's, the arm solved so the wrist lands where that puts the palm on
-  // the grip — or fingertips on their buttons (hand_hold.hpp). The elbows hang down and out to
+  // the grip — or fingertips on their buttons (stage/fingertip_reach.hpp). The elbows hang down and out to
   // the player's sides (their left is +X when facing +Z).
   const model::ModelAsset& body_asset = *body->asset;
   const glm::vec3 left = glm::vec3(facing * glm::vec4(1, 0, 0, 0));
@@ -145,7 +145,7 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
       const glm::vec3 weights = hold.elbow_pole.value_or(rig.hold.elbow_pole);
       const glm::vec3 pole =
           weights.x * down + weights.y * (hand == 0 ? left : -left) + weights.z * back;
-      FingertipTargets targets;
+      stage::FingertipTargets targets;
       bool by_fingertips = false;
       if (rig.hold.fingertips_place(hand) && arm.end >= 0) {
         for (std::size_t f = 0; f < 5; ++f) {
@@ -165,8 +165,8 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
       const int rig_grip = hand == 0 ? rig.body_nodes.grip_left : rig.body_nodes.grip_right;
       if (by_fingertips) {
         const glm::vec3 up = glm::normalize(glm::mat3(horn_frame) * glm::vec3(0, 1, 0));
-        hand_rotation = fingertip_hand_rotation(targets, up, hand, hold.metacarpal_lean_rad);
-        wrist = fingertip_wrist(body_asset, rig.body_nodes, hand, hold, targets, hand_rotation,
+        hand_rotation = stage::fingertip_hand_rotation(targets, up, hand, hold.metacarpal_lean_rad);
+        wrist = stage::fingertip_wrist(body_asset, rig.body_nodes, hand, hold.curls(), targets, hand_rotation,
                                 body_scale);
       } else {
         const int grip = hand == 0 ? rig.grip_left : rig.grip_right;
@@ -196,7 +196,7 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
         short_by[side] =
             glm::distance(origin(body_world[static_cast<std::size_t>(rig_grip)]), palm_goal);
       }
-      pose_fingers(body_asset, rig.body_nodes, hand, hold, by_fingertips ? &targets : nullptr,
+      stage::pose_fingers(body_asset, rig.body_nodes, hand, hold.curls(), by_fingertips ? &targets : nullptr,
                    body_world, body->pose);
     }
     return short_by;

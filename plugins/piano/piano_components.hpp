@@ -17,7 +17,11 @@
 #include <tutti/key_action/key_simulation.hpp>
 #include <tutti/key_action/performance_report.hpp>
 #include <tutti/music/score.hpp>
+#include <optional>
+
+#include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/performer_rig.hpp>
+#include <tutti/stage/stage.hpp>
 
 namespace tutti::piano_family {
 
@@ -48,10 +52,15 @@ struct PianoRig {
   std::array<std::array<ecs::Entity, 5>, 2> fingers{};
   ecs::Entity piano = ecs::Entity::null;                                     // PlacedModel
   std::array<ecs::Entity, 2> hand_models{ecs::Entity::null, ecs::Entity::null};  // right, left
+  // With a user's character the hand models are posed here but not drawn: the character's own
+  // hands put their fingertips where the hand models' are.
+  std::array<stage::PlacedModel, 2> hand_targets;
   // The seated performer rig (when generated): arms reach the hand models' wrists; the rig's
-  // own hands are folded away (scale 0) because the hand models draw them.
+  // own hands are folded away (scale 0) because the hand models draw them. A user's character
+  // plays with its own hands, through its stand-in.
   ecs::Entity body = ecs::Entity::null;
-  stage::BodyNodes body_nodes;
+  stage::BodyNodes body_nodes;  // of the model posed: tutti's performer, or the stand-in
+  std::optional<stage::BodyRetarget> body_retarget;
   std::array<int, 2> rig_hands{-1, -1};  // right, left
   std::array<int, 128> key_nodes{};      // piano node per MIDI key, -1 = none
   std::array<double, 128> key_dip_rad{};
@@ -60,6 +69,7 @@ struct PianoRig {
   std::array<std::array<std::array<int, 3>, 5>, 2> finger_bones{};
   std::array<int, 2> hand_root{-1, -1};
   std::vector<glm::mat4> scratch_world;  // reused every frame by the pose system
+  std::vector<glm::mat4> scratch_target_world;
 };
 
 }  // namespace tutti::piano_family

@@ -13,6 +13,7 @@
 #include <tutti/piano/plan_pianist.hpp>
 #include <tutti/piano/pose_piano.hpp>
 #include <tutti/stage/model_binding.hpp>
+#include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/performer_rig.hpp>
 
 namespace tutti::piano_family {
@@ -62,7 +63,7 @@ double key_dip_rad(const model::ModelAsset& piano, int node, const key_action::K
 }
 
 Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
-                  const key_action::KeyAction& action, PianoRig& rig) {
+                  const key_action::KeyAction& action, bool draw_hands, PianoRig& rig) {
   auto piano_model = builder.generated_model("piano.glb");
   if (!piano_model) return piano_model.error();
   rig.piano = builder.place(*piano_model, glm::mat4(1.0f));
@@ -86,7 +87,14 @@ Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
   for (int side = 0; side < 2; ++side) {
     auto hand_model = builder.generated_model(side == 0 ? "hand_right.glb" : "hand_left.glb");
     if (!hand_model) return hand_model.error();
-    rig.hand_models[static_cast<std::size_t>(side)] = builder.place(*hand_model, glm::mat4(1.0f));
+    if (draw_hands) {
+      rig.hand_models[static_cast<std::size_t>(side)] = builder.place(*hand_model, glm::mat4(1.0f));
+    } else {
+      stage::PlacedModel& target = rig.hand_targets[static_cast<std::size_t>(side)];
+      target.model = *hand_model;
+      target.asset = builder.shared_model(*hand_model);
+      target.pose = model::rest_pose(*target.asset);
+    }
     const model::ModelAsset& hand = builder.model(*hand_model);
     rig.hand_root[static_cast<std::size_t>(side)] = hand.roots.empty() ? -1 : hand.roots[0];
     for (int f = 0; f < 5; ++f) {
@@ -107,18 +115,16 @@ Status bind_pianist_body(stage::StageBuilder& builder, const scene::Pianist& pia
   // The chair's front (+Z) toward the keys, like the pianist.
   const glm::mat4 bench = stage::placement_matrix(pianist.position_m, pianist.facing_deg);
   builder.place(*chair_model, bench);
-  if (!builder.generated_model_exists("performer.glb")) return Status::success();
-  auto body = stage::load_mapped(builder, {}, "performer.glb");
+  if (pianist.character_mapping.empty() && !builder.generated_model_exists("performer.glb")) {
+    return Status::success();
+  }
+  auto body = stage::place_body(builder, pianist.character_mapping, bench);
   if (!body) return body.error();
-  rig.body = builder.place(body->model, bench);
-  const model::ModelAsset& asset = builder.model(body->model);
-  auto nodes = stage::find_body_nodes(asset, *body);
-  if (!nodes) return nodes.error();
-  rig.body_nodes = *nodes;
-  for (int side = 0; side < 2; ++side) {
-    auto hand = stage::find_role(asset, *body, side == 0 ? "hand_r" : "hand_l");
-    if (!hand) return hand.error();
-    rig.rig_hands[static_cast<std::size_t>(side)] = *hand;
+  rig.body = body->placed;
+  rig.body_nodes = body->nodes;
+  rig.body_retarget = std::move(body->retarget);
+  if (!rig.body_retarget) {
+    rig.rig_hands = {rig.body_nodes.arm_right.end, rig.body_nodes.arm_left.end};
   }
   return Status::success();
 }
@@ -135,10 +141,10 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
   const scene::Scene& scene = builder.scene();
   if (!scene.pianist) return Status::success();
   const scene::Pianist& pianist = *scene.pianist;
-  if (!pianist.hands_mapping.empty() || !pianist.character_mapping.empty()) {
+  if (!pianist.hands_mapping.empty()) {
     return Error{scene.source +
-                 ": pianist: user hand and character models are not "
-                 "supported yet (the brass players' are); remove \"hands\" / \"character\""};
+                 ": pianist: user hand models are not supported yet (a user's character plays "
+                 "with its own hands: give \"character\" instead); remove \"hands\""};
   }
   auto planned = plan_pianist(builder);
   if (!planned) return planned.error();
@@ -177,7 +183,8 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
       rig.fingers[static_cast<std::size_t>(side)][static_cast<std::size_t>(f)] = finger;
     }
   }
-  if (Status s = bind_piano(builder, model->keyboard, *action, rig); !s) return s;
+  const bool own_hands = !pianist.character_mapping.empty();
+  if (Status s = bind_piano(builder, model->keyboard, *action, !own_hands, rig); !s) return s;
   if (Status s = bind_pianist_body(builder, pianist, rig); !s) return s;
   // Export names: "piano", "<pianist> hand_r", "<pianist> hand_l", the pianist's body.
   const auto label = [&](ecs::Entity instance, std::string text, bool after_performer) {

@@ -262,6 +262,48 @@ TEST(UserCharacter, AMappingFileOnlyOverrides) {
   EXPECT_EQ(refused.error().message.find('\n'), std::string::npos);
 }
 
+// The pianist as a user's character, no mapping: it plays with its own hands, its fingertips'
+// pads on the keys' tops at key bottom within issue 11's 3 mm, on every naming convention.
+TEST(UserCharacter, APianistPlaysWithItsOwnHandsOnTheKeys) {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
+  test::ScratchDir dir;
+  ASSERT_TRUE(make_fixtures(dir.path()));
+  for (const char* file : {"rigify_a.glb", "unreal_cm_t.glb", "mixamo_ns_cm_a.glb", "rigify_a_vrm1.vrm"}) {
+    nlohmann::json piano = nlohmann::json::parse(std::ifstream(kSource / "content/scenes/piano.json"));
+    piano["music"] = (kSource / "content/music" / piano["music"].get<std::string>()).string();
+    piano["pianist"]["character"] = file;
+    const std::filesystem::path scene_file = dir.path() / "piano.json";
+    std::ofstream(scene_file) << piano.dump(1);
+    auto scene = scene::load_scene(scene_file);
+    ASSERT_TRUE(scene) << scene.error().message;
+    auto staged = build_stage(*scene, {});
+    ASSERT_TRUE(staged) << file << ": " << staged.error().message;
+    // Its own hands play: tutti's hand models are not drawn.
+    std::size_t hands_drawn = 0;
+    for (std::size_t i = 0; i < (*staged)->instances().size(); ++i) {
+      const std::string& source = (*staged)->placed(i).asset->source;
+      hands_drawn += source.find("hand_") != std::string::npos ? 1 : 0;
+    }
+    EXPECT_EQ(hands_drawn, 0u) << file;
+    PoseCheckOptions options;
+    options.from_s = 0.0;
+    options.to_s = 20.0;
+    auto report = check_pose(**staged, options);
+    ASSERT_TRUE(report) << report.error().message;
+    for (const char* name : {"pianist: pressing fingertip's pad above its key's top at key bottom",
+                             "pianist: thumb's pad above its key's top at key bottom"}) {
+      const PoseMeasure* pad = report->find(name);
+      ASSERT_NE(pad, nullptr) << file << ": " << name;
+      EXPECT_GT(pad->samples.size(), 100u) << file << ": " << name;
+      EXPECT_TRUE(pad->within_limit()) << file << ": " << name << " from " << pad->percentile(0.0)
+                                       << " to " << pad->worst() << " mm";
+    }
+    const PoseMeasure* head = report->find("pianist: hands and fingertips inside the head (depth; 0 = outside)");
+    ASSERT_NE(head, nullptr);
+    EXPECT_EQ(head->worst(), 0.0) << file;
+  }
+}
+
 TEST(UserCharacter, NotAHumanoidAndModelHandsAreOneLineErrors) {
   test::ScratchDir dir;
   std::filesystem::copy_file(std::filesystem::path(TUTTI_PERFORMANCE_TEST_ASSET_DIR) / "trumpet.glb",

@@ -1,11 +1,11 @@
-#include <tutti/brass/hand_hold.hpp>
+#include <tutti/stage/fingertip_reach.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 #include <tutti/stage/two_bone_ik.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::stage {
 namespace {
 
 constexpr std::size_t kTip = 3;  // fingertip node index in a finger's chain below
@@ -20,7 +20,7 @@ struct FingerChain {
   bool valid() const { return node[0] >= 0 && node[1] >= 0 && node[2] >= 0 && node[3] >= 0; }
 };
 
-FingerChain chain_of(const model::ModelAsset& body, const stage::BodyNodes& nodes, int side,
+FingerChain chain_of(const model::ModelAsset& body, const BodyNodes& nodes, int side,
                      std::size_t f) {
   FingerChain c;
   for (std::size_t s = 0; s < 3; ++s) {
@@ -45,9 +45,9 @@ glm::vec3 curled_tip(const FingerChain& c, const glm::vec3& axis, const std::arr
   return c.offset[0] + glm::angleAxis(curl[0], axis) * tip_from_mcp(c, axis, curl[1], curl[2]);
 }
 
-std::array<float, 3> curl_of(const HandHold& hold, std::size_t f) {
-  if (f == 0) return {0.0f, hold.thumb_curl_rad, hold.thumb_curl_rad};
-  return f == 4 && hold.little_own_curl ? hold.little_curl_rad : hold.finger_curl_rad;
+std::array<float, 3> curl_of(const FingerCurls& curls, std::size_t f) {
+  if (f == 0) return {0.0f, curls.thumb, curls.thumb};
+  return f == 4 && curls.little_own ? curls.little : curls.finger;
 }
 
 }  // namespace
@@ -76,8 +76,8 @@ glm::quat fingertip_hand_rotation(const FingertipTargets& targets, const glm::ve
   return glm::normalize(glm::quat_cast(glm::mat3(x, y, z)));
 }
 
-glm::vec3 fingertip_wrist(const model::ModelAsset& body, const stage::BodyNodes& nodes, int side,
-                          const HandHold& hold, const FingertipTargets& targets,
+glm::vec3 fingertip_wrist(const model::ModelAsset& body, const BodyNodes& nodes, int side,
+                          const FingerCurls& curls, const FingertipTargets& targets,
                           const glm::quat& hand_rotation, float body_scale) {
   glm::vec3 tips(0.0f), goals(0.0f);
   int count = 0;
@@ -85,7 +85,7 @@ glm::vec3 fingertip_wrist(const model::ModelAsset& body, const stage::BodyNodes&
     if (!targets.has[f]) continue;
     const FingerChain c = chain_of(body, nodes, side, f);
     if (!c.valid()) continue;
-    tips += curled_tip(c, flex_axis(side), curl_of(hold, f));
+    tips += curled_tip(c, flex_axis(side), curl_of(curls, f));
     goals += targets.world[f];
     ++count;
   }
@@ -94,8 +94,8 @@ glm::vec3 fingertip_wrist(const model::ModelAsset& body, const stage::BodyNodes&
          hand_rotation * (body_scale * tips / static_cast<float>(count));
 }
 
-void pose_fingers(const model::ModelAsset& body, const stage::BodyNodes& nodes, int side,
-                  const HandHold& hold, const FingertipTargets* targets,
+void pose_fingers(const model::ModelAsset& body, const BodyNodes& nodes, int side,
+                  const FingerCurls& curls, const FingertipTargets* targets,
                   const std::vector<glm::mat4>& world, model::ModelPose& pose) {
   const glm::vec3 axis = flex_axis(side);
   const auto s = static_cast<std::size_t>(side);
@@ -104,22 +104,22 @@ void pose_fingers(const model::ModelAsset& body, const stage::BodyNodes& nodes, 
     const auto& bones = nodes.fingers[s][f];
     if (f == 0 && (targets == nullptr || !targets->has[0])) {
       const FingerChain middle = chain_of(body, nodes, side, 2);
-      if (hold.thumb_adduct_rad != 0.0f && bones[0] >= 0 && middle.valid()) {
+      if (curls.thumb_adduct != 0.0f && bones[0] >= 0 && middle.valid()) {
         // The palm's normal in the hand's frame: across the flexion axis and the middle finger.
         const glm::vec3 normal = glm::normalize(glm::cross(axis, middle.offset[0]));
         const auto b = static_cast<std::size_t>(bones[0]);
         pose.local[b].rotation =
-            glm::angleAxis(hold.thumb_adduct_rad, normal) * body.nodes[b].rest.rotation;
+            glm::angleAxis(curls.thumb_adduct, normal) * body.nodes[b].rest.rotation;
       }
       for (std::size_t k = 1; k < 3; ++k) {
         if (bones[k] >= 0) {
           pose.local[static_cast<std::size_t>(bones[k])].rotation =
-              glm::angleAxis(hold.thumb_curl_rad, axis);
+              glm::angleAxis(curls.thumb, axis);
         }
       }
       continue;
     }
-    const std::array<float, 3> curl = curl_of(hold, f);
+    const std::array<float, 3> curl = curl_of(curls, f);
     const FingerChain c = chain_of(body, nodes, side, f);
     if (targets == nullptr || !targets->has[f] || !c.valid() || hand < 0) {
       for (std::size_t k = 0; k < 3; ++k) {
@@ -134,7 +134,7 @@ void pose_fingers(const model::ModelAsset& body, const stage::BodyNodes& nodes, 
                                      glm::vec4(targets->world[f], 1.0f));
     const glm::vec3 reach = goal - c.offset[0];
     const float wanted = glm::length(reach);
-    // PIP and DIP bend in the hold's ratio; the reach shrinks as they bend: bisect.
+    // PIP and DIP bend in the curl's ratio; the reach shrinks as they bend: bisect.
     const float ratio = curl[1] > 1e-3f ? curl[2] / curl[1] : 0.6f;  // thumb: IP = MCP
     constexpr float kPipMax = 1.9f;  // 110°, hand_rig.json's PIP limit
     float lo = 0.0f, hi = kPipMax;
@@ -151,10 +151,10 @@ void pose_fingers(const model::ModelAsset& body, const stage::BodyNodes& nodes, 
     const float pip = 0.5f * (lo + hi);
     const glm::vec3 bent = tip_from_mcp(c, axis, pip, ratio * pip);
     pose.local[static_cast<std::size_t>(c.node[0])].rotation =
-        stage::rotation_between(glm::normalize(bent), glm::normalize(reach));
+        rotation_between(glm::normalize(bent), glm::normalize(reach));
     pose.local[static_cast<std::size_t>(c.node[1])].rotation = glm::angleAxis(pip, axis);
     pose.local[static_cast<std::size_t>(c.node[2])].rotation = glm::angleAxis(ratio * pip, axis);
   }
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::stage
