@@ -295,6 +295,13 @@ class Converter {
     auto positions = read_vec3(m_, position, vertex_budget, Vec3Kind::position);
     if (!positions) return prefixed(where + ": POSITION", positions.error(), " ");
     data.positions = std::move(*positions);
+    for (std::size_t v = 0; v < data.positions.size(); ++v) {
+      const glm::vec3& p = data.positions[v];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+        return Error{where + ": POSITION " + std::to_string(v) +
+                     " has a non-finite number (NaN or infinity)"};
+      }
+    }
     const std::size_t n = data.positions.size();
     auto same_count = [&](const char* name, std::size_t count) -> Status {
       if (count == n) return {};
@@ -470,6 +477,13 @@ class Converter {
       if (in.inverseBindMatrices >= 0) {
         auto matrices = read_mat4s(m_, in.inverseBindMatrices, in.joints.size());
         if (!matrices) return prefixed(where + ": inverseBindMatrices", matrices.error(), " ");
+        for (std::size_t j = 0; j < matrices->size(); ++j) {
+          const float* values = &(*matrices)[j][0][0];
+          if (!std::all_of(values, values + 16, [](float v) { return std::isfinite(v); })) {
+            return Error{where + ": inverseBindMatrices: matrix " + std::to_string(j) +
+                         " has a non-finite number (NaN or infinity)"};
+          }
+        }
         out.inverse_bind = std::move(*matrices);
       } else {
         out.inverse_bind.assign(in.joints.size(), glm::mat4(1.0f));

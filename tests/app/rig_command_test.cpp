@@ -1,12 +1,20 @@
 // `tutti rig`: the generated performer recognised without a mapping (every role, metres, 1.75 m,
 // facing +Z); the same figure packed by gltfpack; --mapping writes a file the scene loader
-// accepts; a file that is not a humanoid, or not a model, is one error line with exit code 2.
+// accepts; a file that is not a humanoid, or not a model, and a broken rig (no skin, a loop in the
+// node tree, NaN in a matrix) is one error line with exit code 2.
 #include <tutti/cli/rig_command.hpp>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include <tutti/cli/exit_codes.hpp>
@@ -76,6 +84,71 @@ TEST(RigCommand, NotAHumanoidOrNotAModelIsOneLine) {
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("/nonexistent/avatar.vrm"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+}
+
+// The performer's GLB with its JSON edited (and its binary chunk patched by `patch`).
+std::filesystem::path edited_performer(const std::filesystem::path& dir, const std::string& name,
+                                       const std::function<void(nlohmann::json&)>& edit,
+                                       const std::function<void(const nlohmann::json&, std::string&)>& patch = {}) {
+  std::ifstream in(kAssets / "performer.glb", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::uint32_t json_length = 0;
+  std::memcpy(&json_length, bytes.data() + 12, 4);
+  nlohmann::json document = nlohmann::json::parse(bytes.substr(20, json_length));
+  std::string binary = bytes.substr(20 + json_length);
+  edit(document);
+  if (patch) patch(document, binary);
+  std::string text = document.dump();
+  while (text.size() % 4 != 0) text += ' ';
+  const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const std::string body = u32(static_cast<std::uint32_t>(text.size())) + u32(0x4E4F534Au) + text + binary;
+  const std::filesystem::path out = dir / name;
+  std::ofstream(out, std::ios::binary) << u32(0x46546C67u) << u32(2)
+                                       << u32(static_cast<std::uint32_t>(12 + body.size())) << body;
+  return out;
+}
+
+TEST(RigCommand, BrokenRigsAreOneLineNamingTheProblem) {
+  test::ScratchDir dir;
+  struct Case {
+    std::filesystem::path file;
+    std::string problem;
+  };
+  std::vector<Case> cases;
+  cases.push_back({edited_performer(dir.path(), "no_skin.glb",
+                                    [](nlohmann::json& d) {
+                                      for (auto& node : d["nodes"]) node.erase("skin");
+                                      d.erase("skins");
+                                    }),
+                   "no skin"});
+  cases.push_back({edited_performer(dir.path(), "loop.glb",
+                                    [](nlohmann::json& d) {
+                                      const std::size_t n = d["nodes"].size();
+                                      d["nodes"].push_back({{"name", "a"}, {"children", {n + 1}}});
+                                      d["nodes"].push_back({{"name", "b"}, {"children", {n}}});
+                                    }),
+                   "a cycle in the node tree"});
+  cases.push_back({edited_performer(
+                       dir.path(), "nan.glb", [](nlohmann::json&) {},
+                       [](const nlohmann::json& d, std::string& binary) {
+                         const auto& accessor =
+                             d["accessors"][d["skins"][0]["inverseBindMatrices"].get<std::size_t>()];
+                         const auto& view = d["bufferViews"][accessor["bufferView"].get<std::size_t>()];
+                         const std::size_t at = 8 + view.value("byteOffset", 0u) +
+                                                accessor.value("byteOffset", 0u) + 13 * 4;
+                         const float nan = std::nanf("");
+                         std::memcpy(binary.data() + at, &nan, 4);
+                       }),
+                   "non-finite number (NaN or infinity)"});
+  for (const Case& c : cases) {
+    RigOptions o;
+    o.model = c.file;
+    auto r = test::run_command(run_rig, o);
+    EXPECT_EQ(r.code, kExitBadInput) << c.file;
+    EXPECT_NE(r.err.find(c.file.filename().string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.problem), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
 }
 
 }  // namespace
