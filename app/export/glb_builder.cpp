@@ -46,6 +46,19 @@ int GlbBuilder::add_view(std::span<const std::byte> bytes, BufferTarget target) 
   return append("bufferViews", std::move(view));
 }
 
+int GlbBuilder::add_image_bytes(std::span<const std::uint8_t> bytes) {
+  return add_view(std::as_bytes(bytes), BufferTarget::none);
+}
+
+void GlbBuilder::use_extension(const std::string& name, bool required) {
+  for (const char* key : {"extensionsUsed", "extensionsRequired"}) {
+    if (key[10] == 'R' && !required) continue;
+    nlohmann::json& list = document_[key];
+    if (!list.is_array()) list = nlohmann::json::array();
+    if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+  }
+}
+
 int GlbBuilder::add_floats(std::span<const float> values, std::string_view type,
                            BufferTarget target, bool with_min_max) {
   const std::size_t width = type_width(type);

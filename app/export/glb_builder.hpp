@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -27,6 +28,11 @@ class GlbBuilder {
                  bool with_min_max);
   int add_indices(std::span<const std::uint32_t> indices);  // u16 when every value fits, else u32
   int add_joints(std::span<const std::uint16_t> joints);    // JOINTS_0: unsigned short VEC4
+
+  // An image's file bytes (PNG, JPEG, WebP) as a buffer view; returns the view's index.
+  int add_image_bytes(std::span<const std::uint8_t> bytes);
+  // Adds `name` to extensionsUsed (and extensionsRequired when `required`), once.
+  void use_extension(const std::string& name, bool required);
 
   // Appends `value` to document[key] (an array, created when missing) and returns its index.
   int append(const char* key, nlohmann::json value);

@@ -199,11 +199,66 @@ class Writer {
         material["emissiveFactor"] =
             json::array({unit(m.emissive.r), unit(m.emissive.g), unit(m.emissive.b)});
       }
-      if (m.base_color.a < 1.0f) material["alphaMode"] = "BLEND";
+      if (m.alpha_mode == model::AlphaMode::blend) material["alphaMode"] = "BLEND";
+      if (m.alpha_mode == model::AlphaMode::mask) {
+        material["alphaMode"] = "MASK";
+        material["alphaCutoff"] = m.alpha_cutoff;
+      }
       if (m.double_sided) material["doubleSided"] = true;
+      const auto info = [&](const model::TextureRef& ref, const char* amount) -> json {
+        json out = {{"index", texture_index(asset, ref.texture)}};
+        if (ref.texcoord != 0) out["texCoord"] = ref.texcoord;
+        if (amount != nullptr) out[amount] = ref.amount;
+        if (ref.transformed) {
+          out["extensions"]["KHR_texture_transform"] = {
+              {"offset", {ref.offset.x, ref.offset.y}},
+              {"rotation", ref.rotation},
+              {"scale", {ref.scale.x, ref.scale.y}}};
+          builder_.use_extension("KHR_texture_transform", false);
+        }
+        return out;
+      };
+      if (m.base_color_texture.present()) {
+        material["pbrMetallicRoughness"]["baseColorTexture"] = info(m.base_color_texture, nullptr);
+      }
+      if (m.metallic_roughness_texture.present()) {
+        material["pbrMetallicRoughness"]["metallicRoughnessTexture"] =
+            info(m.metallic_roughness_texture, nullptr);
+      }
+      if (m.normal_texture.present()) material["normalTexture"] = info(m.normal_texture, "scale");
+      if (m.occlusion_texture.present()) {
+        material["occlusionTexture"] = info(m.occlusion_texture, "strength");
+      }
+      if (m.emissive_texture.present()) material["emissiveTexture"] = info(m.emissive_texture, nullptr);
       builder_.append("materials", std::move(material));
     }
     return first;
+  }
+
+  // The export's texture for the model's texture `index`: its image embedded as the file had it
+  // (PNG, JPEG, or WebP through EXT_texture_webp), its sampler; written once per model.
+  int texture_index(const ModelAsset& asset, int index) {
+    const auto key = std::pair<const ModelAsset*, int>(&asset, index);
+    if (const auto found = textures_.find(key); found != textures_.end()) return found->second;
+    const model::Texture& texture = asset.textures[static_cast<std::size_t>(index)];
+    const model::Image& image = asset.images[static_cast<std::size_t>(texture.image)];
+    json written_image = {{"bufferView", builder_.add_image_bytes(image.encoded)},
+                          {"mimeType", image.mime_type}};
+    if (!image.name.empty()) written_image["name"] = image.name;
+    const int image_index = builder_.append("images", std::move(written_image));
+    json sampler = {{"wrapS", texture.wrap_s}, {"wrapT", texture.wrap_t}};
+    if (texture.mag_filter != 0) sampler["magFilter"] = texture.mag_filter;
+    if (texture.min_filter != 0) sampler["minFilter"] = texture.min_filter;
+    json written = {{"sampler", builder_.append("samplers", std::move(sampler))}};
+    if (image.mime_type == "image/webp") {
+      written["extensions"]["EXT_texture_webp"] = {{"source", image_index}};
+      builder_.use_extension("EXT_texture_webp", true);
+    } else {
+      written["source"] = image_index;
+    }
+    const int out = builder_.append("textures", std::move(written));
+    textures_[key] = out;
+    return out;
   }
 
   int write_mesh(const ModelAsset& asset, const model::Mesh& mesh, bool skinned,
@@ -211,7 +266,17 @@ class Writer {
     json primitives = json::array();
     const std::size_t targets = mesh.target_names.size();
     for (const model::Primitive& p : mesh.primitives) {
-      std::vector<float> positions, normals, weights;
+      std::vector<float> positions, normals, weights, uv0, uv1;
+      // UV sets that some texture of the primitive's material reads.
+      bool uses_uv[2] = {false, false};
+      if (p.material >= 0) {
+        const model::Material& m = asset.materials[static_cast<std::size_t>(p.material)];
+        for (const model::TextureRef* ref : {&m.base_color_texture, &m.metallic_roughness_texture,
+                                             &m.normal_texture, &m.occlusion_texture,
+                                             &m.emissive_texture}) {
+          if (ref->present()) uses_uv[ref->texcoord == 1 ? 1 : 0] = true;
+        }
+      }
       std::vector<std::uint16_t> joints;
       for (std::uint32_t v = 0; v < p.vertex_count; ++v) {
         const model::Vertex& vertex = asset.vertices[p.first_vertex + v];
@@ -220,6 +285,8 @@ class Writer {
         positions.insert(positions.end(),
                          {vertex.position.x, vertex.position.y, vertex.position.z});
         normals.insert(normals.end(), {normal.x, normal.y, normal.z});
+        if (uses_uv[0]) uv0.insert(uv0.end(), {vertex.uv0.x, vertex.uv0.y});
+        if (uses_uv[1]) uv1.insert(uv1.end(), {vertex.uv1.x, vertex.uv1.y});
         if (skinned) {
           glm::vec4 w = vertex.weights;
           glm::uvec4 j = vertex.joints;
@@ -242,6 +309,8 @@ class Writer {
       json attributes = {
           {"POSITION", builder_.add_floats(positions, "VEC3", BufferTarget::vertices, true)},
           {"NORMAL", builder_.add_floats(normals, "VEC3", BufferTarget::vertices, false)}};
+      if (uses_uv[0]) attributes["TEXCOORD_0"] = builder_.add_floats(uv0, "VEC2", BufferTarget::vertices, false);
+      if (uses_uv[1]) attributes["TEXCOORD_1"] = builder_.add_floats(uv1, "VEC2", BufferTarget::vertices, false);
       if (skinned) {
         attributes["JOINTS_0"] = builder_.add_joints(joints);
         attributes["WEIGHTS_0"] =
@@ -499,6 +568,7 @@ class Writer {
   KeyTolerances tolerances_;
   GlbBuilder builder_;
   std::vector<WrittenModel> written_;
+  std::map<std::pair<const ModelAsset*, int>, int> textures_;  // (model, texture) -> written
   std::vector<Channel> channels_;
   std::map<std::vector<std::uint32_t>, int> times_;
   std::size_t samples_ = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -284,6 +285,28 @@ Result<std::vector<glm::uvec4>> read_joints(const tinygltf::Model& model, int in
       out[i][c] = uint_component(p + size * static_cast<std::size_t>(c), span->component_type);
     }
   });
+  return out;
+}
+
+Result<std::vector<glm::vec2>> read_texcoords(const tinygltf::Model& model, int index,
+                                              std::size_t max_count) {
+  const std::vector<int> integers{TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                  TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+  std::vector<int> plain = integers;
+  plain.push_back(TINYGLTF_COMPONENT_TYPE_FLOAT);
+  auto span = locate_accessor(model, index, {TINYGLTF_TYPE_VEC2, plain, integers, max_count});
+  if (!span) return span.error();
+  const std::size_t size = component_size(span->component_type);
+  std::vector<glm::vec2> out(span->count);
+  bool finite = true;
+  for_each_element(*span, [&](std::size_t i, const std::uint8_t* p) {
+    for (int c = 0; c < 2; ++c) {
+      out[i][c] = float_component(p + size * static_cast<std::size_t>(c), span->component_type,
+                                  span->normalized);
+      finite = finite && std::isfinite(out[i][c]);
+    }
+  });
+  if (!finite) return Error{"accessor " + std::to_string(index) + ": a non-finite number"};
   return out;
 }
 

@@ -53,6 +53,10 @@ Result<AccessorSpan> locate_accessor(const tinygltf::Model& model, int index,
 enum class Vec3Kind { position, normal, morph_position, morph_normal };
 Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int index,
                                          std::size_t max_count, Vec3Kind kind);
+// TEXCOORD_n: VEC2 of float, normalized unsigned byte / short, or (KHR_mesh_quantization) any
+// byte or short, normalized or not.
+Result<std::vector<glm::vec2>> read_texcoords(const tinygltf::Model& model, int index,
+                                              std::size_t max_count);
 // JOINTS_n: VEC4 of unsigned byte or unsigned short.
 Result<std::vector<glm::uvec4>> read_joints(const tinygltf::Model& model, int index,
                                             std::size_t max_count);

@@ -1,5 +1,6 @@
 #include <tutti/model/gltf_document.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <exception>
 #include <nlohmann/json.hpp>
@@ -24,7 +25,8 @@ std::uint32_t read_u32(std::span<const std::uint8_t> bytes, std::size_t offset) 
 }
 
 // A JSON pre-pass that tinygltf never sees fail: nlohmann's SAX parser is iterative, so depth and
-// size are checked before anything recursive or large runs. Also collects buffers[i].uri.
+// size are checked before anything recursive or large runs. Also collects buffers[i].uri and
+// images[i].uri (the files a .gltf may read next to it).
 class JsonScan {
  public:
   using json = nlohmann::json;
@@ -36,7 +38,8 @@ class JsonScan {
   bool number_float(json::number_float_t, const json::string_t&) { return value(); }
   bool binary(json::binary_t&) { return value(); }
   bool string(json::string_t& text) {
-    if (stack_.size() == 3 && !stack_[0].array && stack_[0].key == "buffers" && stack_[1].array &&
+    if (stack_.size() == 3 && !stack_[0].array &&
+        (stack_[0].key == "buffers" || stack_[0].key == "images") && stack_[1].array &&
         !stack_[2].array && stack_[2].key == "uri") {
       buffer_uris_.push_back(text);
     }
@@ -187,9 +190,14 @@ bool write_whole_file(std::string*, const std::string&, const std::vector<unsign
   return false;
 }
 
-// Images are kept as references only: never decoded, no pixels allocated.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
+// Images are kept as their files' bytes (PNG, JPEG, WebP), never decoded here: load_model
+// decodes them (gltf_images.hpp), with its own caps.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  if (image == nullptr) return false;
+  image->image.assign(bytes, bytes + std::max(size, 0));
+  image->width = -1;  // marks `image` as encoded bytes, not pixels
+  image->height = -1;
   return true;
 }
 
@@ -250,7 +258,7 @@ Result<tinygltf::Model> parse_gltf(std::span<const std::uint8_t> bytes,
   }
 
   tinygltf::TinyGLTF gltf;
-  gltf.SetImageLoader(&skip_image, nullptr);
+  gltf.SetImageLoader(&keep_image_bytes, nullptr);
   gltf.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &write_whole_file, &access});
   tinygltf::Model model;
   std::string err;

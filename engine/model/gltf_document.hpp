@@ -3,8 +3,8 @@
 // tinygltf sees it: the .glb chunk layout is checked here (tinygltf 2.7 trusts the BIN chunk's
 // length by 8 bytes too many), the JSON is pre-scanned by a SAX pass (nesting depth, value
 // count: tinygltf converts `extras` recursively and allocates far more per value than the
-// text), images are never decoded and never read from disk, and external buffers are read only
-// from the folder given, through the project's capped file reads.
+// text), images are kept as their encoded bytes (tinygltf::Image::image, width -1), and external
+// buffers and images are read only from the folder given, through the project's capped file reads.
 //
 // Internal to tutti_model: the loader turns the tinygltf::Model into a ModelAsset.
 

@@ -8,6 +8,7 @@
 #include <tutti/core/file_io.hpp>
 #include <tutti/model/gltf_accessors.hpp>
 #include <tutti/model/gltf_document.hpp>
+#include <tutti/model/gltf_images.hpp>
 #include <tutti/model/model_asset.hpp>
 #include <tutti/model/node_hierarchy.hpp>
 
@@ -54,12 +55,52 @@ Error prefixed(const std::string& where, const Error& error, const char* separat
   return Error{where + separator + error.message};
 }
 
+// The bytes of a base64 `data:` URI; empty when `uri` is not one or is not valid base64.
+std::vector<std::uint8_t> data_uri_bytes(const std::string& uri) {
+  const std::size_t comma = uri.find(',');
+  if (uri.rfind("data:", 0) != 0 || comma == std::string::npos || comma < 7 ||
+      uri.compare(comma - 7, 7, ";base64") != 0) {
+    return {};
+  }
+  std::vector<std::uint8_t> out;
+  out.reserve((uri.size() - comma) * 3 / 4);
+  std::uint32_t bits = 0;
+  int count = 0;
+  for (std::size_t i = comma + 1; i < uri.size(); ++i) {
+    const char c = uri[i];
+    int value = -1;
+    if (c >= 'A' && c <= 'Z') value = c - 'A';
+    if (c >= 'a' && c <= 'z') value = c - 'a' + 26;
+    if (c >= '0' && c <= '9') value = c - '0' + 52;
+    if (c == '+') value = 62;
+    if (c == '/') value = 63;
+    if (c == '=') break;
+    if (value < 0) return {};
+    bits = (bits << 6) | static_cast<std::uint32_t>(value);
+    if (++count == 4) {
+      out.push_back(static_cast<std::uint8_t>(bits >> 16));
+      out.push_back(static_cast<std::uint8_t>(bits >> 8));
+      out.push_back(static_cast<std::uint8_t>(bits));
+      bits = 0;
+      count = 0;
+    }
+  }
+  if (count == 3) {
+    out.push_back(static_cast<std::uint8_t>(bits >> 10));
+    out.push_back(static_cast<std::uint8_t>(bits >> 2));
+  } else if (count == 2) {
+    out.push_back(static_cast<std::uint8_t>(bits >> 4));
+  }
+  return out;
+}
+
 // One primitive's vertices before they join the asset's arrays.
 struct PrimitiveData {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;  // empty: computed (flat)
   std::vector<glm::uvec4> joints;  // empty: unskinned
   std::vector<glm::vec4> weights;
+  std::vector<glm::vec2> uv0, uv1;  // empty: absent
   std::vector<std::uint32_t> indices;
   std::vector<std::vector<MorphDelta>> targets;
 };
@@ -75,9 +116,13 @@ void make_flat(PrimitiveData& data) {
     flat.weights.resize(corners);
   }
   flat.targets.assign(data.targets.size(), std::vector<MorphDelta>(corners));
+  if (!data.uv0.empty()) flat.uv0.resize(corners);
+  if (!data.uv1.empty()) flat.uv1.resize(corners);
   for (std::size_t c = 0; c < corners; ++c) {
     const std::uint32_t v = data.indices[c];
     flat.positions[c] = data.positions[v];
+    if (!data.uv0.empty()) flat.uv0[c] = data.uv0[v];
+    if (!data.uv1.empty()) flat.uv1[c] = data.uv1[v];
     if (!data.joints.empty()) {
       flat.joints[c] = data.joints[v];
       flat.weights[c] = data.weights[v];
@@ -146,6 +191,8 @@ class Converter {
     }
     auto order = order_nodes(m_);
     if (!order) return order.error();
+    if (auto s = convert_images(); !s) return s.error();
+    if (auto s = convert_textures(); !s) return s.error();
     if (auto s = convert_materials(); !s) return s.error();
     for (std::size_t i = 0; i < m_.meshes.size(); ++i) {
       if (auto s = convert_mesh(i); !s) return s.error();
@@ -192,6 +239,101 @@ class Converter {
     }
   }
 
+  // Every image's bytes (tinygltf hands them over undecoded, gltf_document.cpp), decoded when
+  // PNG, JPEG or WebP; other formats (KTX2, DDS) stay undecoded and their textures unused.
+  Status convert_images() {
+    std::size_t budget = kMaxPixelBytesPerModel;
+    for (std::size_t i = 0; i < m_.images.size(); ++i) {
+      const tinygltf::Image& in = m_.images[i];
+      const std::string where = describe("image", i, in.name);
+      Image out;
+      out.name = in.name;
+      out.mime_type = in.mimeType;
+      if (in.width == -1) out.encoded = in.image;
+      // tinygltf passes over data: URIs of types it does not know (image/webp).
+      if (out.encoded.empty()) out.encoded = data_uri_bytes(in.uri);
+      if (out.encoded.empty()) {
+        return Error{where + ": no data" + (in.uri.empty() ? std::string() : " (" + in.uri + ")")};
+      }
+      const std::string type = sniff_image_type(out.encoded);
+      if (!type.empty()) {
+        if (auto s = decode_image(out, budget); !s) return prefixed(where, s.error(), ": ");
+        out.mime_type = type;
+      }
+      asset_.images.push_back(std::move(out));
+    }
+    return {};
+  }
+
+  Status convert_textures() {
+    for (std::size_t i = 0; i < m_.textures.size(); ++i) {
+      const tinygltf::Texture& in = m_.textures[i];
+      const std::string where = describe("texture", i, in.name);
+      Texture out;
+      int source = in.source;
+      // EXT_texture_webp names the WebP image; `source` (if any) is a fallback for other readers.
+      if (const auto webp = in.extensions.find("EXT_texture_webp"); webp != in.extensions.end()) {
+        const tinygltf::Value& value = webp->second.Get("source");
+        if (value.IsInt()) source = value.GetNumberAsInt();
+      }
+      if (source >= 0) {
+        if (static_cast<std::size_t>(source) >= asset_.images.size()) {
+          return Error{where + ": image " + std::to_string(source) + " is not in the file"};
+        }
+        if (!asset_.images[static_cast<std::size_t>(source)].rgba.empty()) out.image = source;
+      }
+      if (in.sampler >= 0) {
+        if (static_cast<std::size_t>(in.sampler) >= m_.samplers.size()) {
+          return Error{where + ": sampler " + std::to_string(in.sampler) + " is not in the file"};
+        }
+        const tinygltf::Sampler& sampler = m_.samplers[static_cast<std::size_t>(in.sampler)];
+        out.mag_filter = std::max(sampler.magFilter, 0);
+        out.min_filter = std::max(sampler.minFilter, 0);
+        out.wrap_s = sampler.wrapS;
+        out.wrap_t = sampler.wrapT;
+      }
+      asset_.textures.push_back(out);
+    }
+    return {};
+  }
+
+  // A material's texture slot: the texture, its UV set (0 or 1) and KHR_texture_transform.
+  Status texture_ref(const std::string& where, int index, int texcoord,
+                     const tinygltf::ExtensionMap& extensions, double amount, TextureRef& out) {
+    if (index < 0) return {};
+    if (static_cast<std::size_t>(index) >= asset_.textures.size()) {
+      return Error{where + ": texture " + std::to_string(index) + " is not in the file"};
+    }
+    if (!std::isfinite(amount)) return Error{where + ": scale or strength is not finite"};
+    out.amount = static_cast<float>(amount);
+    out.texcoord = texcoord;
+    if (const auto t = extensions.find("KHR_texture_transform"); t != extensions.end()) {
+      const tinygltf::Value& e = t->second;
+      const auto number = [](const tinygltf::Value& v, double fallback) {
+        return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? v.GetNumberAsDouble()
+                                                                      : fallback;
+      };
+      const auto pair = [&](const char* key, glm::vec2 fallback) {
+        const tinygltf::Value& v = e.Get(key);
+        if (!v.IsArray() || v.ArrayLen() != 2) return fallback;
+        return glm::vec2(static_cast<float>(number(v.Get(0), fallback.x)),
+                         static_cast<float>(number(v.Get(1), fallback.y)));
+      };
+      out.offset = pair("offset", glm::vec2(0.0f));
+      out.scale = pair("scale", glm::vec2(1.0f));
+      out.rotation = static_cast<float>(number(e.Get("rotation"), 0.0));
+      if (e.Get("texCoord").IsInt()) out.texcoord = e.Get("texCoord").GetNumberAsInt();
+      out.transformed = true;
+    }
+    if (out.texcoord < 0 || out.texcoord > 1) {
+      return Error{where + ": uses TEXCOORD_" + std::to_string(out.texcoord) +
+                   " (tutti reads TEXCOORD_0 and TEXCOORD_1)"};
+    }
+    // A texture whose image tutti cannot decode (KTX2, DDS) is left out: the factors alone.
+    if (asset_.textures[static_cast<std::size_t>(index)].image >= 0) out.texture = index;
+    return {};
+  }
+
   Status convert_materials() {
     for (std::size_t i = 0; i < m_.materials.size(); ++i) {
       const tinygltf::Material& in = m_.materials[i];
@@ -218,6 +360,44 @@ class Converter {
       out.metallic = static_cast<float>(pbr.metallicFactor);
       out.roughness = static_cast<float>(pbr.roughnessFactor);
       out.double_sided = in.doubleSided;
+      if (in.alphaMode == "MASK") {
+        out.alpha_mode = AlphaMode::mask;
+      } else if (in.alphaMode == "BLEND") {
+        out.alpha_mode = AlphaMode::blend;
+      } else if (!in.alphaMode.empty() && in.alphaMode != "OPAQUE") {
+        return Error{where + ": alphaMode \"" + in.alphaMode + "\" is not OPAQUE, MASK or BLEND"};
+      }
+      if (!std::isfinite(in.alphaCutoff) || in.alphaCutoff < 0.0) {
+        return Error{where + ": alphaCutoff must be a number >= 0"};
+      }
+      out.alpha_cutoff = static_cast<float>(in.alphaCutoff);
+      struct Slot {
+        const char* name;
+        int index, texcoord;
+        const tinygltf::ExtensionMap* extensions;
+        double amount;
+        TextureRef* ref;
+      };
+      const Slot slots[] = {
+          {"baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+           &pbr.baseColorTexture.extensions, 1.0, &out.base_color_texture},
+          {"metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
+           pbr.metallicRoughnessTexture.texCoord, &pbr.metallicRoughnessTexture.extensions, 1.0,
+           &out.metallic_roughness_texture},
+          {"normalTexture", in.normalTexture.index, in.normalTexture.texCoord,
+           &in.normalTexture.extensions, in.normalTexture.scale, &out.normal_texture},
+          {"occlusionTexture", in.occlusionTexture.index, in.occlusionTexture.texCoord,
+           &in.occlusionTexture.extensions, in.occlusionTexture.strength, &out.occlusion_texture},
+          {"emissiveTexture", in.emissiveTexture.index, in.emissiveTexture.texCoord,
+           &in.emissiveTexture.extensions, 1.0, &out.emissive_texture},
+      };
+      for (const Slot& slot : slots) {
+        if (auto s = texture_ref(where + ": " + slot.name, slot.index, slot.texcoord,
+                                 *slot.extensions, slot.amount, *slot.ref);
+            !s) {
+          return s.error();
+        }
+      }
       asset_.materials.push_back(std::move(out));
     }
     return {};
@@ -314,6 +494,16 @@ class Converter {
       if (!normals) return prefixed(where + ": NORMAL", normals.error(), " ");
       if (auto s = same_count("NORMAL", normals->size()); !s) return s.error();
       data.normals = std::move(*normals);
+    }
+
+    for (int set = 0; set < 2; ++set) {
+      const std::string name = "TEXCOORD_" + std::to_string(set);
+      const int texcoord = attribute(name.c_str());
+      if (texcoord < 0) continue;
+      auto uvs = read_texcoords(m_, texcoord, n);
+      if (!uvs) return prefixed(where + ": " + name, uvs.error(), " ");
+      if (auto s = same_count(name.c_str(), uvs->size()); !s) return s.error();
+      (set == 0 ? data.uv0 : data.uv1) = std::move(*uvs);
     }
 
     const int joints = attribute("JOINTS_0");
@@ -438,6 +628,8 @@ class Converter {
         vertex.joints = data.joints[v];
         vertex.weights = data.weights[v];
       }
+      if (!data.uv0.empty()) vertex.uv0 = data.uv0[v];
+      if (!data.uv1.empty()) vertex.uv1 = data.uv1[v];
       asset_.vertices.push_back(vertex);
     }
     asset_.indices.insert(asset_.indices.end(), data.indices.begin(), data.indices.end());

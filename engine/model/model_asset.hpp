@@ -25,12 +25,14 @@
 
 namespace tutti::model {
 
-// What the vertex shader reads, interleaved (56 bytes).
+// What the vertex shader reads, interleaved (72 bytes).
 struct Vertex {
   glm::vec3 position{0.0f};  // mesh space, metres
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
   glm::uvec4 joints{0};     // indices into the skin's joint list (JOINTS_0); 0 when unskinned
   glm::vec4 weights{0.0f};  // WEIGHTS_0, normalised to sum 1; all 0 when unskinned
+  glm::vec2 uv0{0.0f};      // TEXCOORD_0 (0 when absent)
+  glm::vec2 uv1{0.0f};      // TEXCOORD_1
 };
 
 // One morph target's change to one vertex (POSITION and NORMAL deltas; 0 where absent).
@@ -57,13 +59,52 @@ struct Mesh {
   std::vector<float> default_weights;     // mesh.weights, else 0; size = target count
 };
 
+// An image as the file holds it (PNG, JPEG or WebP bytes) and decoded to 8-bit RGBA, rows top
+// to bottom.
+struct Image {
+  std::string name;
+  std::string mime_type;  // "image/png", "image/jpeg", "image/webp"
+  std::vector<std::uint8_t> encoded;
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;
+};
+
+// A texture: its image and how it is sampled (glTF sampler enums; 0 = unset).
+struct Texture {
+  int image = -1;  // into ModelAsset::images (EXT_texture_webp's source when it has one)
+  int mag_filter = 0, min_filter = 0;
+  int wrap_s = 10497, wrap_t = 10497;  // REPEAT
+};
+
+// A material's use of a texture: which one, which UV set, and KHR_texture_transform.
+struct TextureRef {
+  int texture = -1;  // into ModelAsset::textures; -1 = none
+  int texcoord = 0;  // TEXCOORD_0 or _1
+  glm::vec2 offset{0.0f};
+  float rotation = 0.0f;  // radians
+  glm::vec2 scale{1.0f};
+  bool transformed = false;  // KHR_texture_transform present
+  // normalTexture.scale, occlusionTexture.strength; 1 otherwise.
+  float amount = 1.0f;
+  bool present() const { return texture >= 0; }
+};
+
+enum class AlphaMode { opaque, mask, blend };
+
 struct Material {
   std::string name;
-  glm::vec4 base_color{1.0f};  // linear RGBA (baseColorFactor; textures are not read)
+  glm::vec4 base_color{1.0f};  // linear RGBA (baseColorFactor)
   float metallic = 1.0f;
   float roughness = 1.0f;
   glm::vec3 emissive{0.0f};
   bool double_sided = false;
+  AlphaMode alpha_mode = AlphaMode::opaque;
+  float alpha_cutoff = 0.5f;
+  TextureRef base_color_texture;          // sRGB
+  TextureRef metallic_roughness_texture;  // linear: G roughness, B metallic
+  TextureRef normal_texture;              // tangent space (amount = scale)
+  TextureRef occlusion_texture;           // R (amount = strength)
+  TextureRef emissive_texture;            // sRGB
 };
 
 struct NodeTransform {
@@ -103,6 +144,8 @@ struct ModelAsset {
   std::vector<int> roots;  // the default scene's root nodes (all parentless nodes if none)
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<Image> images;
   std::vector<Skin> skins;
   std::vector<Vertex> vertices;
   std::vector<std::uint32_t> indices;
@@ -121,8 +164,8 @@ struct ModelAsset {
   std::size_t morph_weight_count() const;
 };
 
-// Reads a .glb or .gltf file (external buffers next to a .gltf are allowed; data: URIs too;
-// images are not loaded). Every index, accessor range, joint, parent link and count is checked:
+// Reads a .glb or .gltf file (external buffers and images next to a .gltf are allowed; data:
+// URIs too); PNG, JPEG and WebP images are decoded (gltf_images.hpp). Every index, accessor range, joint, parent link and count is checked:
 // a hostile or truncated file is an Error "FILE: reason", never a crash. Caps: 1,000,000
 // vertices, 65,536 nodes, 256 joints per skin.
 Result<ModelAsset> load_model(const std::filesystem::path& path);

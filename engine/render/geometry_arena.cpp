@@ -9,7 +9,7 @@
 namespace tutti::render {
 
 // The vertex input bindings in model_renderer.cpp read this layout.
-static_assert(sizeof(model::Vertex) == 56);
+static_assert(sizeof(model::Vertex) == 72);
 
 Result<std::unique_ptr<GeometryArena>> GeometryArena::create(
     VulkanContext& context, std::span<const model::ModelAsset* const> models) {

@@ -46,7 +46,20 @@ std::vector<VkVertexInputAttributeDescription> vertex_attributes() {
        static_cast<std::uint32_t>(offsetof(model::Vertex, joints))},
       {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT,
        static_cast<std::uint32_t>(offsetof(model::Vertex, weights))},
+      {4, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<std::uint32_t>(offsetof(model::Vertex, uv0))},
+      {5, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<std::uint32_t>(offsetof(model::Vertex, uv1))},
   };
+}
+
+// The lit pipeline a material is drawn with (DrawCandidate::pipeline).
+std::uint32_t pipeline_kind(const model::Material& m) {
+  const std::uint32_t alpha = m.alpha_mode == model::AlphaMode::mask    ? 1u
+                              : m.alpha_mode == model::AlphaMode::blend ? 2u
+                                                                        : 0u;
+  const bool textured = m.base_color_texture.present() || m.metallic_roughness_texture.present() ||
+                        m.normal_texture.present() || m.occlusion_texture.present() ||
+                        m.emissive_texture.present();
+  return alpha * 2 + (textured ? 1u : 0u);
 }
 
 // Closer than this, a primitive is judged as if this close (its sphere may hold the eye).
@@ -105,6 +118,9 @@ Result<std::unique_ptr<ModelRenderer>> ModelRenderer::create(
   Result<std::unique_ptr<ShadowMap>> shadow = ShadowMap::create(context, options.shadow_map_size);
   if (!shadow) return shadow.error();
   renderer->shadow_map_ = std::move(*shadow);
+  Result<std::unique_ptr<MaterialTable>> materials = MaterialTable::create(context, models);
+  if (!materials) return materials.error();
+  renderer->materials_ = std::move(*materials);
 
   const VkDescriptorSetLayoutBinding bindings[] = {
       {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kDrawStages, nullptr},
@@ -145,8 +161,9 @@ Result<std::unique_ptr<ModelRenderer>> ModelRenderer::create(
   const VkPushConstantRange push{kDrawStages, 0, sizeof(DrawConstants)};
   VkPipelineLayoutCreateInfo layout_info =
       vk_struct<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-  layout_info.setLayoutCount = 1;
-  layout_info.pSetLayouts = &set_layout;
+  const VkDescriptorSetLayout set_layouts[] = {set_layout, renderer->materials_->layout()};
+  layout_info.setLayoutCount = 2;
+  layout_info.pSetLayouts = set_layouts;
   layout_info.pushConstantRangeCount = 1;
   layout_info.pPushConstantRanges = &push;
   VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -156,6 +173,9 @@ Result<std::unique_ptr<ModelRenderer>> ModelRenderer::create(
   }
   renderer->layout_ = DeviceHandle<VkPipelineLayout>(device, layout, vkDestroyPipelineLayout);
 
+  for (const model::ModelAsset* asset : models) {
+    for (const model::Material& m : asset->materials) renderer->lit_needed_[pipeline_kind(m)] = true;
+  }
   renderer->color_format_ = target.color_format();
   renderer->depth_format_ = target.depth_format();
   renderer->samples_ = target.samples();
@@ -202,12 +222,20 @@ Status ModelRenderer::build_pipelines(std::span<const std::uint32_t> lit_vert,
   lit.depth_format = depth_format_;
   lit.samples = samples_;
   lit.layout = layout_.get();
-  lit.fragment_constants = {shadow_taps_};
-  Result<DeviceHandle<VkPipeline>> lit_pipeline = create_graphics_pipeline(device, lit);
-  if (!lit_pipeline) return lit_pipeline.error();
+  std::array<DeviceHandle<VkPipeline>, 6> lit_pipelines;
+  for (std::uint32_t kind = 0; kind < lit_pipelines.size(); ++kind) {
+    if (!lit_needed_[kind]) continue;
+    PipelineDescription variant = lit;
+    variant.fragment_constants = {shadow_taps_, kind / 2, kind % 2};
+    variant.alpha_blend = kind / 2 == 2;
+    Result<DeviceHandle<VkPipeline>> pipeline = create_graphics_pipeline(device, variant);
+    if (!pipeline) return pipeline.error();
+    lit_pipelines[kind] = std::move(*pipeline);
+  }
 
   PipelineDescription shadow_pass = lit;
   shadow_pass.vertex_spirv = shadow_vert;
+  shadow_pass.attributes.resize(4);  // shadow.vert reads no UVs
   shadow_pass.fragment_spirv = {};
   shadow_pass.fragment_constants = {};
   shadow_pass.color_format = VK_FORMAT_UNDEFINED;
@@ -216,7 +244,7 @@ Status ModelRenderer::build_pipelines(std::span<const std::uint32_t> lit_vert,
   shadow_pass.depth_bias = true;
   Result<DeviceHandle<VkPipeline>> shadow_pipeline = create_graphics_pipeline(device, shadow_pass);
   if (!shadow_pipeline) return shadow_pipeline.error();
-  lit_pipeline_ = std::move(*lit_pipeline);
+  lit_pipelines_ = std::move(lit_pipelines);
   shadow_pipeline_ = std::move(*shadow_pipeline);
   return Status::success();
 }
@@ -346,7 +374,9 @@ Status ModelRenderer::record(const RecordingFrame& frame, FrameTarget& target,
           c.material = {m.metallic, m.roughness, 0.0f, 0.0f};
           c.emissive = glm::vec4(m.emissive, 0.0f);
           c.flags = m.double_sided ? 1u : 0u;
+          draw.pipeline = pipeline_kind(m);
         }
+        draw.material = materials_->set(instance.model, primitive.material);
         draw.lods = &primitive_lods;
         draw.casts_shadows = instance.casts_shadows;
         draw.first_index = range.first_index;
@@ -410,12 +440,26 @@ Status ModelRenderer::record(const RecordingFrame& frame, FrameTarget& target,
   for (const detail::Draw& d : main_draws_) stats_.main_triangles += d.index_count / 3;
   for (const detail::Draw& d : shadow_draws_) stats_.shadow_triangles += d.index_count / 3;
 
+  // Blended primitives after everything else, the farthest first.
+  blended_draws_.clear();
+  const auto opaque_end = std::stable_partition(
+      main_draws_.begin(), main_draws_.end(),
+      [&](const detail::Draw& d) { return !candidates_[d.candidate].blended(); });
+  blended_draws_.assign(opaque_end, main_draws_.end());
+  main_draws_.erase(opaque_end, main_draws_.end());
+  std::stable_sort(blended_draws_.begin(), blended_draws_.end(),
+                   [&](const detail::Draw& a, const detail::Draw& b) {
+                     return glm::distance(candidates_[a.candidate].bound.center, camera.position) >
+                            glm::distance(candidates_[b.candidate].bound.center, camera.position);
+                   });
+
   shadow_map_->begin(commands);
-  record_draws(commands, shadow_pipeline_.get(), shadow_draws_);
+  record_draws(commands, shadow_draws_, true);
   shadow_map_->end(commands);
 
   target.begin_main_pass(clear);
-  record_draws(commands, lit_pipeline_.get(), main_draws_);
+  record_draws(commands, main_draws_, false);
+  record_draws(commands, blended_draws_, false);
   target.end_main_pass();
   return Status::success();
 }
@@ -446,11 +490,22 @@ void ModelRenderer::select_draws(Pass pass, const glm::mat4& view_projection,
   }
 }
 
-void ModelRenderer::record_draws(VkCommandBuffer commands, VkPipeline pipeline,
-                                 const std::vector<detail::Draw>& draws) const {
-  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+void ModelRenderer::record_draws(VkCommandBuffer commands, const std::vector<detail::Draw>& draws,
+                                 bool shadow_pass) const {
+  if (shadow_pass) vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, shadow_pipeline_.get());
+  VkDescriptorSet bound = VK_NULL_HANDLE;
+  std::uint32_t pipeline = 6;  // none yet
   for (const detail::Draw& draw : draws) {
     const detail::DrawCandidate& candidate = candidates_[draw.candidate];
+    if (!shadow_pass && candidate.pipeline != pipeline) {
+      pipeline = candidate.pipeline;
+      vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, lit_pipelines_[pipeline].get());
+    }
+    if (!shadow_pass && candidate.material != bound) {
+      bound = candidate.material;
+      vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 1, 1,
+                              &bound, 0, nullptr);
+    }
     vkCmdPushConstants(commands, layout_.get(), kDrawStages, 0, sizeof(DrawConstants),
                        &candidate.constants);
     vkCmdDrawIndexed(commands, draw.index_count, 1, draw.first_index, candidate.vertex_offset, 0);

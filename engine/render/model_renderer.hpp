@@ -1,7 +1,8 @@
 #pragma once
 // ModelRenderer: draws posed glTF models (model::ModelAsset + model::ModelPose) into a
 // FrameTarget with a shadowed key light, a fill light and hemisphere ambient, metallic-roughness
-// materials, GPU skinning and morph targets. Per frame it computes every node's world matrix and
+// materials with their textures (material_table.hpp; alpha mask and blend), GPU skinning and
+// morph targets. Per frame it computes every node's world matrix and
 // every joint matrix on the CPU, writes them (and the morph weights) into this frame's host-visible
 // buffers, culls every primitive against the light's and the camera's frusta, picks each one's
 // level of detail (mesh_lod.hpp), records the shadow pass, then the main pass.
@@ -14,6 +15,7 @@
 // Deterministic: the same instances, camera and lighting give the same pixels. The models and
 // the target's formats and sample count are fixed at create(); the poses may change every frame.
 
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -25,6 +27,7 @@
 #include <tutti/render/device_memory.hpp>
 #include <tutti/render/frame_target.hpp>
 #include <tutti/render/geometry_arena.hpp>
+#include <tutti/render/material_table.hpp>
 #include <tutti/render/mesh_lod.hpp>
 #include <tutti/render/shadow_map.hpp>
 #include <tutti/render/vulkan_context.hpp>
@@ -88,6 +91,10 @@ struct DrawCandidate {
   std::int32_t vertex_offset = 0;
   BoundingSphere bound;  // world space
   bool casts_shadows = true;
+  VkDescriptorSet material = VK_NULL_HANDLE;  // MaterialTable::set
+  // The lit pipeline: alpha mode (0 opaque, 1 mask, 2 blend) × 2 + textured.
+  std::uint32_t pipeline = 0;
+  bool blended() const { return pipeline >= 4; }
 };
 struct Draw {
   std::uint32_t candidate = 0;
@@ -158,17 +165,21 @@ class ModelRenderer {
   // pixels_per_metre: at 1 m from `eye` when `perspective`, else everywhere.
   void select_draws(Pass pass, const glm::mat4& view_projection, float pixels_per_metre,
                     bool perspective, const glm::vec3& eye, std::vector<detail::Draw>& draws) const;
-  void record_draws(VkCommandBuffer commands, VkPipeline pipeline,
-                    const std::vector<detail::Draw>& draws) const;
+  // The shadow pipeline when `shadow_pass`, else each draw's lit pipeline and material.
+  void record_draws(VkCommandBuffer commands, const std::vector<detail::Draw>& draws,
+                    bool shadow_pass) const;
 
   VulkanContext& context_;
   std::vector<const model::ModelAsset*> models_;
   std::unique_ptr<GeometryArena> geometry_;
   std::unique_ptr<ShadowMap> shadow_map_;
+  std::unique_ptr<MaterialTable> materials_;
   DeviceHandle<VkDescriptorSetLayout> set_layout_;
   DeviceHandle<VkDescriptorPool> pool_;
   DeviceHandle<VkPipelineLayout> layout_;
-  DeviceHandle<VkPipeline> lit_pipeline_;
+  // Lit pipelines by DrawCandidate::pipeline; only the kinds the models use are built.
+  std::array<DeviceHandle<VkPipeline>, 6> lit_pipelines_;
+  std::array<bool, 6> lit_needed_{true, false, false, false, false, false};
   DeviceHandle<VkPipeline> shadow_pipeline_;
   VkFormat color_format_ = VK_FORMAT_UNDEFINED;
   VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
@@ -180,6 +191,7 @@ class ModelRenderer {
   std::vector<glm::mat4> world_;
   std::vector<detail::DrawCandidate> candidates_;
   std::vector<detail::Draw> main_draws_;
+  std::vector<detail::Draw> blended_draws_;
   std::vector<detail::Draw> shadow_draws_;
   float lod_pixel_error_ = 1.0f;
   std::uint32_t shadow_taps_ = 1;

@@ -26,6 +26,8 @@ struct PipelineDescription {
   VkFormat depth_format = VK_FORMAT_UNDEFINED;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   bool depth_bias = false;  // constant + slope bias (shadow maps), set dynamically
+  // Alpha blending over what is drawn (straight alpha), without writing depth: glTF BLEND.
+  bool alpha_blend = false;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   // 32-bit specialization constants of the fragment shader, constant_id = index (compile-time
   // choices without a run-time branch: lavapipe runs both sides of a branch it cannot prove

@@ -1,5 +1,6 @@
-// Golden images: the piano close-up and the brass-quartet wide shot rendered by `tutti render
-// --still` on lavapipe, compared with the PNGs committed in tests/data/golden/. Tolerance: a
+// Golden images: the piano close-up, the brass-quartet wide shot and a textured character (a
+// Blender-made fixture with a PNG checker on its base colour, tests/data/characters/) rendered by
+// `tutti render --still` on lavapipe, compared with the PNGs committed in tests/data/golden/. Tolerance: a
 // channel may differ by at most 24 codes, on at most 0.5 % of the pixels (rasterisation rules at
 // edges, LLVM versions), and the mean absolute difference over all channels must stay below 0.5
 // codes. Regenerate after an intended change with TUTTI_UPDATE_GOLDEN=1 (the test then writes
@@ -12,6 +13,8 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include <tutti/cli/render_command.hpp>
 #include <tutti/render/vulkan_context.hpp>
@@ -35,17 +38,12 @@ struct Golden {
 
 class RenderGoldenTest : public ::testing::TestWithParam<Golden> {};
 
-TEST_P(RenderGoldenTest, MatchesTheCommittedImage) {
-  auto devices = render::list_vulkan_devices();
-  if (!devices || devices->empty()) GTEST_SKIP() << "SKIPPED: no Vulkan device";
-  const Golden& golden = GetParam();
+// Renders `o` (a still) and compares it with tests/data/golden/`file`.
+void expect_golden(RenderOptions o, const char* file) {
   const std::filesystem::path source(TUTTI_SOURCE_DIR);
   const std::filesystem::path out =
       std::filesystem::temp_directory_path() /
-      ("tutti-golden-" + std::to_string(getpid()) + "-" + golden.file);
-  RenderOptions o;
-  o.scene = source / "content" / "scenes" / golden.scene;
-  o.still = golden.time_s;
+      ("tutti-golden-" + std::to_string(getpid()) + "-" + file);
   o.output = out;
   o.size = "640x360";
   o.validate = true;  // any validation message fails the render
@@ -53,7 +51,7 @@ TEST_P(RenderGoldenTest, MatchesTheCommittedImage) {
   std::ostringstream stdout_text;
   std::ostringstream stderr_text;
   ASSERT_EQ(run_render(o, stdout_text, stderr_text), 0) << stderr_text.str();
-  const std::filesystem::path committed = source / "tests" / "data" / "golden" / golden.file;
+  const std::filesystem::path committed = source / "tests" / "data" / "golden" / file;
   if (const char* update = std::getenv("TUTTI_UPDATE_GOLDEN");
       update != nullptr && *update == '1') {
     std::filesystem::create_directories(committed.parent_path());
@@ -91,8 +89,51 @@ TEST_P(RenderGoldenTest, MatchesTheCommittedImage) {
   EXPECT_LE(static_cast<double>(off_pixels), 0.005 * pixels)
       << off_pixels << " pixels differ by more than 24 codes (worst " << worst << ")";
   EXPECT_LT(mean, 0.5) << "mean absolute difference " << mean << " codes";
-  std::printf("%s: mean difference %.4f codes, worst %d, %zu pixels over 24\n", golden.file, mean,
+  std::printf("%s: mean difference %.4f codes, worst %d, %zu pixels over 24\n", file, mean,
               worst, off_pixels);
+}
+
+TEST_P(RenderGoldenTest, MatchesTheCommittedImage) {
+  auto devices = render::list_vulkan_devices();
+  if (!devices || devices->empty()) GTEST_SKIP() << "SKIPPED: no Vulkan device";
+  const Golden& golden = GetParam();
+  RenderOptions o;
+  o.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / golden.scene;
+  o.still = golden.time_s;
+  expect_golden(o, golden.file);
+}
+
+// A user's character with a texture renders with it: the Blender fixture's red and cream checker
+// (8 squares round each tube), no mapping file, playing Trumpet 1 of the quartet.
+TEST(RenderGolden, ATexturedCharacterShowsItsTexture) {
+  auto devices = render::list_vulkan_devices();
+  if (!devices || devices->empty()) GTEST_SKIP() << "SKIPPED: no Vulkan device";
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
+  const std::filesystem::path source(TUTTI_SOURCE_DIR);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("tutti-golden-characters-" + std::to_string(getpid()));
+  const std::string make = "blender -b --factory-startup --python '" +
+                           (source / "tests/data/characters/make_fixtures.py").string() +
+                           "' -- '" + dir.string() + "' > /dev/null 2>&1";
+  ASSERT_EQ(std::system(make.c_str()), 0) << make;
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source / "content/scenes/quartet.json"));
+  scene["music"] = (source / "content/music/quartet.musicxml").string();
+  nlohmann::json player = scene["performers"][0];
+  player["character"] = "rigify_a_textured.glb";
+  scene["performers"] = nlohmann::json::array({player});
+  const auto& at = player["position_m"];
+  const double x = at[0].get<double>(), z = at[2].get<double>();
+  scene["cameras"] = nlohmann::json::array(
+      {{{"name", "front"}, {"position_m", {x + 0.4, 1.7, z + 2.4}}, {"target_m", {x, 1.35, z}},
+        {"fov_deg", 40}}});
+  scene.erase("shots");
+  std::ofstream(dir / "textured.json") << scene.dump(1);
+  RenderOptions o;
+  o.scene = dir / "textured.json";
+  o.camera = "front";
+  o.still = "4";
+  expect_golden(o, "textured_character.png");
+  std::filesystem::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, RenderGoldenTest,

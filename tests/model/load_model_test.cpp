@@ -9,6 +9,9 @@
 #include <numbers>
 
 #include "gltf_test_builder.hpp"
+#include <tutti/image/png.hpp>
+#include <webp/encode.h>
+#include <webp/types.h>
 #include <tutti/model/model_asset.hpp>
 #include "testdata.hpp"
 
@@ -354,26 +357,104 @@ TEST(LoadModel, ReadsExternalBuffersNextToTheGltfFile) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(LoadModel, NeverLoadsImages) {
+// A texture as a user's model carries it: a 2 x 2 PNG (red, green / blue, white), embedded, on
+// the base colour with KHR_texture_transform, the quad's UVs read from TEXCOORD_0.
+TEST(LoadModel, TexturesAreDecodedWithTheirUvsAndTransforms) {
   GltfBuilder b = quad();
-  // An image file that does not exist, and an embedded "PNG" that is not one: neither matters.
-  b.json["images"] =
-      nlohmann::json::array({{{"uri", "missing_texture.png"}},
-                             {{"uri", "data:image/png;base64," + test::base64({1, 2, 3, 4, 5})}}});
-  b.json["textures"] = nlohmann::json::array({{{"source", 0}}, {{"source", 1}}});
-  b.json["materials"] =
-      nlohmann::json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+  const std::vector<std::uint8_t> pixels{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 128};
+  const std::vector<std::uint8_t> png = image::encode_png(pixels, 2, 2, 4);
+  ASSERT_FALSE(png.empty());
+  b.json["images"] = nlohmann::json::array(
+      {{{"uri", "data:image/png;base64," + test::base64(png)}, {"name", "checker"}}});
+  b.json["samplers"] = nlohmann::json::array({{{"magFilter", 9728}, {"wrapS", 33071}}});
+  b.json["textures"] = nlohmann::json::array({{{"source", 0}, {"sampler", 0}}});
+  b.json["materials"] = nlohmann::json::array(
+      {{{"pbrMetallicRoughness",
+         {{"baseColorTexture",
+           {{"index", 0},
+            {"extensions",
+             {{"KHR_texture_transform",
+               {{"offset", {0.5, 0.25}}, {"rotation", 1.5}, {"scale", {2.0, 3.0}}}}}}}}}},
+        {"normalTexture", {{"index", 0}, {"texCoord", 1}, {"scale", 0.5}}},
+        {"alphaMode", "MASK"},
+        {"alphaCutoff", 0.3}}});
+  b.json["extensionsUsed"] = {"KHR_texture_transform"};
   b.json["meshes"][0]["primitives"][0]["material"] = 0;
+  const std::vector<float> uvs{0, 0, 1, 0, 1, 1, 0, 1};
+  b.json["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] =
+      b.add_data(uvs, test::kFloat, "VEC2");
+  b.json["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] =
+      b.add_data(uvs, test::kFloat, "VEC2");
   const ModelAsset asset = must_load(b.gltf_bytes(), "textured.gltf");
-  EXPECT_EQ(asset.materials.size(), 1u);
-  const std::filesystem::path dir = test::unique_temp_path("images");
-  std::filesystem::create_directories(dir);
-  {
-    std::ofstream gltf(dir / "textured.gltf");
-    gltf << b.gltf_text();
-  }
-  EXPECT_TRUE(load_model(dir / "textured.gltf").ok());
-  std::filesystem::remove_all(dir);
+  ASSERT_EQ(asset.images.size(), 1u);
+  EXPECT_EQ(asset.images[0].mime_type, "image/png");
+  EXPECT_EQ(asset.images[0].width, 2u);
+  EXPECT_EQ(asset.images[0].height, 2u);
+  EXPECT_EQ(asset.images[0].rgba, pixels);
+  EXPECT_EQ(asset.images[0].encoded, png);
+  ASSERT_EQ(asset.textures.size(), 1u);
+  EXPECT_EQ(asset.textures[0].image, 0);
+  EXPECT_EQ(asset.textures[0].mag_filter, 9728);
+  EXPECT_EQ(asset.textures[0].wrap_s, 33071);
+  EXPECT_EQ(asset.textures[0].wrap_t, 10497);
+  const Material& m = asset.materials.at(0);
+  EXPECT_EQ(m.base_color_texture.texture, 0);
+  EXPECT_TRUE(m.base_color_texture.transformed);
+  EXPECT_FLOAT_EQ(m.base_color_texture.offset.x, 0.5f);
+  EXPECT_FLOAT_EQ(m.base_color_texture.offset.y, 0.25f);
+  EXPECT_FLOAT_EQ(m.base_color_texture.rotation, 1.5f);
+  EXPECT_FLOAT_EQ(m.base_color_texture.scale.y, 3.0f);
+  EXPECT_EQ(m.normal_texture.texcoord, 1);
+  EXPECT_FLOAT_EQ(m.normal_texture.amount, 0.5f);
+  EXPECT_EQ(m.alpha_mode, AlphaMode::mask);
+  EXPECT_FLOAT_EQ(m.alpha_cutoff, 0.3f);
+  ASSERT_EQ(asset.vertices.size(), 4u);
+  EXPECT_EQ(asset.vertices[2].uv0, glm::vec2(1.0f, 1.0f));
+  EXPECT_EQ(asset.vertices[3].uv1, glm::vec2(0.0f, 1.0f));
+}
+
+// EXT_texture_webp: the WebP image (encoded here by libwebp's own encoder, lossless) is the one
+// used, the PNG `source` only a fallback for readers without WebP.
+TEST(LoadModel, WebpTexturesAreReadThroughTheirExtension) {
+  GltfBuilder b = quad();
+  const std::vector<std::uint8_t> pixels{10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 255, 100, 110, 120, 255};
+  std::uint8_t* encoded = nullptr;
+  const std::size_t size = WebPEncodeLosslessRGBA(pixels.data(), 2, 2, 8, &encoded);
+  ASSERT_GT(size, 0u);
+  const std::vector<std::uint8_t> webp(encoded, encoded + size);
+  WebPFree(encoded);
+  const std::vector<std::uint8_t> fallback = image::encode_png(std::vector<std::uint8_t>(16, 255), 2, 2, 4);
+  b.json["images"] = nlohmann::json::array({{{"uri", "data:image/png;base64," + test::base64(fallback)}},
+                                            {{"uri", "data:image/webp;base64," + test::base64(webp)}}});
+  b.json["textures"] = nlohmann::json::array(
+      {{{"source", 0}, {"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}}});
+  b.json["extensionsUsed"] = {"EXT_texture_webp"};
+  b.json["extensionsRequired"] = {"EXT_texture_webp"};
+  const ModelAsset asset = must_load(b.gltf_bytes(), "webp.gltf");
+  ASSERT_EQ(asset.textures.size(), 1u);
+  ASSERT_EQ(asset.textures[0].image, 1);
+  const Image& image = asset.images[1];
+  EXPECT_EQ(image.mime_type, "image/webp");
+  EXPECT_EQ(image.rgba, pixels);
+}
+
+// An image that cannot be read is a one-line error naming it: a file that is not there, bytes
+// that are not the PNG they claim.
+TEST(LoadModel, ImagesThatCannotBeReadAreOneLineErrors) {
+  GltfBuilder b = quad();
+  b.json["images"] = nlohmann::json::array({{{"uri", "missing_texture.png"}}});
+  b.json["textures"] = nlohmann::json::array({{{"source", 0}}});
+  auto missing = load_model_from_memory(b.gltf_bytes(), "textured.gltf");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().message.find("image 0"), std::string::npos) << missing.error().message;
+  EXPECT_EQ(missing.error().message.find('\n'), std::string::npos);
+  b.json["images"] = nlohmann::json::array(
+      {{{"uri", "data:image/png;base64," + test::base64({0x89, 'P', 'N', 'G', 13, 10, 26, 10, 1, 2})}}});
+  auto broken = load_model_from_memory(b.gltf_bytes(), "textured.gltf");
+  ASSERT_FALSE(broken.ok());
+  EXPECT_NE(broken.error().message.find("textured.gltf: image 0: broken PNG image"),
+            std::string::npos)
+      << broken.error().message;
 }
 
 TEST(LoadModel, LoadsTheGeneratedPiano) {

@@ -20,6 +20,15 @@
 namespace tutti::render {
 namespace {
 
+model::Material plain_material(const char* name, glm::vec4 color, float metallic, float roughness) {
+  model::Material m;
+  m.name = name;
+  m.base_color = color;
+  m.metallic = metallic;
+  m.roughness = roughness;
+  return m;
+}
+
 constexpr std::uint32_t kWidth = 320;
 constexpr std::uint32_t kHeight = 240;
 
@@ -76,8 +85,8 @@ int add_node(model::ModelAsset& asset, const std::string& name, int mesh, int pa
 model::ModelAsset floor_and_cube() {
   model::ModelAsset asset;
   asset.source = "floor_and_cube";
-  asset.materials.push_back({"floor", {0.5f, 0.5f, 0.5f, 1.0f}, 0.0f, 0.8f, {}, false});
-  asset.materials.push_back({"red", {0.8f, 0.05f, 0.05f, 1.0f}, 0.0f, 0.5f, {}, false});
+  asset.materials.push_back(plain_material("floor", {0.5f, 0.5f, 0.5f, 1.0f}, 0.0f, 0.8f));
+  asset.materials.push_back(plain_material("red", {0.8f, 0.05f, 0.05f, 1.0f}, 0.0f, 0.5f));
   model::Mesh floor{"floor", {add_box(asset, {-5, -0.1f, -5}, {5, 0, 5}, 0)}, {}, {}};
   model::Mesh cube{
       "cube", {add_box(asset, {-0.25f, -0.25f, -0.25f}, {0.25f, 0.25f, 0.25f}, 1)}, {}, {}};
@@ -91,7 +100,7 @@ model::ModelAsset floor_and_cube() {
 model::ModelAsset skinned_bar() {
   model::ModelAsset asset;
   asset.source = "skinned_bar";
-  asset.materials.push_back({"white", {0.9f, 0.9f, 0.9f, 1.0f}, 0.0f, 0.5f, {}, false});
+  asset.materials.push_back(plain_material("white", {0.9f, 0.9f, 0.9f, 1.0f}, 0.0f, 0.5f));
   model::Primitive bottom = add_box(asset, {-0.05f, 0.0f, -0.05f}, {0.05f, 0.5f, 0.05f}, 0);
   model::Primitive top = add_box(asset, {-0.05f, 0.5f, -0.05f}, {0.05f, 1.0f, 0.05f}, 0);
   for (std::uint32_t v = 0; v < asset.vertices.size(); ++v) {
@@ -116,7 +125,7 @@ model::ModelAsset skinned_bar() {
 model::ModelAsset dense_sphere(int segments, int rings) {
   model::ModelAsset asset;
   asset.source = "dense_sphere";
-  asset.materials.push_back({"white", {0.9f, 0.9f, 0.9f, 1.0f}, 0.0f, 0.5f, {}, false});
+  asset.materials.push_back(plain_material("white", {0.9f, 0.9f, 0.9f, 1.0f}, 0.0f, 0.5f));
   model::Primitive p;
   p.material = 0;
   for (int r = 0; r <= rings; ++r) {
@@ -459,7 +468,7 @@ TEST_F(ModelRendererTest, HotReloadedShadersReplaceThePipelines) {
   // An edited fragment shader (everything emissive green) changes it.
   std::ifstream in(dir / "lit.frag");
   std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string last = "out_color = vec4(tone_map(color * frame.sky_color.w), 1.0);";
+  const std::string last = "out_color = vec4(tone_map(color * frame.sky_color.w), alpha);";
   ASSERT_NE(source.find(last), std::string::npos);
   source.replace(source.find(last), last.size(), "out_color = vec4(0.0, 1.0, 0.0, 1.0);");
   const std::filesystem::path include[] = {dir};

@@ -163,9 +163,9 @@ TEST(ShaderCompilerTest, LitShadersForModelRenderer) {
   EXPECT_TRUE(lit->lit_vert == words(shaders::lit_vert()));
   EXPECT_TRUE(lit->lit_frag == words(shaders::lit_frag()));
   EXPECT_TRUE(lit->shadow_vert == words(shaders::shadow_vert()));
-  const std::vector<fs::path> expected = {shader_dir() / "frame_data.glsl",
-                                          shader_dir() / "deform.glsl", shader_dir() / "lit.vert",
-                                          shader_dir() / "lit.frag", shader_dir() / "shadow.vert"};
+  const std::vector<fs::path> expected = {
+      shader_dir() / "frame_data.glsl", shader_dir() / "deform.glsl", shader_dir() / "lit.vert",
+      shader_dir() / "material.glsl",   shader_dir() / "lit.frag",    shader_dir() / "shadow.vert"};
   EXPECT_EQ(lit->files, expected);
 
   TempDir empty;

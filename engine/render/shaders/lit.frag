@@ -3,13 +3,21 @@
 // Metallic-roughness shading: a shadowed key light, a fill light, hemisphere ambient with a
 // cheap specular term, filmic tone mapping. Writes linear light; the sRGB attachment encodes it.
 #include "frame_data.glsl"
+#include "material.glsl"
 
 layout(set = 0, binding = 4) uniform sampler2DShadow shadow_map;
 // Shadow-map comparisons per pixel (ModelRendererOptions::shadow_taps): 1 or 4.
 layout(constant_id = 0) const uint SHADOW_TAPS = 1u;
+// The pipeline's material kind (model_renderer.cpp): alpha 0 opaque, 1 mask (discards: early
+// depth tests are off for it alone), 2 blend; textured 0 reads no texture at all (lavapipe
+// samples on the CPU).
+layout(constant_id = 1) const uint ALPHA_MODE = 0u;
+layout(constant_id = 2) const uint TEXTURED = 0u;
 
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_world_normal;
+layout(location = 2) in vec2 in_uv0;
+layout(location = 3) in vec2 in_uv1;
 layout(location = 0) out vec4 out_color;
 
 const float PI = 3.14159265;
@@ -74,15 +82,35 @@ vec3 tone_map(vec3 x) {
 }
 
 void main() {
+  vec4 base = draw.base_color;
+  vec4 metal_rough = vec4(1.0);
+  float occlusion = 1.0;
+  vec3 emissive = draw.emissive.rgb;
+  if (TEXTURED == 1u) {
+    vec4 texel = texture(base_color_map, slot_uv(0, in_uv0, in_uv1));
+    base *= vec4(srgb_to_linear(texel.rgb), texel.a);
+    metal_rough = texture(metallic_roughness_map, slot_uv(1, in_uv0, in_uv1));
+    occlusion = mix(1.0, texture(occlusion_map, slot_uv(3, in_uv0, in_uv1)).r, material.params.y);
+    emissive *= srgb_to_linear(texture(emissive_map, slot_uv(4, in_uv0, in_uv1)).rgb);
+  }
+  // MASK: below the cutoff nothing is drawn; OPAQUE ignores alpha; BLEND keeps it.
+  if (ALPHA_MODE == 1u && base.a < material.params.z) discard;
+  float alpha = ALPHA_MODE == 2u ? base.a : 1.0;
+
   vec3 n = normalize(in_world_normal);
   // Nothing is culled (mirrored nodes flip the winding), so a back face is shaded as the
   // side of the surface the camera sees.
   if (!gl_FrontFacing) n = -n;
+  if (TEXTURED == 1u && material.params.x != 0.0) {
+    vec2 normal_uv = slot_uv(2, in_uv0, in_uv1);
+    n = perturbed_normal(n, in_world_position, normal_uv, texture(normal_map, normal_uv).rgb,
+                         material.params.x);
+  }
   vec3 v = normalize(frame.camera_position.xyz - in_world_position);
 
-  vec3 albedo = draw.base_color.rgb;
-  float metallic = clamp(draw.material.x, 0.0, 1.0);
-  float roughness = clamp(draw.material.y, 0.045, 1.0);
+  vec3 albedo = base.rgb;
+  float metallic = clamp(draw.material.x * metal_rough.b, 0.0, 1.0);
+  float roughness = clamp(draw.material.y * metal_rough.g, 0.045, 1.0);
 
   float key_n_dot_l = max(dot(n, -frame.key_direction.xyz), 0.0);
   vec3 color = direct_light(n, v, -frame.key_direction.xyz, frame.key_color.rgb, albedo,
@@ -98,8 +126,8 @@ void main() {
   vec3 r = reflect(-v, n);
   vec3 reflected = mix(frame.ground_color.rgb, frame.sky_color.rgb, r.y * 0.5 + 0.5);
   vec3 f = fresnel_schlick(max(dot(n, v), 0.0), f0) * (1.0 - roughness * 0.7);
-  color += ambient * albedo * (1.0 - metallic) + reflected * f * 2.0;
-  color += draw.emissive.rgb;
+  color += (ambient * albedo * (1.0 - metallic) + reflected * f * 2.0) * occlusion;
+  color += emissive;
 
-  out_color = vec4(tone_map(color * frame.sky_color.w), 1.0);
+  out_color = vec4(tone_map(color * frame.sky_color.w), alpha);
 }

@@ -8,7 +8,9 @@
 # renamed the Mixamo way (with the "mixamorig:" namespace, without it, with a "rig_" prefix) and
 # the Unreal way; in metres, or in centimetres under a 0.01 root scale (as FBX imports are); in
 # the meta-rig's own A-pose or turned into a T-pose; one as VRM 1.0 (a VRMC_vrm humanoid table
-# added to the exported file). Writes OUT_DIR/fixtures.json: every file with what it should be.
+# added to the exported file); one with a PNG base-colour texture (a red and cream checker, 8
+# squares round each tube and 4 along it). Writes OUT_DIR/fixtures.json: every file with what it
+# should be.
 import json
 import math
 import os
@@ -116,12 +118,35 @@ def fresh_rig(pose):
     return rig
 
 
-def skinned_body(rig):
-    """One tapered 8-sided tube per bone, every vertex weighted 1 to its bone."""
+def checker_material():
+    """A material whose base colour is a 64 x 64 PNG checker (red and cream, 8 x 8 squares)."""
+    image = bpy.data.images.new("checker", 64, 64)
+    pixels = []
+    for y in range(64):
+        for x in range(64):
+            red = ((x // 8) + (y // 8)) % 2 == 0
+            pixels += [0.8, 0.1, 0.1, 1.0] if red else [0.95, 0.9, 0.75, 1.0]
+    image.pixels = pixels
+    image.file_format = "PNG"
+    image.pack()
+    material = bpy.data.materials.new("checker")
+    material.use_nodes = True
+    nodes = material.node_tree.nodes
+    texture = nodes.new("ShaderNodeTexImage")
+    texture.image = image
+    material.node_tree.links.new(texture.outputs["Color"],
+                                 nodes["Principled BSDF"].inputs["Base Color"])
+    return material
+
+
+def skinned_body(rig, textured=False):
+    """One tapered 8-sided tube per bone, every vertex weighted 1 to its bone; with `textured`,
+    UVs round (u) and along (v) each tube and the checker material."""
     mesh = bpy.data.meshes.new("body")
     body = bpy.data.objects.new("body", mesh)
     bpy.context.collection.objects.link(body)
     bm = bmesh.new()
+    uv_layer = bm.loops.layers.uv.new("UVMap") if textured else None
     groups = {}
     for bone in rig.data.bones:
         head, tail = bone.head_local, bone.tail_local
@@ -140,7 +165,12 @@ def skinned_body(rig):
                 ring.append(bm.verts.new(centre + r * (math.cos(a) * u + math.sin(a) * v)))
             rings.append(ring)
         for k in range(8):
-            bm.faces.new((rings[0][k], rings[0][(k + 1) % 8], rings[1][(k + 1) % 8], rings[1][k]))
+            face = bm.faces.new((rings[0][k], rings[0][(k + 1) % 8], rings[1][(k + 1) % 8],
+                                 rings[1][k]))
+            if uv_layer is not None:
+                for loop, uv in zip(face.loops, ((k / 8, 0.0), ((k + 1) / 8, 0.0),
+                                                 ((k + 1) / 8, 0.5), (k / 8, 0.5))):
+                    loop[uv_layer].uv = uv
         groups[bone.name] = [vert for ring in rings for vert in ring]
     bm.verts.index_update()
     indices = {name: [vert.index for vert in verts] for name, verts in groups.items()}
@@ -150,6 +180,8 @@ def skinned_body(rig):
         body.vertex_groups.new(name=name).add(vertex_indices, 1.0, "REPLACE")
     body.parent = rig
     body.modifiers.new("Armature", "ARMATURE").object = rig
+    if textured:
+        mesh.materials.append(checker_material())
     return body
 
 
@@ -196,12 +228,13 @@ VARIANTS = [
     ("mixamo_plain_t", mixamo_name, "m", "T"),
     ("mixamo_rig_prefix_a", lambda n: "rig_" + mixamo_name(n), "m", "A"),
     ("unreal_cm_t", unreal_name, "cm", "T"),
+    ("rigify_a_textured", None, "m", "A"),
 ]
 
 listing = []
 for name, naming, units, pose in VARIANTS:
     rig = fresh_rig(pose)
-    body = skinned_body(rig)
+    body = skinned_body(rig, textured=name.endswith("_textured"))
     expected = {}
     for bone in rig.data.bones:
         expected[bone.name] = naming(bone.name) if naming else bone.name
@@ -213,6 +246,7 @@ for name, naming, units, pose in VARIANTS:
     path = os.path.join(OUT, name + ".glb")
     export(path)
     listing.append({"file": name + ".glb", "pose": pose, "units": units,
+                    "textured": name.endswith("_textured"),
                     "names": {rigify: ours for rigify, ours in expected.items()}})
     if name == "rigify_a":
         add_vrm_table(path, os.path.join(OUT, "rigify_a_vrm1.vrm"))
