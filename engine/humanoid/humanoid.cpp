@@ -256,10 +256,25 @@ class Recogniser {
     }
   }
 
+  // Up a limb: past helpers (twist, IK, end bones) and past a bone's later segments — Rigify's
+  // deform rig splits the upper arm, forearm, thigh and shin in two, "DEF-forearm.L.001" under
+  // "DEF-forearm.L": the first segment plays the role.
   int parent_skipping_helpers(int node) const {
     int p = s_.parent(node);
-    while (p >= 0 && s_.is_helper(p)) p = s_.parent(p);
+    while (p >= 0 && (s_.is_helper(p) || is_later_segment(p))) p = s_.parent(p);
     return p;
+  }
+
+  // A bone named as its parent with a number after it, on the same side.
+  bool is_later_segment(int node) const {
+    const int parent = s_.parent(node);
+    if (parent < 0 || trailing_number(node) < 1) return false;
+    const BoneName& own = s_.names[static_cast<std::size_t>(node)];
+    const BoneName& up = s_.names[static_cast<std::size_t>(parent)];
+    std::size_t digits = own.base.size();
+    while (digits > 0 && own.base[digits - 1] >= '0' && own.base[digits - 1] <= '9') --digits;
+    return own.side == up.side && !up.base.empty() && own.base.compare(0, digits, up.base) == 0 &&
+           digits == up.base.size();
   }
 
   // Up from the chest along children named spine / neck / head: the last one.

@@ -9,7 +9,8 @@
 # the Unreal way; in metres, or in centimetres under a 0.01 root scale (as FBX imports are); in
 # the meta-rig's own A-pose or turned into a T-pose; one as VRM 1.0 (a VRMC_vrm humanoid table
 # added to the exported file); one with a PNG base-colour texture (a red and cream checker, 8
-# squares round each tube and 4 along it). Writes OUT_DIR/fixtures.json: every file with what it
+# squares round each tube and 4 along it); one as Rigify's deform rig names and splits it
+# ("DEF-" names, each upper arm, forearm, thigh and shin in two segments). Writes OUT_DIR/fixtures.json: every file with what it
 # should be.
 import json
 import math
@@ -88,6 +89,22 @@ for s, side in (("L", "left"), ("R", "right")):
                         ("f_pinky", "Little")):
         for number, joint in (("01", "Proximal"), ("02", "Intermediate"), ("03", "Distal")):
             VRM_BONES[f"{finger}.{number}.{s}"] = side + vrm + joint
+
+
+def split_limbs(rig):
+    """Each upper arm, forearm, thigh and shin in two, as Rigify's deform rig has them
+    ("forearm.L" and "forearm.L.001" under it)."""
+    bpy.context.view_layer.objects.active = rig
+    bpy.ops.object.mode_set(mode="EDIT")
+    bones = rig.data.edit_bones
+    for bone in bones:
+        bone.select = bone.select_head = bone.select_tail = False
+    for limb in ("upper_arm", "forearm", "thigh", "shin"):
+        for side in ("L", "R"):
+            bone = bones[limb + "." + side]
+            bone.select = bone.select_head = bone.select_tail = True
+    bpy.ops.armature.subdivide(number_cuts=1)
+    bpy.ops.object.mode_set(mode="OBJECT")
 
 
 def fresh_rig(pose):
@@ -229,11 +246,14 @@ VARIANTS = [
     ("mixamo_rig_prefix_a", lambda n: "rig_" + mixamo_name(n), "m", "A"),
     ("unreal_cm_t", unreal_name, "cm", "T"),
     ("rigify_a_textured", None, "m", "A"),
+    ("rigify_def_split_a", lambda n: "DEF-" + n, "m", "A"),
 ]
 
 listing = []
 for name, naming, units, pose in VARIANTS:
     rig = fresh_rig(pose)
+    if "_split" in name:
+        split_limbs(rig)
     body = skinned_body(rig, textured=name.endswith("_textured"))
     expected = {}
     for bone in rig.data.bones:
