@@ -368,22 +368,34 @@ class Checker {
     const std::string who = name_of(world, performer);
     world_of(*piano, horn_world_);
     std::vector<glm::vec3> tips;
-    // A user's character plays with its own hands: its stand-in's fingertips and last joints.
+    // A user's hands play: a hand model's stand-in, else a user's character's own (its
+    // stand-in's fingertips and last joints).
     const auto* body =
         stage::posed_body(world.try_get<stage::PlacedModel>(rig.body), rig.body_retarget);
     if (body != nullptr) world_of(*body, body_world_);
+    const stage::PlacedModel* own = nullptr;
+    const stage::BodyNodes* own_nodes = nullptr;
+    if (rig.hands_retarget) {
+      own = &rig.hands_retarget->proxy;
+      own_nodes = &rig.hands_nodes;
+      world_of(*own, hand_world_);
+    } else if (rig.body_retarget && body != nullptr) {
+      own = body;
+      own_nodes = &rig.body_nodes;
+    }
     for (std::size_t side = 0; side < 2; ++side) {
       const auto* hand = world.try_get<stage::PlacedModel>(rig.hand_models[side]);
-      if (hand != nullptr) world_of(*hand, hand_world_);
+      if (hand != nullptr && own == nullptr) world_of(*hand, hand_world_);
       const std::size_t body_side = side == 0 ? 1 : 0;  // the rig's _r is its side 1
       // The fingertip and its last joint (-1 when the hand has none).
       const auto joints = [&](std::size_t f, glm::vec3& tip, glm::vec3& dip) {
-        if (rig.body_retarget && body != nullptr) {
-          const int t = rig.body_nodes.fingertips[body_side][f];
-          const int d = rig.body_nodes.fingers[body_side][f][2];
+        if (own != nullptr) {
+          const int t = own_nodes->fingertips[body_side][f];
+          const int d = own_nodes->fingers[body_side][f][2];
           if (t < 0 || d < 0) return false;
-          tip = origin(body_world_[static_cast<std::size_t>(t)]);
-          dip = origin(body_world_[static_cast<std::size_t>(d)]);
+          const std::vector<glm::mat4>& w = own == body ? body_world_ : hand_world_;
+          tip = origin(w[static_cast<std::size_t>(t)]);
+          dip = origin(w[static_cast<std::size_t>(d)]);
           return true;
         }
         if (hand == nullptr) return false;

@@ -142,15 +142,15 @@ Status SceneParser::parse_mapping(const json& object, const std::string& path, c
   const std::string where = join_path(path, key);
   const fs::path resolved = (base_dir_ / *written).lexically_normal();
   if (!is_file(resolved)) return reader_.error(where, "no such file \"" + *written + "\"");
-  // A character may be its model file itself: the stage recognises the humanoid in it
-  // (engine/humanoid); hands and instruments still need a mapping file.
+  // A character or a pianist's hands may be the model file itself: the stage recognises the
+  // humanoid or the hands in it (engine/humanoid); instruments still need a mapping file.
   const std::string extension = resolved.extension().string();
   if (extension == ".glb" || extension == ".gltf" || extension == ".vrm") {
-    if (expected != AssetKind::character) {
+    if (expected != AssetKind::character && expected != AssetKind::hand) {
       return reader_.error(where, "\"" + *written + "\" is a model; a " +
                                       std::string(asset_kind_name(expected)) +
-                                      " needs a mapping file (only characters are recognised "
-                                      "by themselves)");
+                                      " needs a mapping file (only characters and hands are "
+                                      "recognised by themselves)");
     }
     out = resolved;
     return {};

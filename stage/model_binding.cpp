@@ -83,6 +83,53 @@ Result<MappedModel> load_recognised(StageBuilder& builder, const std::filesystem
 
 }  // namespace
 
+Result<MappedModel> load_hands(StageBuilder& builder, const std::filesystem::path& file) {
+  const std::string extension = file.extension().string();
+  if (extension != ".glb" && extension != ".gltf" && extension != ".vrm") {
+    return load_mapped(builder, file, "");
+  }
+  auto model = builder.user_model(file);
+  if (!model) return model.error();
+  const model::ModelAsset& asset = builder.model(*model);
+  const humanoid::Humanoid h = humanoid::recognise(asset);
+  const std::string name = file.filename().string();
+  std::string missing;
+  for (const std::string_view role : scene::required_node_roles(scene::AssetKind::hand)) {
+    if (h.node(role) < 0) missing += (missing.empty() ? "" : ", ") + std::string(role);
+  }
+  if (!missing.empty()) {
+    return Error{name + ": not a pair of hands tutti can play: no " + missing + " (tutti rig " +
+                 name + " shows what was recognised)"};
+  }
+  std::vector<glm::mat4> world(asset.nodes.size());
+  model::compute_world_matrices(asset, model::rest_pose(asset), glm::mat4(1.0f), world);
+  const float hand = glm::distance(glm::vec3(world[static_cast<std::size_t>(h.node("hand_l"))][3]),
+                                   glm::vec3(world[static_cast<std::size_t>(h.node("middle_1_l"))][3]));
+  double scale = 0.0;
+  if (hand >= 5.0f && hand <= 25.0f) scale = 0.01;
+  if (hand >= 0.05f && hand <= 0.25f) scale = 1.0;
+  if (scale == 0.0) {
+    return Error{name + ": a hand of " + std::to_string(hand) +
+                 " units from wrist to middle knuckle: cannot tell its units (give a mapping "
+                 "file of kind hand with a scale)"};
+  }
+  scene::AssetMapping mapping;
+  mapping.source = name;
+  mapping.model = file;
+  mapping.kind = scene::AssetKind::hand;
+  mapping.scale = scale;
+  for (const std::string_view role : scene::node_roles(scene::AssetKind::hand)) {
+    const int node = h.node(role);
+    if (node >= 0) mapping.nodes.emplace_back(role, asset.nodes[static_cast<std::size_t>(node)].name);
+  }
+  std::sort(mapping.nodes.begin(), mapping.nodes.end());
+  MappedModel out;
+  out.model = *model;
+  out.correction = mapping_correction(mapping);
+  out.mapping = std::move(mapping);
+  return out;
+}
+
 Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::path& mapping_file,
                                 const std::string& generated_file) {
   MappedModel out;

@@ -61,6 +61,11 @@ struct PianoRig {
   ecs::Entity body = ecs::Entity::null;
   stage::BodyNodes body_nodes;  // of the model posed: tutti's performer, or the stand-in
   std::optional<stage::BodyRetarget> body_retarget;
+  // A user's hand models (scene pianist "hands"): drawn, posed through their stand-in where
+  // tutti's hand models play; `hands_nodes` index the stand-in.
+  ecs::Entity user_hands = ecs::Entity::null;
+  std::optional<stage::BodyRetarget> hands_retarget;
+  stage::BodyNodes hands_nodes;
   std::array<int, 2> rig_hands{-1, -1};  // right, left
   std::array<int, 128> key_nodes{};      // piano node per MIDI key, -1 = none
   std::array<double, 128> key_dip_rad{};

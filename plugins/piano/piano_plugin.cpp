@@ -129,6 +129,24 @@ Status bind_pianist_body(stage::StageBuilder& builder, const scene::Pianist& pia
   return Status::success();
 }
 
+// A user's hand models (scene pianist "hands"): placed, and their stand-in made.
+Status bind_user_hands(stage::StageBuilder& builder, const scene::Pianist& pianist, PianoRig& rig) {
+  if (pianist.hands_mapping.empty()) return Status::success();
+  auto hands = stage::load_hands(builder, pianist.hands_mapping);
+  if (!hands) return hands.error();
+  rig.user_hands = builder.place(hands->model, hands->correction);
+  auto tutti = builder.generated_model("performer.glb");
+  if (!tutti) return tutti.error();
+  auto retarget = stage::make_body_retarget(builder.model(hands->model), *hands,
+                                            builder.model(*tutti), glm::mat4(1.0f));
+  if (!retarget) return retarget.error();
+  auto nodes = stage::find_body_nodes(*retarget->proxy.asset, stage::MappedModel{});
+  if (!nodes) return nodes.error();
+  rig.hands_nodes = *nodes;
+  rig.hands_retarget = std::move(*retarget);
+  return Status::success();
+}
+
 }  // namespace
 
 void PianoPlugin::add_systems(ecs::Schedule& schedule) const {
@@ -141,11 +159,6 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
   const scene::Scene& scene = builder.scene();
   if (!scene.pianist) return Status::success();
   const scene::Pianist& pianist = *scene.pianist;
-  if (!pianist.hands_mapping.empty()) {
-    return Error{scene.source +
-                 ": pianist: user hand models are not supported yet (a user's character plays "
-                 "with its own hands: give \"character\" instead); remove \"hands\""};
-  }
   auto planned = plan_pianist(builder);
   if (!planned) return planned.error();
   PianistPlan& plan = *planned;
@@ -183,9 +196,11 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
       rig.fingers[static_cast<std::size_t>(side)][static_cast<std::size_t>(f)] = finger;
     }
   }
-  const bool own_hands = !pianist.character_mapping.empty();
-  if (Status s = bind_piano(builder, model->keyboard, *action, !own_hands, rig); !s) return s;
+  // tutti's hand models are drawn unless a user's hands play: a character's own, or hand models.
+  const bool users_hands = !pianist.character_mapping.empty() || !pianist.hands_mapping.empty();
+  if (Status s = bind_piano(builder, model->keyboard, *action, !users_hands, rig); !s) return s;
   if (Status s = bind_pianist_body(builder, pianist, rig); !s) return s;
+  if (Status s = bind_user_hands(builder, pianist, rig); !s) return s;
   // Export names: "piano", "<pianist> hand_r", "<pianist> hand_l", the pianist's body.
   const auto label = [&](ecs::Entity instance, std::string text, bool after_performer) {
     if (instance.is_null()) return;
@@ -198,6 +213,7 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
   label(rig.hand_models[0], "hand_r", true);
   label(rig.hand_models[1], "hand_l", true);
   label(rig.body, "", true);
+  label(rig.user_hands, "hands", true);
   world.add<PianoRig>(performer, std::move(rig));
   world.add<PianistPlan>(performer, std::move(plan));
   return Status::success();

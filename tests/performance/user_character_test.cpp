@@ -1,7 +1,7 @@
 // Users' characters without mapping files: Blender-made rigs (tests/data/characters/
 // make_fixtures.py) named the Unreal way in centimetres and as VRM 1.0 play a trumpet and a
 // trombone when the scene names the model file itself; heads and torsos stay clear of the hands.
-// A model that is not a humanoid, and a model given for the pianist's hands, are one-line errors.
+// A model that is not a humanoid, or not a pair of hands, is a one-line error.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -263,22 +263,36 @@ TEST(UserCharacter, AMappingFileOnlyOverrides) {
 }
 
 // The pianist as a user's character, no mapping: it plays with its own hands, its fingertips'
-// pads on the keys' tops at key bottom within issue 11's 3 mm, on every naming convention.
+// pads on the keys' tops at key bottom within issue 11's 3 mm, on every fixture; and a user's
+// hand models (a model file, no mapping) play the same way, on tutti's performer or a character.
 TEST(UserCharacter, APianistPlaysWithItsOwnHandsOnTheKeys) {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
   test::ScratchDir dir;
   ASSERT_TRUE(make_fixtures(dir.path()));
-  for (const char* file : {"rigify_a.glb", "unreal_cm_t.glb", "mixamo_ns_cm_a.glb", "rigify_a_vrm1.vrm"}) {
+  // Each convention as the character; then the hand models alone (hands_only.glb) on tutti's
+  // performer, and on a user's character.
+  struct Cast {
+    std::string character, hands;
+  };
+  std::vector<Cast> casts;
+  for (const auto& f : nlohmann::json::parse(std::ifstream(dir.path() / "fixtures.json"))) {
+    casts.push_back({f.at("file"), ""});
+  }
+  casts.push_back({"", "hands_only.glb"});
+  casts.push_back({"unreal_cm_t.glb", "hands_only.glb"});
+  for (const Cast& cast : casts) {
+    const std::string file = cast.character + " " + cast.hands;
     nlohmann::json piano = nlohmann::json::parse(std::ifstream(kSource / "content/scenes/piano.json"));
     piano["music"] = (kSource / "content/music" / piano["music"].get<std::string>()).string();
-    piano["pianist"]["character"] = file;
+    if (!cast.character.empty()) piano["pianist"]["character"] = cast.character;
+    if (!cast.hands.empty()) piano["pianist"]["hands"] = cast.hands;
     const std::filesystem::path scene_file = dir.path() / "piano.json";
     std::ofstream(scene_file) << piano.dump(1);
     auto scene = scene::load_scene(scene_file);
     ASSERT_TRUE(scene) << scene.error().message;
     auto staged = build_stage(*scene, {});
     ASSERT_TRUE(staged) << file << ": " << staged.error().message;
-    // Its own hands play: tutti's hand models are not drawn.
+    // The user's hands play: tutti's hand models are not drawn.
     std::size_t hands_drawn = 0;
     for (std::size_t i = 0; i < (*staged)->instances().size(); ++i) {
       const std::string& source = (*staged)->placed(i).asset->source;
@@ -324,10 +338,15 @@ TEST(UserCharacter, NotAHumanoidAndModelHandsAreOneLineErrors) {
   piano["music"] = (kSource / "content/music" / piano["music"].get<std::string>()).string();
   piano["pianist"]["hands"] = "horn_not_a_man.glb";
   std::ofstream(dir.path() / "piano.json") << piano.dump(1);
-  auto refused = scene::load_scene(dir.path() / "piano.json");
+  auto piano_scene = scene::load_scene(dir.path() / "piano.json");
+  ASSERT_TRUE(piano_scene) << piano_scene.error().message;
+  auto refused = build_stage(*piano_scene, {});
   ASSERT_FALSE(refused);
-  EXPECT_NE(refused.error().message.find("needs a mapping file"), std::string::npos)
+  EXPECT_NE(refused.error().message.find(
+                "horn_not_a_man.glb: not a pair of hands tutti can play: no hand_l, hand_r"),
+            std::string::npos)
       << refused.error().message;
+  EXPECT_EQ(refused.error().message.find('\n'), std::string::npos);
 }
 
 }  // namespace

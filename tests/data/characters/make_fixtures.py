@@ -10,7 +10,8 @@
 # the meta-rig's own A-pose or turned into a T-pose; one as VRM 1.0 (a VRMC_vrm humanoid table
 # added to the exported file); one with a PNG base-colour texture (a red and cream checker, 8
 # squares round each tube and 4 along it); one as Rigify's deform rig names and splits it
-# ("DEF-" names, each upper arm, forearm, thigh and shin in two segments). Writes OUT_DIR/fixtures.json: every file with what it
+# ("DEF-" names, each upper arm, forearm, thigh and shin in two segments); and hands_only.glb, the
+# forearms, hands and fingers alone (a pianist's hand models). Writes OUT_DIR/fixtures.json: every file with what it
 # should be.
 import json
 import math
@@ -104,6 +105,25 @@ def split_limbs(rig):
             bone = bones[limb + "." + side]
             bone.select = bone.select_head = bone.select_tail = True
     bpy.ops.armature.subdivide(number_cuts=1)
+    bpy.ops.object.mode_set(mode="OBJECT")
+
+
+def hands_only(rig):
+    """Only the forearms, hands and fingers (a pianist's hand models): the rest of the skeleton
+    goes and the forearms become roots."""
+    bpy.context.view_layer.objects.active = rig
+    bpy.ops.object.mode_set(mode="EDIT")
+    bones = rig.data.edit_bones
+    keep = set()
+    for side in ("L", "R"):
+        forearm = bones["forearm." + side]
+        keep.add(forearm.name)
+        keep.update(bone.name for bone in forearm.children_recursive)
+    for bone in list(bones):
+        if bone.name not in keep:
+            bones.remove(bone)
+    for side in ("L", "R"):
+        bones["forearm." + side].parent = None
     bpy.ops.object.mode_set(mode="OBJECT")
 
 
@@ -272,6 +292,12 @@ for name, naming, units, pose in VARIANTS:
         add_vrm_table(path, os.path.join(OUT, "rigify_a_vrm1.vrm"))
         listing.append({"file": "rigify_a_vrm1.vrm", "pose": pose, "units": units, "vrm": True,
                         "names": {rigify: rigify for rigify in expected}})
+
+# A pianist's hand models alone (not in fixtures.json: not a character).
+rig = fresh_rig("A")
+hands_only(rig)
+skinned_body(rig)
+export(os.path.join(OUT, "hands_only.glb"))
 
 with open(os.path.join(OUT, "fixtures.json"), "w") as f:
     json.dump(listing, f, indent=1)
