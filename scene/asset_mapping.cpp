@@ -242,4 +242,28 @@ Result<AssetMapping> parse_asset_mapping(const nlohmann::json& document,
   return mapping;
 }
 
+nlohmann::ordered_json asset_mapping_document(const AssetMapping& mapping, const std::string& model,
+                                              const std::string& description) {
+  nlohmann::ordered_json doc;
+  if (!description.empty()) doc["description"] = description;
+  doc["model"] = model;
+  doc["kind"] = std::string(asset_kind_name(mapping.kind));
+  doc["scale"] = mapping.scale;
+  doc["rotation_deg"] = {mapping.rotation_deg.x, mapping.rotation_deg.y, mapping.rotation_deg.z};
+  if (mapping.translation_m.x != 0.0 || mapping.translation_m.y != 0.0 ||
+      mapping.translation_m.z != 0.0) {
+    doc["translation_m"] = {mapping.translation_m.x, mapping.translation_m.y, mapping.translation_m.z};
+  }
+  doc["nodes"] = nlohmann::ordered_json::object();
+  for (const std::string_view role : node_roles(mapping.kind)) {
+    const std::string_view node = mapping.node(role);
+    if (!node.empty()) doc["nodes"][std::string(role)] = std::string(node);
+  }
+  if (!mapping.morphs.empty()) {
+    doc["morphs"] = nlohmann::ordered_json::object();
+    for (const auto& [role, name] : mapping.morphs) doc["morphs"][role] = name;
+  }
+  return doc;
+}
+
 }  // namespace tutti::scene

@@ -55,6 +55,10 @@ std::span<const std::string_view> required_node_roles(AssetKind kind);
 // Morph-target roles ("tension", "open" for a character; none for the other kinds).
 std::span<const std::string_view> morph_roles(AssetKind kind);
 
+// The mapping as a file's JSON (what load_asset_mapping reads back), `model` written as given.
+nlohmann::ordered_json asset_mapping_document(const AssetMapping& mapping, const std::string& model,
+                                              const std::string& description);
+
 // Errors: one line, "FILE: /json/path: reason" (missing file and bad JSON as load_scene).
 Result<AssetMapping> load_asset_mapping(const std::filesystem::path& path);
 Result<AssetMapping> parse_asset_mapping(const nlohmann::json& document,

@@ -34,17 +34,8 @@ Result<MappedModel> load_recognised(StageBuilder& builder, const std::filesystem
     return Error{source + ": not a humanoid tutti can play: " + h.what_is_missing() +
                  " (tutti rig " + file.filename().string() + " shows what was recognised)"};
   }
-  scene::AssetMapping mapping;
+  scene::AssetMapping mapping = recognised_character_mapping(h, asset, file);
   mapping.source = source;
-  mapping.model = file;
-  mapping.kind = scene::AssetKind::character;
-  mapping.scale = h.metres_per_unit;
-  const glm::dvec3 rotation = humanoid::rotation_to_tutti_deg(h);
-  mapping.rotation_deg = {rotation.x, rotation.y, rotation.z};
-  for (const auto& [role, node] : h.nodes) {
-    if (node >= 0) mapping.nodes.emplace_back(role, asset.nodes[static_cast<std::size_t>(node)].name);
-  }
-  mapping.morphs = h.morphs;
   if (overrides != nullptr) {
     const auto put = [](std::vector<std::pair<std::string, std::string>>& into,
                         const std::vector<std::pair<std::string, std::string>>& from) {
@@ -82,6 +73,25 @@ Result<MappedModel> load_recognised(StageBuilder& builder, const std::filesystem
 }
 
 }  // namespace
+
+scene::AssetMapping recognised_character_mapping(const humanoid::Humanoid& humanoid,
+                                                 const model::ModelAsset& asset,
+                                                 const std::filesystem::path& file) {
+  scene::AssetMapping mapping;
+  mapping.source = file.filename().string();
+  mapping.model = file;
+  mapping.kind = scene::AssetKind::character;
+  mapping.scale = humanoid.metres_per_unit;
+  const glm::dvec3 rotation = humanoid::rotation_to_tutti_deg(humanoid);
+  mapping.rotation_deg = {rotation.x, rotation.y, rotation.z};
+  for (const auto& [role, node] : humanoid.nodes) {
+    if (node >= 0) mapping.nodes.emplace_back(role, asset.nodes[static_cast<std::size_t>(node)].name);
+  }
+  std::sort(mapping.nodes.begin(), mapping.nodes.end());
+  mapping.morphs = humanoid.morphs;
+  std::sort(mapping.morphs.begin(), mapping.morphs.end());
+  return mapping;
+}
 
 Result<MappedModel> load_hands(StageBuilder& builder, const std::filesystem::path& file) {
   const std::string extension = file.extension().string();

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include <tutti/core/result.hpp>
+#include <tutti/humanoid/humanoid.hpp>
 #include <tutti/model/model_asset.hpp>
 #include <tutti/scene/asset_mapping.hpp>
 #include <tutti/scene/scene.hpp>
@@ -42,6 +43,13 @@ Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::pa
 // whose hands and fingers are recognised by themselves (engine/humanoid); its units from the
 // hands' size (a wrist to middle knuckle of 5-25 units: centimetres, of 0.05-0.25: metres).
 Result<MappedModel> load_hands(StageBuilder& builder, const std::filesystem::path& file);
+
+// What a character model given as its file stands for, and what `tutti rig --mapping` writes:
+// the roles engine/humanoid recognised in `asset` (loaded from `file`) as node names, its units
+// and the rotation that stands it on +Y facing +Z, its face morphs.
+scene::AssetMapping recognised_character_mapping(const humanoid::Humanoid& humanoid,
+                                                 const model::ModelAsset& asset,
+                                                 const std::filesystem::path& file);
 
 // The node playing `role`: -1 when unmapped or missing from a generated model; an error when a
 // mapping names a node the model lacks.

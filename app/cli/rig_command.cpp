@@ -11,6 +11,8 @@
 #include <tutti/cli/exit_codes.hpp>
 #include <tutti/humanoid/humanoid.hpp>
 #include <tutti/model/model_asset.hpp>
+#include <tutti/scene/asset_mapping.hpp>
+#include <tutti/stage/model_binding.hpp>
 
 namespace tutti::app {
 namespace {
@@ -44,7 +46,6 @@ int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
   const auto name_of = [&](int node) {
     return node < 0 ? std::string() : model->nodes[static_cast<std::size_t>(node)].name;
   };
-  const glm::dvec3 rotation = humanoid::rotation_to_tutti_deg(h);
   if (o.json) {
     nlohmann::json doc;
     doc["model"] = file;
@@ -130,27 +131,17 @@ int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
       err << "error: --mapping needs -o FILE.mapping.json\n";
       return kExitBadInput;
     }
-    nlohmann::ordered_json doc;
-    doc["description"] = "Written by `tutti rig " + file + " --mapping` (" + h.method +
-                         "); edit any role to override what was recognised.";
     std::error_code ec;
     const std::filesystem::path base = o.output.parent_path().empty()
                                            ? std::filesystem::current_path()
                                            : std::filesystem::absolute(o.output.parent_path());
     const std::filesystem::path relative =
         std::filesystem::relative(std::filesystem::absolute(o.model), base, ec);
-    doc["model"] = ec || relative.empty() ? std::filesystem::absolute(o.model).string() : relative.string();
-    doc["kind"] = "character";
-    doc["scale"] = h.metres_per_unit;
-    doc["rotation_deg"] = {rotation.x, rotation.y, rotation.z};
-    doc["nodes"] = nlohmann::ordered_json::object();
-    for (const auto& [role, node] : h.nodes) {
-      if (node >= 0) doc["nodes"][std::string(role)] = name_of(node);
-    }
-    if (!h.morphs.empty()) {
-      doc["morphs"] = nlohmann::ordered_json::object();
-      for (const auto& [role, name] : h.morphs) doc["morphs"][role] = name;
-    }
+    const nlohmann::ordered_json doc = scene::asset_mapping_document(
+        stage::recognised_character_mapping(h, *model, o.model),
+        ec || relative.empty() ? std::filesystem::absolute(o.model).string() : relative.string(),
+        "Written by `tutti rig " + file + " --mapping` (" + h.method +
+            "); edit any role to override what was recognised.");
     std::ofstream stream(o.output, std::ios::trunc);
     stream << doc.dump(2) << "\n";
     if (!stream) {

@@ -115,15 +115,16 @@ double head_sway_m(const std::filesystem::path& dir, const std::string& characte
   return std::sqrt(std::max(0.0, sum2 / n - mean * mean));
 }
 
-// Body motion on user rigs: the head sways as much as tutti's performer's in the same seat
-// (within 20 %, the user's rig being 2.0 m tall to the performer's 1.75 m).
+// Body motion on user rigs: every fixture's head sways as much as tutti's performer's in the same
+// seat (within 20 %, the user's rig being 2.0 m tall to the performer's 1.75 m).
 TEST(UserCharacter, UserRigsSwayLikeTuttisPerformer) {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
   test::ScratchDir dir;
   ASSERT_TRUE(make_fixtures(dir.path()));
   const double own = head_sway_m(dir.path(), "");
   ASSERT_GT(own, 0.002);  // tutti's performer sways by millimetres to centimetres
-  for (const char* fixture : {"unreal_cm_t.glb", "rigify_a_vrm1.vrm", "mixamo_ns_cm_a.glb"}) {
+  for (const auto& f : nlohmann::json::parse(std::ifstream(dir.path() / "fixtures.json"))) {
+    const std::string fixture = f.at("file");
     const double theirs = head_sway_m(dir.path(), fixture);
     EXPECT_GT(theirs / own, 0.8) << fixture << ": " << theirs << " m against " << own << " m";
     EXPECT_LT(theirs / own, 1.2) << fixture << ": " << theirs << " m against " << own << " m";
