@@ -430,6 +430,128 @@ TEST_F(ModelRendererTest, MorphTargetMovesTheMeshByItsWeight) {
   EXPECT_FALSE(red(moved, resting));
 }
 
+// A 1 m quad facing the camera (+Z), UVs 0..1 left to right and top to bottom, with `material`.
+model::ModelAsset textured_quad(const model::Material& material, const model::Image& image) {
+  model::ModelAsset asset;
+  asset.source = "textured_quad";
+  asset.materials.push_back(material);
+  asset.images.push_back(image);
+  model::Texture texture;
+  texture.image = 0;
+  texture.mag_filter = 9728;  // NEAREST: each texel a clear block
+  texture.min_filter = 9728;
+  asset.textures.push_back(texture);
+  model::Primitive p;
+  p.material = 0;
+  const glm::vec2 corners[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (const glm::vec2& c : corners) {
+    model::Vertex v;
+    v.position = {c.x - 0.5f, 1.0f - c.y, 0.0f};
+    v.normal = {0, 0, 1};
+    v.uv0 = c;
+    asset.vertices.push_back(v);
+  }
+  asset.indices = {0, 3, 2, 0, 2, 1};
+  p.vertex_count = 4;
+  p.index_count = 6;
+  asset.meshes.push_back({"quad", {p}, {}, {}});
+  add_node(asset, "quad", 0, -1, {0, 0, 0});
+  return asset;
+}
+
+// Texels left to right: opaque red, a half-transparent green, a transparent blue.
+model::Image three_texels() {
+  model::Image image;
+  image.mime_type = "image/png";
+  image.width = 3;
+  image.height = 1;
+  image.rgba = {255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 0};
+  return image;
+}
+
+TEST_F(ModelRendererTest, TexturesColourTheSurfaceAndAlphaMasksAndBlends) {
+  const Camera camera = look_at_camera({0, 0.5f, 1.2f}, {0, 0.5f, 0}, 50.0f, float(kWidth) / kHeight);
+  const glm::ivec2 left = to_pixel(camera, {-0.33f, 0.5f, 0.0f});
+  const glm::ivec2 middle = to_pixel(camera, {0.0f, 0.5f, 0.0f});
+  const glm::ivec2 right = to_pixel(camera, {0.33f, 0.5f, 0.0f});
+  const auto rgb = [](const std::vector<std::uint8_t>& rgba, glm::ivec2 p) {
+    const std::size_t i = (static_cast<std::size_t>(p.y) * kWidth + static_cast<std::size_t>(p.x)) * 4;
+    return glm::ivec3(rgba[i], rgba[i + 1], rgba[i + 2]);
+  };
+  model::Material m;
+  m.metallic = 0.0f;
+  m.roughness = 1.0f;
+  m.base_color_texture.texture = 0;
+  // Opaque: the texels' colours, alpha ignored.
+  const model::ModelAsset opaque = textured_quad(m, three_texels());
+  const auto a = render({&opaque}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT);
+  ASSERT_FALSE(a.empty());
+  (void)image::write_png(std::string(TUTTI_RENDER_ARTIFACT_DIR) + "/textured_quad.png", a, kWidth, kHeight);
+  EXPECT_GT(rgb(a, left).r, 3 * rgb(a, left).g) << "red texel";
+  EXPECT_GT(rgb(a, middle).g, 3 * rgb(a, middle).r) << "green texel";
+  EXPECT_GT(rgb(a, right).b, 3 * rgb(a, right).r) << "blue texel";
+  // Mask at 0.6: the half-transparent and transparent texels are not drawn (the black clear).
+  m.alpha_mode = model::AlphaMode::mask;
+  m.alpha_cutoff = 0.6f;
+  const model::ModelAsset masked = textured_quad(m, three_texels());
+  const auto b = render({&masked}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT);
+  EXPECT_EQ(rgb(b, left), rgb(a, left));
+  EXPECT_EQ(rgb(b, middle), glm::ivec3(0));
+  EXPECT_EQ(rgb(b, right), glm::ivec3(0));
+  // Blend: half the green over the black, none of the blue.
+  m.alpha_mode = model::AlphaMode::blend;
+  const model::ModelAsset blended = textured_quad(m, three_texels());
+  const auto c = render({&blended}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT);
+  EXPECT_EQ(rgb(c, left), rgb(a, left));
+  EXPECT_GT(rgb(c, middle).g, rgb(a, middle).g / 3);
+  EXPECT_LT(rgb(c, middle).g, rgb(a, middle).g * 3 / 4);
+  EXPECT_EQ(rgb(c, right), glm::ivec3(0));
+}
+
+TEST_F(ModelRendererTest, ANormalMapTurnsTheLitSurface) {
+  // Key light from the upper left; the normal map tilts the surface toward +X (away from it) on
+  // the left half and toward -X (toward it) on the right half.
+  const Camera camera = look_at_camera({0, 0.5f, 1.2f}, {0, 0.5f, 0}, 50.0f, float(kWidth) / kHeight);
+  Lighting lighting;
+  lighting.key.direction = {1.0f, 0.0f, -0.6f};
+  model::Image flat;
+  flat.mime_type = "image/png";
+  flat.width = 2;
+  flat.height = 1;
+  flat.rgba = {128, 128, 255, 255, 128, 128, 255, 255};
+  model::Image tilted = flat;
+  tilted.rgba = {230, 128, 180, 255, 26, 128, 180, 255};
+  model::Material m;
+  m.metallic = 0.0f;
+  m.roughness = 1.0f;
+  m.base_color = {0.8f, 0.8f, 0.8f, 1.0f};
+  m.normal_texture.texture = 0;
+  const model::ModelAsset plain = textured_quad(m, flat);
+  const model::ModelAsset bumped = textured_quad(m, tilted);
+  const auto a = render({&plain}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT, lighting);
+  const auto b = render({&bumped}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT, lighting);
+  const glm::ivec2 left = to_pixel(camera, {-0.25f, 0.5f, 0.0f});
+  const glm::ivec2 right = to_pixel(camera, {0.25f, 0.5f, 0.0f});
+  // A flat map leaves the surface as it is; the tilted one darkens the half turned away from the
+  // key light and brightens the half turned toward it.
+  EXPECT_NEAR(luminance(a, left), luminance(a, right), 6);
+  EXPECT_LT(luminance(b, left) + 20, luminance(a, left));
+  EXPECT_GT(luminance(b, right), luminance(a, right) + 20);
+  // The map's +y is up the image (glTF): with the key light from above, a map tilted to +y
+  // brightens the quad and one tilted to -y darkens it.
+  lighting.key.direction = {0.0f, -1.0f, -0.6f};
+  model::Image up = flat, down = flat;
+  up.rgba = {128, 230, 180, 255, 128, 230, 180, 255};
+  down.rgba = {128, 26, 180, 255, 128, 26, 180, 255};
+  const model::ModelAsset facing_up = textured_quad(m, up);
+  const model::ModelAsset facing_down = textured_quad(m, down);
+  const auto c = render({&plain}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT, lighting);
+  const auto d = render({&facing_up}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT, lighting);
+  const auto e = render({&facing_down}, {{0, nullptr, glm::mat4(1.0f)}}, camera, VK_SAMPLE_COUNT_1_BIT, lighting);
+  EXPECT_GT(luminance(d, left), luminance(c, left) + 20);
+  EXPECT_LT(luminance(e, left) + 20, luminance(c, left));
+}
+
 TEST_F(ModelRendererTest, SameFrameTwiceIsByteIdentical) {
   const model::ModelAsset scene = floor_and_cube();
   const Camera camera = look_at_camera({1, 2, 3}, {0, 0.5f, 0}, 45.0f, float(kWidth) / kHeight);

@@ -24,15 +24,17 @@ vec3 srgb_to_linear(vec3 c) {
 
 // A tangent-space normal map applied without stored tangents: the cotangent frame from the
 // position's and the UV's screen derivatives (Schüler, "Normal Mapping Without Precomputed
-// Tangents"). glTF's UVs run down the image, so the bitangent is turned round.
+// Tangents"). Vulkan's framebuffer y runs down, which turns the frame Schüler's formula gives
+// round (both axes); glTF's UVs run down the image while its normal maps' +y points up it, which
+// turns the bitangent round again.
 vec3 perturbed_normal(vec3 n, vec3 position, vec2 uv, vec3 map_value, float scale) {
   vec3 t_normal = map_value * 2.0 - 1.0;
   t_normal.xy *= scale;
   vec3 dp1 = dFdx(position), dp2 = dFdy(position);
   vec2 duv1 = dFdx(uv), duv2 = dFdy(uv);
   vec3 dp2perp = cross(dp2, n), dp1perp = cross(n, dp1);
-  vec3 t = dp2perp * duv1.x + dp1perp * duv2.x;
-  vec3 b = -(dp2perp * duv1.y + dp1perp * duv2.y);
+  vec3 t = -(dp2perp * duv1.x + dp1perp * duv2.x);
+  vec3 b = dp2perp * duv1.y + dp1perp * duv2.y;
   float inv = inversesqrt(max(max(dot(t, t), dot(b, b)), 1e-20));
   return normalize(mat3(t * inv, b * inv, n) * t_normal);
 }
