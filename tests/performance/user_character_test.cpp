@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include <tutti/brass/brass_components.hpp>
+#include <tutti/stage/model_binding.hpp>
 #include <tutti/stage/stage.hpp>
 #include <tutti/humanoid/humanoid.hpp>
 #include <tutti/performance/families.hpp>
@@ -224,6 +225,35 @@ TEST(UserCharacter, TheUsersJointsSitOnTheStandInsJoints) {
     EXPECT_LT(worst_m, 0.0005) << file << ": a user joint " << worst_m * 1000.0
                                << " mm from its stand-in's";
   }
+}
+
+// The face moves on a user's rig: its ARKit-named shape keys (mouthPucker, jawOpen: the Blender
+// fixture's) take the embouchure while playing and open for the breaths.
+TEST(UserCharacter, ARigsFaceMorphsFollowTheMouth) {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "no blender";
+  test::ScratchDir dir;
+  ASSERT_TRUE(make_fixtures(dir.path()));
+  std::ofstream(dir.path() / "duo.json") << duo("mixamo_ns_cm_a.glb", "rigify_t.glb").dump(1);
+  auto scene = scene::load_scene(dir.path() / "duo.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto staged = build_stage(*scene, {});
+  ASSERT_TRUE(staged) << staged.error().message;
+  stage::Stage& stage = **staged;
+  const auto& rig = stage.world().get<brass_family::BrassRig>(stage.find_performer("brass", 0));
+  const auto& user = stage.world().get<stage::PlacedModel>(rig.body);
+  const int pucker = stage::morph_index(*user.asset, "mouthPucker");
+  const int open = stage::morph_index(*user.asset, "jawOpen");
+  ASSERT_GE(pucker, 0);
+  ASSERT_GE(open, 0);
+  float most_pucker = 0.0f, most_open = 0.0f;
+  for (double t = 0.0; t < 20.0; t += 1.0 / 30.0) {
+    stage::evaluate_stage(stage, t);
+    const auto& posed = stage.world().get<stage::PlacedModel>(rig.body);
+    most_pucker = std::max(most_pucker, posed.pose.morph_weights[static_cast<std::size_t>(pucker)]);
+    most_open = std::max(most_open, posed.pose.morph_weights[static_cast<std::size_t>(open)]);
+  }
+  EXPECT_GT(most_pucker, 0.5f);
+  EXPECT_GT(most_open, 0.2f);
 }
 
 // A mapping file only overrides: it names the roles it wants changed (here the head, moved one

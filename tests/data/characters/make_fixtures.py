@@ -11,7 +11,8 @@
 # added to the exported file); one with a PNG base-colour texture (a red and cream checker, 8
 # squares round each tube and 4 along it); one as Rigify's deform rig names and splits it
 # ("DEF-" names, each upper arm, forearm, thigh and shin in two segments); and hands_only.glb, the
-# forearms, hands and fingers alone (a pianist's hand models). Writes OUT_DIR/fixtures.json: every file with what it
+# forearms, hands and fingers alone (a pianist's hand models). Every body has the face shape keys
+# mouthPucker and jawOpen (ARKit's names) on its head. Writes OUT_DIR/fixtures.json: every file with what it
 # should be.
 import json
 import math
@@ -219,6 +220,18 @@ def skinned_body(rig, textured=False):
     body.modifiers.new("Armature", "ARMATURE").object = rig
     if textured:
         mesh.materials.append(checker_material())
+    # Face shape keys by their ARKit names: the head tube's lower ring drawn in (pucker) and
+    # dropped (jaw open).
+    head = "spine.006"
+    if head in indices:
+        body.shape_key_add(name="Basis")
+        centre = rig.data.bones[head].head_local
+        for name, move in (("mouthPucker", lambda co: (centre - co) * 0.3 * Vector((1, 0, 1))),
+                           ("jawOpen", lambda co: Vector((0, 0, -0.02)))):
+            key = body.shape_key_add(name=name)
+            for index in indices[head][:8]:
+                co = mesh.vertices[index].co
+                key.data[index].co = co + move(co)
     return body
 
 
