@@ -51,6 +51,7 @@ music::Score fingered_score(const music::Score& score, const piano::ScorePlan& p
   for (std::size_t i = 0; i < out.notes.size(); ++i) {
     out.notes[i].finger = i < plan.fingers.size() ? plan.fingers[i] : 0;
     out.notes[i].finger_substitute = 0;
+    out.notes[i].finger_sequence.clear();
     if (i < plan.hands.size()) out.notes[i].hand = plan.hands[i];
   }
   return out;

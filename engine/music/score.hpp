@@ -37,6 +37,9 @@ struct Note {
   int finger = 0;
   // A finger substitution while the key is held (PIG "3_1": strike with 3, hold with 1), else 0.
   int finger_substitute = 0;
+  // Every finger of a PIG substitution in order ("2_4_5": 2, 4, 5; `finger` the first and
+  // `finger_substitute` the last), when it has more than two; empty otherwise.
+  std::vector<int> finger_sequence;
   Hand hand = Hand::unknown;
   bool grace = false;
   // Where the note came from, so writers can annotate the original file: the ordinal of the
@@ -106,6 +109,14 @@ struct Score {
   std::vector<KeySignature> key_signatures;    // sorted by tick
   std::vector<PedalSpan> pedal_spans;          // sorted by (part, onset)
   std::vector<TextEvent> texts;                // sorted by tick
+  // A PIG file's note lines as read: the columns before the finger (id, onset, offset, spelled
+  // pitch, velocities, channel) and the line each came from (Note::source_index), in file order.
+  // write_pig gives them back unchanged but for the finger, so line-by-line tools can compare.
+  struct PigRow {
+    int line = 0;
+    std::string columns;
+  };
+  std::vector<PigRow> pig_rows;
   // The end of the piece: the last event of any kind (end-of-track, last barline), never before
   // the last note's offset.
   std::int64_t end_ticks = 0;

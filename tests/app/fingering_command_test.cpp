@@ -305,6 +305,36 @@ TEST_F(FingeringCommandTest, PigOutputReadsBackAndIsDeterministic) {
   EXPECT_EQ(run({.input = file("out.txt"), .output = file("again.json")}).code, kExitOk);
 }
 
+// PIG in, PIG out: the input's lines come back in their order with their ids, times, spellings and
+// velocities; only the finger column is tutti's (a file written here in the dataset's style).
+TEST_F(FingeringCommandTest, PigInPigOutKeepsTheLinesAndChangesOnlyTheFingers) {
+  const std::string input =
+      "//Version: PigletFormat 1.0\n"
+      "0\t0.500000\t0.900000\tE4\t64\t-1\t0\t3\n"
+      "1\t0.000000\t0.400000\tC4\t64\t-1\t0\t1_2_3\n"
+      "2\t0.250000\t0.500000\tDb4\t64\t-1\t0\t2\n"
+      "3\t0.000000\t1.000000\tC3\t64\t-1\t1\t-5\n"
+      "4\t1.000000\t1.400000\tF#4\t64\t-1\t0\t4\n";
+  std::ofstream(file("in.txt")) << input;
+  const CommandRun r = run({.input = file("in.txt"), .output = file("out.txt"), .format = "pig"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  std::istringstream in_lines(input), out_lines(bytes_of(file("out.txt")));
+  std::string a, b;
+  std::getline(in_lines, a);
+  std::getline(out_lines, b);  // the header line
+  int lines = 0;
+  while (std::getline(in_lines, a)) {
+    ASSERT_TRUE(std::getline(out_lines, b)) << "missing line " << lines;
+    EXPECT_EQ(a.substr(0, a.rfind('\t')), b.substr(0, b.rfind('\t'))) << b;
+    const std::string finger = b.substr(b.rfind('\t') + 1);
+    EXPECT_FALSE(finger.empty());
+    EXPECT_NE(finger, "0") << b;
+    ++lines;
+  }
+  EXPECT_EQ(lines, 5);
+  EXPECT_FALSE(std::getline(out_lines, b)) << "extra line " << b;
+}
+
 void expect_one_error_line(const CommandRun& r) {
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;

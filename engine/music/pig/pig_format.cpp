@@ -42,16 +42,28 @@ bool parse_seconds(std::string_view text, double& out) {
          out >= 0.0 && out <= kMaxSeconds;
 }
 
-// "3", "-2", "3_1", "-4_-1". Returns false on anything else.
-bool parse_finger(std::string_view text, int& strike, int& hold) {
-  hold = 0;
-  const auto underscore = text.find('_');
-  if (!parse_int(text.substr(0, underscore), strike)) return false;
-  if (underscore != std::string_view::npos && !parse_int(text.substr(underscore + 1), hold)) {
-    return false;
+// "3", "-2", "3_1", "-4_-1", "2_4_5": the fingers in order. Returns false on anything else.
+bool parse_fingers(std::string_view text, std::vector<int>& fingers) {
+  fingers.clear();
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t underscore = text.find('_', start);
+    int finger = 0;
+    if (!parse_int(text.substr(start, underscore == std::string_view::npos ? std::string_view::npos
+                                                                             : underscore - start),
+                   finger) ||
+        finger < -5 || finger > 5) {
+      return false;
+    }
+    fingers.push_back(finger);
+    if (underscore == std::string_view::npos) return fingers.size() <= 5;
+    start = underscore + 1;
   }
-  auto valid = [](int f) { return f >= -5 && f <= 5; };
-  return valid(strike) && valid(hold);
+}
+
+// A velocity column: 0..127, or -1 for "not recorded" (the PIG dataset's offset velocities).
+bool parse_velocity(std::string_view text, int& out) {
+  return parse_int(text, out) && out >= -1 && out <= 127;
 }
 
 std::int64_t to_ticks(double seconds) {
@@ -110,33 +122,42 @@ Result<Score> read_pig(std::string_view text, const std::string& source_name) {
     int on_velocity = 0;
     int off_velocity = 0;
     int channel = 0;
-    if (!parse_int(fields[4], on_velocity) || on_velocity < 0 || on_velocity > 127) {
-      return fail("bad onset velocity '" + std::string(fields[4]) + "'");
+    if (!parse_velocity(fields[4], on_velocity)) {
+      return fail("bad onset velocity '" + std::string(fields[4]) + "' (0..127, or -1)");
     }
-    if (!parse_int(fields[5], off_velocity) || off_velocity < 0 || off_velocity > 127) {
-      return fail("bad offset velocity '" + std::string(fields[5]) + "'");
+    if (!parse_velocity(fields[5], off_velocity)) {
+      return fail("bad offset velocity '" + std::string(fields[5]) + "' (0..127, or -1)");
     }
     if (!parse_int(fields[6], channel) || (channel != 0 && channel != 1)) {
       return fail("channel must be 0 (right hand) or 1 (left hand), got '" +
                   std::string(fields[6]) + "'");
     }
-    int strike = 0;
-    int hold = 0;
-    if (!parse_finger(fields[7], strike, hold)) {
-      return fail("bad finger '" + std::string(fields[7]) + "' (expected 1..5, -1..-5 or a_b)");
+    std::vector<int> fingers;
+    if (!parse_fingers(fields[7], fingers)) {
+      return fail("bad finger '" + std::string(fields[7]) +
+                  "' (expected 1..5, -1..-5, or a substitution a_b or a_b_c)");
     }
+    const int strike = fingers.front();
+    const int hold = fingers.size() > 1 ? fingers.back() : 0;
     note.pitch = *key;
     note.onset_ticks = to_ticks(onset);
     note.offset_ticks = to_ticks(offset);
-    note.velocity = on_velocity == 0 ? 64 : on_velocity;
-    note.release_velocity = off_velocity;
+    // 0 or -1: no onset velocity recorded (a default); -1: no offset velocity (MIDI's 64).
+    note.velocity = on_velocity <= 0 ? 64 : on_velocity;
+    note.release_velocity = off_velocity < 0 ? 64 : off_velocity;
     note.part = channel;
     note.channel = channel;
     note.hand = channel == 0 ? Hand::right : Hand::left;
     note.finger = std::abs(strike);
     note.finger_substitute = std::abs(hold);
+    if (fingers.size() > 2) {
+      for (const int f : fingers) note.finger_sequence.push_back(std::abs(f));
+    }
     note.source_index = line_number - 1;
     score.notes.push_back(note);
+    std::string columns(fields[0]);
+    for (std::size_t k = 1; k < 7; ++k) columns += "\t" + std::string(fields[k]);
+    score.pig_rows.push_back({note.source_index, std::move(columns)});
     seen_note = true;
   }
   if (!seen_note) return Error{source_name + ": no notes (not a PIG fingering file?)"};
@@ -163,21 +184,53 @@ Hand hand_of(const Score& score, const Note& note) {
 }
 }  // namespace
 
+namespace {
+// The finger column: negative for the left hand, a substitution's fingers joined by '_'.
+std::string finger_column(const Score& score, const Note& note) {
+  const int sign = hand_of(score, note) == Hand::left ? -1 : 1;
+  std::string text;
+  if (note.finger_sequence.size() > 2) {
+    for (const int f : note.finger_sequence) {
+      text += (text.empty() ? "" : "_") + std::to_string(sign * f);
+    }
+    return text;
+  }
+  text = std::to_string(sign * note.finger);
+  if (note.finger_substitute != 0) text += "_" + std::to_string(sign * note.finger_substitute);
+  return text;
+}
+}  // namespace
+
 std::string write_pig(const Score& score) {
   std::ostringstream out;
   out.imbue(std::locale::classic());
+  // Read from PIG: its lines back in their order, ids, times and spellings; only the fingers new.
+  if (!score.pig_rows.empty()) {
+    std::vector<const Note*> by_line;
+    for (const Note& note : score.notes) {
+      if (note.source_index < 0) continue;
+      const auto line = static_cast<std::size_t>(note.source_index);
+      if (by_line.size() <= line) by_line.resize(line + 1, nullptr);
+      by_line[line] = &note;
+    }
+    out << "//Version: PigletFormat 1.0 (fingers written by tutti; the rest as in " << score.source
+        << ")\n";
+    for (const Score::PigRow& row : score.pig_rows) {
+      const auto line = static_cast<std::size_t>(row.line);
+      const Note* note = line < by_line.size() ? by_line[line] : nullptr;
+      out << row.columns << '\t' << (note != nullptr ? finger_column(score, *note) : "0") << '\n';
+    }
+    return out.str();
+  }
   out << "//Version: PigletFormat 1.0 (written by tutti from " << score.source << ")\n";
   out.setf(std::ios::fixed);
   out.precision(6);
   int id = 0;
   for (const Note& note : score.notes) {
     const bool left = hand_of(score, note) == Hand::left;
-    const int sign = left ? -1 : 1;
     out << id++ << '\t' << note.onset_s << '\t' << note.offset_s << '\t' << pitch_name(note.pitch)
         << '\t' << note.velocity << '\t' << note.release_velocity << '\t' << (left ? 1 : 0) << '\t'
-        << sign * note.finger;
-    if (note.finger_substitute != 0) out << '_' << sign * note.finger_substitute;
-    out << '\n';
+        << finger_column(score, note) << '\n';
   }
   return out.str();
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace tutti::music {
 namespace {
@@ -39,6 +40,57 @@ TEST(PigFormatTest, ReadsNotesHandsAndFingers) {
   EXPECT_EQ(score->notes[3].pitch, 42);
   EXPECT_EQ(score->notes[3].release_velocity, 0);
   EXPECT_DOUBLE_EQ(score->duration_s(), 1.25);
+}
+
+// The PIG dataset's own format details (this file is written by hand, no dataset data): offset
+// velocities of -1 (not recorded), substitutions of three fingers, lines out of time order and
+// flat spellings.
+constexpr const char* kDatasetStyle =
+    "//Version: PigletFormat 1.0\n"
+    "0\t0.250000\t0.600000\tDb5\t74\t-1\t0\t2_4_5\n"
+    "1\t0.000000\t1.000000\tC3\t70\t-1\t1\t-5\n"
+    "2\t0.250000\t0.500000\tGb4\t60\t-1\t0\t1\n"
+    "3\t1.000000\t1.250000\tE#2\t-1\t-1\t1\t-2_-1_-3\n";
+
+TEST(PigFormatTest, ReadsDatasetStyleVelocitiesAndLongSubstitutions) {
+  auto score = read_pig(kDatasetStyle, "style.txt");
+  ASSERT_TRUE(score.ok()) << score.error().message;
+  ASSERT_EQ(score->notes.size(), 4u);
+  const auto by_line = [&](int line) -> const Note& {
+    for (const Note& n : score->notes) {
+      if (n.source_index == line) return n;
+    }
+    ADD_FAILURE() << "no note from line " << line;
+    return score->notes.front();
+  };
+  const Note& db5 = by_line(1);
+  EXPECT_EQ(db5.pitch, 73);
+  EXPECT_EQ(db5.finger, 2);
+  EXPECT_EQ(db5.finger_substitute, 5);
+  EXPECT_EQ(db5.finger_sequence, (std::vector<int>{2, 4, 5}));
+  EXPECT_EQ(db5.release_velocity, 64);  // -1: not recorded
+  const Note& e2 = by_line(4);
+  EXPECT_EQ(e2.finger_sequence, (std::vector<int>{2, 1, 3}));
+  EXPECT_EQ(e2.hand, Hand::left);
+  EXPECT_EQ(e2.velocity, 64);
+  // Written back: every line as it was, in its order, fingers included.
+  EXPECT_EQ(write_pig(*score).substr(write_pig(*score).find('\n') + 1),
+            std::string(kDatasetStyle).substr(std::string(kDatasetStyle).find('\n') + 1));
+  // Only the finger column changes when the fingers do.
+  Score refingered = *score;
+  for (Note& n : refingered.notes) {
+    n.finger = 3;
+    n.finger_substitute = 0;
+    n.finger_sequence.clear();
+  }
+  const std::string written = write_pig(refingered);
+  EXPECT_NE(written.find("\n0\t0.250000\t0.600000\tDb5\t74\t-1\t0\t3\n"), std::string::npos)
+      << written;
+  EXPECT_NE(written.find("\n3\t1.000000\t1.250000\tE#2\t-1\t-1\t1\t-3\n"), std::string::npos)
+      << written;
+  // Still out of range: a velocity below -1, a sixth finger in a substitution.
+  EXPECT_FALSE(read_pig("0\t0\t1\tC4\t64\t-2\t0\t1\n", "bad.txt").ok());
+  EXPECT_FALSE(read_pig("0\t0\t1\tC4\t64\t64\t0\t1_2_3_4_5_1\n", "bad.txt").ok());
 }
 
 TEST(PigFormatTest, WriteThenReadRoundTrips) {
