@@ -8,7 +8,8 @@
 namespace tutti::editor {
 namespace {
 
-constexpr double kSameTime_s = 1e-6;
+// Times are written to the millisecond; two within half of one are the same.
+constexpr double kSameTime_s = 0.0005;
 
 std::string seconds(double t) {
   char text[32];
@@ -74,9 +75,12 @@ void insert_time(std::vector<double>& times, double t) {
   times.insert(std::upper_bound(times.begin(), times.end(), t), t);
 }
 
+// A time as the scene file says it: to the millisecond (6.667, not 6.666666666666667).
+double to_millisecond(double t) { return std::round(t * 1000.0) / 1000.0; }
+
 Json time_array(const std::vector<double>& times) {
   Json out = Json::array();
-  for (double t : times) out.push_back(t);
+  for (double t : times) out.push_back(to_millisecond(t));
   return out;
 }
 

@@ -192,8 +192,11 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
           add_breath(json, *index, session.breath_boundary(*index, number(command, 2)))));
     }
     if (action == "delete-breath") {
-      return edit_result(session.apply(
-          delete_breath(json, *index, session.breath_boundary(*index, number(command, 2)))));
+      // The breath at that time — added, from a mark or from the rules — not the next boundary.
+      auto breath = session.breath_near(*index, number(command, 2));
+      if (!breath) return at(script, command, breath.error().message);
+      return edit_result(
+          session.apply(delete_breath(json, *index, breath->boundary_s, breath->marked)));
     }
     scene::Expression e;
     if (command.words[2] == "strain") {

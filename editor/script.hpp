@@ -6,7 +6,8 @@
 //   set-variation "Trumpet 2" sway_amount 0.8     (or "seed" as the value: back to the seed)
 //   reroll-seed "Trumpet 2"
 //   add-breath "Trombone 1" 6.0                   breathe before the first note at or after 6 s
-//   delete-breath "Trombone 1" 10.0               no breath at the boundary of the note at 10 s
+//   delete-breath "Trombone 1" 10.0               the breath at 10 s goes (an added one, a mark's
+//                                                 or the rules'); none near 10 s is an error
 //   add-cue 16.0
 //   add-expression "Trumpet 1" strain 4 6 [0.8]
 //   cut close 12.5                                a camera cut to camera "close" at 12.5 s

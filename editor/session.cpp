@@ -1,5 +1,11 @@
 #include <tutti/editor/session.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
 #include <chrono>
 
 #include <tutti/performance/families.hpp>
@@ -67,10 +73,46 @@ double Session::breath_boundary(std::size_t performer, double t) const {
   for (const TimelineLane& lane : timeline_.lanes) {
     if (lane.pianist || lane.performer != performer) continue;
     for (const TimelineNote& note : lane.notes) {
-      if (note.playable && note.start_s >= t - 1e-9) return note.start_s;
+      // Times are written to the millisecond: a note up to half of one before t is t's.
+      if (note.playable && note.start_s >= t - 0.0005) return note.start_s;
     }
   }
   return t;
+}
+
+Result<TimelineBreath> Session::breath_near(std::size_t performer, double t) const {
+  for (const TimelineLane& lane : timeline_.lanes) {
+    if (lane.pianist || lane.performer != performer) continue;
+    const TimelineBreath* best = nullptr;
+    for (const TimelineBreath& breath : lane.breaths) {
+      const bool near = std::abs(breath.boundary_s - t) <= 0.1 ||
+                        (t >= breath.prepare_s - 1e-9 && t <= breath.end_s + 1e-9);
+      if (near && (best == nullptr || std::abs(breath.boundary_s - t) < std::abs(best->boundary_s - t))) {
+        best = &breath;
+      }
+    }
+    if (best != nullptr) return *best;
+    std::vector<const TimelineBreath*> nearest;
+    for (const TimelineBreath& breath : lane.breaths) nearest.push_back(&breath);
+    std::sort(nearest.begin(), nearest.end(), [&](const TimelineBreath* a, const TimelineBreath* b) {
+      return std::abs(a->boundary_s - t) < std::abs(b->boundary_s - t);
+    });
+    if (nearest.size() > 4) nearest.resize(4);
+    std::sort(nearest.begin(), nearest.end(), [](const TimelineBreath* a, const TimelineBreath* b) {
+      return a->boundary_s < b->boundary_s;
+    });
+    std::string list;
+    for (const TimelineBreath* breath : nearest) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3f", breath->boundary_s);
+      list += (list.empty() ? "" : ", ") + std::string(text);
+    }
+    char at[32];
+    std::snprintf(at, sizeof at, "%.3f", t);
+    return Error{"no breath of \"" + lane.name + "\" at " + at + " s" +
+                 (list.empty() ? std::string(" (it has none)") : " (nearest at " + list + " s)")};
+  }
+  return Error{"performer " + std::to_string(performer) + " has no breaths (not a brass player)"};
 }
 
 Status Session::recover_autosave() {

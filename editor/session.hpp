@@ -45,6 +45,10 @@ class Session {
   // at or after t (t itself after the last note). Marks are stored there, so a mark and the
   // breath it makes share one time.
   double breath_boundary(std::size_t performer, double t) const;
+  // The breath of brass performer `performer` at `t`: the one whose inhaling (from its
+  // preparation to its note) holds t, or whose note starts within 0.1 s of it, the nearest; an
+  // error naming the breaths there are when none is.
+  Result<TimelineBreath> breath_near(std::size_t performer, double t) const;
 
  private:
   Session(Document document, stage::StageOptions options)

@@ -109,8 +109,9 @@ struct Score {
   std::vector<KeySignature> key_signatures;    // sorted by tick
   std::vector<PedalSpan> pedal_spans;          // sorted by (part, onset)
   std::vector<TextEvent> texts;                // sorted by tick
-  // A PIG file's note lines as read: the columns before the finger (id, onset, offset, spelled
-  // pitch, velocities, channel) and the line each came from (Note::source_index), in file order.
+  // A PIG file's note lines as read: the text before the finger column (id, onset, offset,
+  // spelled pitch, velocities, channel, with their spacing) and the line each came from
+  // (Note::source_index), in file order.
   // write_pig gives them back unchanged but for the finger, so line-by-line tools can compare.
   struct PigRow {
     int line = 0;

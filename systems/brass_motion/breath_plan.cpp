@@ -332,7 +332,10 @@ void add_segment(BreathPlan& plan, double start_s, double end_s, double from, do
 // The played position a mark at t refers to (the first onset >= t), or played.size() for none.
 std::size_t marked_note(const std::vector<Played>& played, double t) {
   if (!std::isfinite(t)) return played.size();
-  const auto it = std::lower_bound(played.begin(), played.end(), t - kTimeTolerance,
+  // Marks are written to the millisecond (the editor rounds them): a note starting up to half a
+  // millisecond before the mark's time is the one it names.
+  constexpr double kMarkTolerance = 0.0005;
+  const auto it = std::lower_bound(played.begin(), played.end(), t - kMarkTolerance,
                                    [](const Played& n, double value) { return n.on_s < value; });
   return static_cast<std::size_t>(it - played.begin());
 }

@@ -146,7 +146,8 @@ TEST_F(EditorUi, ALanesMenuAddsABreathAndDeleteRemovesIt) {
   const auto& marks = s.document().scene().performers[2].breaths.add_s;
   ASSERT_EQ(marks.size(), 1u) << ui_.status;
   const double boundary = s.breath_boundary(2, 6.3);
-  EXPECT_DOUBLE_EQ(marks[0], boundary) << "the mark names the next note, where it was asked for";
+  // The mark names the next note, where it was asked for (written to the millisecond).
+  EXPECT_EQ(marks[0], std::round(boundary * 1000.0) / 1000.0);
   const TimelineBreath* added = nullptr;
   for (const TimelineBreath& b : s.timeline().lanes[2].breaths) {
     if (std::abs(b.boundary_s - boundary) < 1e-6) added = &b;

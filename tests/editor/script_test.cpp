@@ -3,6 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 #include "editor_test_support.hpp"
 #include <tutti/scene/load_scene.hpp>
 
@@ -89,13 +94,59 @@ TEST(Script, EditsSaveAndQuit) {
   auto saved = scene::load_scene(file);
   ASSERT_TRUE(saved) << saved.error().message;
   EXPECT_DOUBLE_EQ(*saved->performers[1].variation.sway_amount, 0.8);
-  // The mark is stored at the boundary it names: the first note at or after 6 s.
+  // The mark is stored at the boundary it names (the first note at or after 6 s), to the
+  // millisecond.
   const double boundary = (*session)->breath_boundary(2, 6.0);
   EXPECT_GT(boundary, 6.0);
-  EXPECT_EQ(saved->performers[2].breaths.add_s, std::vector<double>{boundary});
+  ASSERT_EQ(saved->performers[2].breaths.add_s.size(), 1u);
+  EXPECT_EQ(saved->performers[2].breaths.add_s[0], std::round(boundary * 1000.0) / 1000.0);
   ASSERT_EQ(saved->performers[0].expressions.size(), 1u);
   EXPECT_DOUBLE_EQ(saved->performers[0].expressions[0].amount, 0.7);
   EXPECT_EQ(saved->cameras[saved->shots[saved->shot_at(12.6)].camera].name, "wide");
+}
+
+// The breath round trip: a breath added at 6.4 s lands on the next note's start (6.667 s, written
+// to the millisecond); saved, reopened, `delete-breath` at that time removes that breath — not a
+// rule's breath further on — and the scene is what it was. A time with no breath near is an error.
+TEST(Script, ABreathAddedSavedAndReopenedIsDeletedAtItsTime) {
+  ScratchDir dir;
+  const auto file = dir.copy_scene("quartet.json");
+  const nlohmann::json original = nlohmann::json::parse(std::ifstream(file));
+  RecordingHost host;
+  {
+    auto session = Session::open(file);
+    ASSERT_TRUE(session) << session.error().message;
+    auto script = parse_script("add-breath \"Trombone 1\" 6.4\nsave\nquit\n", "a.txt");
+    ASSERT_TRUE(script);
+    ASSERT_TRUE(run_all(*script, **session, host));
+  }
+  const nlohmann::json added = nlohmann::json::parse(std::ifstream(file));
+  ASSERT_TRUE(added["performers"][2].contains("breaths"));
+  const double written = added["performers"][2]["breaths"]["add"][0].get<double>();
+  EXPECT_EQ(written, std::round(written * 1000.0) / 1000.0) << written;
+  EXPECT_GT(written, 6.4);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", written);
+  {
+    auto session = Session::open(file);
+    ASSERT_TRUE(session) << session.error().message;
+    auto missing = parse_script("delete-breath \"Trombone 1\" 8.2\n", "b.txt");
+    ASSERT_TRUE(missing);
+    auto refused = run_all(*missing, **session, host);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().message.find("b.txt:1: no breath of \"Trombone 1\" at 8.200 s"),
+              std::string::npos)
+        << refused.error().message;
+    auto script = parse_script(std::string("delete-breath \"Trombone 1\" ") + text +
+                                   "\nsave\nquit\n",
+                               "b.txt");
+    ASSERT_TRUE(script);
+    auto step = run_all(*script, **session, host);
+    ASSERT_TRUE(step) << step.error().message;
+  }
+  const nlohmann::json after = nlohmann::json::parse(std::ifstream(file));
+  EXPECT_EQ(after["performers"][2], original["performers"][2]) << after["performers"][2].dump();
+  EXPECT_EQ(after, original);
 }
 
 TEST(Script, UnknownPerformerNamesTheOnesThere) {

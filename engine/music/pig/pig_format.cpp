@@ -155,9 +155,10 @@ Result<Score> read_pig(std::string_view text, const std::string& source_name) {
     }
     note.source_index = line_number - 1;
     score.notes.push_back(note);
-    std::string columns(fields[0]);
-    for (std::size_t k = 1; k < 7; ++k) columns += "\t" + std::string(fields[k]);
-    score.pig_rows.push_back({note.source_index, std::move(columns)});
+    // The line as it was up to its finger column (its spacing too: a first field "//x" after a
+    // tab is a note, not a comment).
+    score.pig_rows.push_back({note.source_index, std::string(line.substr(
+                                                     0, static_cast<std::size_t>(fields[7].data() - line.data())))});
     seen_note = true;
   }
   if (!seen_note) return Error{source_name + ": no notes (not a PIG fingering file?)"};
@@ -218,7 +219,7 @@ std::string write_pig(const Score& score) {
     for (const Score::PigRow& row : score.pig_rows) {
       const auto line = static_cast<std::size_t>(row.line);
       const Note* note = line < by_line.size() ? by_line[line] : nullptr;
-      out << row.columns << '\t' << (note != nullptr ? finger_column(score, *note) : "0") << '\n';
+      out << row.columns << (note != nullptr ? finger_column(score, *note) : "0") << '\n';
     }
     return out.str();
   }

@@ -88,6 +88,12 @@ TEST(PigFormatTest, ReadsDatasetStyleVelocitiesAndLongSubstitutions) {
       << written;
   EXPECT_NE(written.find("\n3\t1.000000\t1.250000\tE#2\t-1\t-1\t1\t-3\n"), std::string::npos)
       << written;
+  // A first field that starts with "//" after a tab is a note, and stays one when written back.
+  auto slashes = read_pig("\t//x\t0.5\t1.0\tC4\t64\t80\t0\t1\n", "slashes.txt");
+  ASSERT_TRUE(slashes.ok()) << slashes.error().message;
+  auto again = read_pig(write_pig(*slashes), "again.txt");
+  ASSERT_TRUE(again.ok()) << again.error().message;
+  EXPECT_EQ(again->notes.size(), 1u);
   // Still out of range: a velocity below -1, a sixth finger in a substitution.
   EXPECT_FALSE(read_pig("0\t0\t1\tC4\t64\t-2\t0\t1\n", "bad.txt").ok());
   EXPECT_FALSE(read_pig("0\t0\t1\tC4\t64\t64\t0\t1_2_3_4_5_1\n", "bad.txt").ok());
