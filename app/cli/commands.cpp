@@ -1,6 +1,7 @@
 #include <tutti/cli/brass_command.hpp>
 #include <tutti/cli/check_pose_command.hpp>
 #include <tutti/cli/rig_command.hpp>
+#include <tutti/cli/scene_command.hpp>
 #include <tutti/cli/commands.hpp>
 #include <tutti/cli/concat_command.hpp>
 #include <tutti/cli/export_command.hpp>
@@ -22,6 +23,7 @@ void register_commands(Commands& commands) {
   register_fingering_command(commands);
   register_fit_fingering_command(commands);
   register_brass_command(commands);
+  register_scene_command(commands);
   register_render_command(commands);
   register_sync_report_command(commands);
   register_check_pose_command(commands);

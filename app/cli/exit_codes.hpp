@@ -1,9 +1,27 @@
 #pragma once
+// The exit codes of every tutti program (README "Exit codes"):
+//   0  done
+//   1  tutti's own fault (an internal error; please report it)
+//   2  bad input or usage: the message names the file or option and what is wrong
+//   3  the machine lacks something: a Vulkan device, ffmpeg, a sound font, a display
+
+#include <tutti/core/result.hpp>
 
 namespace tutti::app {
 
 inline constexpr int kExitOk = 0;
-// Bad input (unreadable, broken or hostile file) and bad usage: the message says which.
+inline constexpr int kExitInternal = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitEnvironment = 3;
+
+// The exit code for an error, from its ErrorCode.
+inline int exit_code_of(const Error& error) {
+  switch (error.code) {
+    case ErrorCode::environment: return kExitEnvironment;
+    case ErrorCode::internal: return kExitInternal;
+    case ErrorCode::bad_input: break;
+  }
+  return kExitBadInput;
+}
 
 }  // namespace tutti::app

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <tutti/cli/exit_codes.hpp>
+#include <tutti/cli/stage_scene.hpp>
 #include <tutti/cli/play_live.hpp>
 #include <tutti/image/png.hpp>
 #include <tutti/render/frame_target.hpp>
@@ -139,8 +140,10 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     }
     loop = runtime::LoopRange{*a, *b};
   }
-  auto scene = scene::load_scene(o.scene);
+  std::vector<std::string> draft_notes;
+  auto scene = load_scene_or_music(o.scene, &draft_notes);
   if (!scene) return fail(scene.error().message);
+  for (const std::string& note : draft_notes) err << "note: " << note << "\n";
   auto live_play =
       LivePlay::open({o.midi_in, o.keyboard_piano, o.soundfont, o.audio_driver}, *scene);
   if (!live_play) return fail(live_play.error().message);
@@ -303,7 +306,8 @@ void register_play_command(Commands& commands) {
       "play",
       "Play a scene live in a window with its sound (keys: Space play/pause, Left/Right seek, "
       "Home start, 0 director, 1-9 camera, F or drag free camera, [ ] \\ loop, - = tempo, Esc)");
-  command.option("SCENE", options->scene, "scene file").required();
+  command.option("SCENE", options->scene, "scene file, or a .mid / .musicxml / .mxl piece")
+      .required();
   command.option("--tempo", options->tempo, "practice tempo, 0.25..2 (0.5 = half speed)");
   command.option("--camera", options->camera, "start on this scene camera (not the shot list)");
   command.option("--start", options->start, "start at this time (seconds of the music)");

@@ -13,6 +13,7 @@
 #include <tutti/cli/frame_range.hpp>
 #include <tutti/cli/scene_audio.hpp>
 #include <tutti/cli/slice_tag.hpp>
+#include <tutti/cli/stage_scene.hpp>
 #include <tutti/cli/video_pipe.hpp>
 #include <tutti/audio/wav_file.hpp>
 #include <tutti/image/png.hpp>
@@ -110,8 +111,10 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   };
   auto kind = output_kind(o);
   if (!kind) return fail(kind.error().message);
-  auto scene = scene::load_scene(o.scene);
+  std::vector<std::string> draft_notes;
+  auto scene = load_scene_or_music(o.scene, &draft_notes);
   if (!scene) return fail(scene.error().message);
+  for (const std::string& note : draft_notes) err << "note: " << note << "\n";
   int width = scene->output.width;
   int height = scene->output.height;
   if (!o.size.empty()) {
@@ -305,9 +308,11 @@ void register_render_command(Commands& commands) {
   auto state = std::make_shared<State>();
   Command& command = commands.add(
       "render",
-      "Render a scene (content/scenes/*.json) offline on the Vulkan device: H.264 .mp4, a folder "
-      "of PNG frames, or one .png with --still");
-  command.option("SCENE", state->options.scene, "scene file").required();
+      "Render a scene (content/scenes/*.json), or a MIDI / MusicXML piece as `tutti scene new` "
+      "would stage it, offline on the Vulkan device: H.264 .mp4, a folder of PNG frames, or one "
+      ".png with --still");
+  command.option("SCENE", state->options.scene, "scene file, or a .mid / .musicxml / .mxl piece")
+      .required();
   command.option("-o,--output", state->options.output, "OUT.mp4, OUT.png (--still) or FOLDER/")
       .required();
   command.option("--size", state->options.size, "WxH (default: the scene's)");

@@ -135,6 +135,28 @@ TEST_F(RenderCommandTest, VideoCarriesTheMusicAsAacOfTheSlicesLength) {
   EXPECT_EQ(probe_streams(dir_ / "without.mp4"), "video,2.000000\n");
 }
 
+// `tutti render PIECE -o out.mp4` on a bare third-party MusicXML file with a trumpet, a horn
+// and a piano part: the scene `tutti scene new` would write, staged in memory, to a video with
+// its music.
+TEST_F(RenderCommandTest, ABarePieceWithBrassAndPianoRendersToAVideoWithSound) {
+  RenderOptions o;
+  o.scene = std::filesystem::path(TUTTI_TESTDATA_DIR) / "musicxml" / "lilypond-test-suite" /
+            "72a-TransposingInstruments.xml";
+  if (!std::filesystem::exists(o.scene)) GTEST_SKIP() << "SKIPPED: no ../shared/testdata";
+  o.seconds = "0:3";
+  o.output = dir_ / "piece.mp4";
+  o.wav = dir_ / "piece.wav";
+  std::string error;
+  ASSERT_EQ(run(o, &error), 0) << error;
+  EXPECT_EQ(probe_streams(dir_ / "piece.mp4"), "video,3.000000\naudio,3.000000\n");
+  auto sound = audio::read_wav(dir_ / "piece.wav");
+  ASSERT_TRUE(sound) << sound.error().message;
+  double sum = 0.0;
+  for (std::int16_t v : sound->samples) sum += static_cast<double>(v) * v;
+  EXPECT_GT(std::sqrt(sum / static_cast<double>(sound->samples.size())), 300.0) << "audible";
+
+}
+
 TEST_F(RenderCommandTest, ASlicesWavHasExactlyTheFullRendersSamples) {
   RenderOptions o;
   o.scene = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" / "quartet.json";

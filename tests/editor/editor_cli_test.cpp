@@ -181,6 +181,41 @@ TEST(EditorCli, PianoPinRoundTrip) {
   std::printf("piano: %d pixels differ at %.3f s after the pin\n", changed, t);
 }
 
+// `tutti scene new` on a third-party chorale writes a scene the editor opens, edits and saves, and
+// `tutti render` shows the edit; an existing scene file is never replaced without --force.
+TEST(EditorCli, ASceneMadeFromAPieceLoadsEditsAndRenders) {
+  if (!have_display()) GTEST_SKIP() << "no display";
+  const std::filesystem::path piece =
+      std::filesystem::path(TUTTI_TESTDATA_DIR) / "musicxml" / "music21" / "bwv29.8.mxl";
+  if (!std::filesystem::exists(piece)) GTEST_SKIP() << "no ../shared/testdata";
+  ScratchDir dir;
+  const auto scene = dir.path() / "chorale.json";
+  int code = 0;
+  std::string output =
+      run(quoted(kTutti) + " scene new " + quoted(piece) + " -o " + quoted(scene), code);
+  ASSERT_EQ(code, 0) << output;
+  EXPECT_NE(output.find("3 brass players"), std::string::npos) << output;
+  EXPECT_NE(output.find("not played"), std::string::npos) << output;
+  const std::string written = read_text(scene);
+  output = run(quoted(kTutti) + " scene new " + quoted(piece) + " -o " + quoted(scene), code);
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find("already exists (--force replaces it)"), std::string::npos) << output;
+  EXPECT_EQ(read_text(scene), written);
+
+  const auto script = dir.write("edit.txt",
+                                "set-variation \"Trumpet 2\" sway_amount 1.0\n"
+                                "cut trumpet_2_front 8.0\nsave\nquit\n");
+  output = run(editor_command(scene, script), code);
+  ASSERT_EQ(code, 0) << output;
+  auto saved = scene::load_scene(scene);
+  ASSERT_TRUE(saved) << saved.error().message;
+  EXPECT_DOUBLE_EQ(*saved->performers[1].variation.sway_amount, 1.0);
+  EXPECT_EQ(saved->camera_at(9.0).name, "trumpet_2_front");
+  const int changed = differing_pixels(still(backup_path(scene), 9.0, dir.path() / "before.png"),
+                                       still(scene, 9.0, dir.path() / "after.png"));
+  EXPECT_GT(changed, 5000) << "the cut to Trumpet 2 is on screen at 9 s";
+}
+
 TEST(EditorCli, KilledWhileSavingThePreviousFileIsIntact) {
   if (!have_display()) GTEST_SKIP() << "no display";
   ScratchDir dir;

@@ -1,0 +1,48 @@
+#pragma once
+// A scene drafted from a piece of music alone (`tutti scene new`, `tutti render PIECE.mid`): the
+// piano parts go to the pianist, each brass part gets as many players as it has voices, on the
+// instrument its name or General MIDI program names; the players sit in an arc by section
+// (trumpets, horns, trombones, euphoniums, tubas from the audience's left), beside the piano when
+// there is one; cameras frame the whole group, each section and each player, and the shot list
+// cuts, every few bars, to whoever plays the most notes there. Parts tutti cannot play are
+// left out with a note naming them.
+//
+// The result is a scene document (scene/README.md), so what `tutti scene new` writes and what
+// `tutti render PIECE.mid` plays are the same scene. Deterministic: the same score gives the same
+// document.
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include <tutti/core/result.hpp>
+#include <tutti/music/score.hpp>
+
+namespace tutti::performance {
+
+struct DraftedScene {
+  nlohmann::ordered_json document;  // keys in the order scene/README.md lists them
+  // One line each, for the user: parts not played and why.
+  std::vector<std::string> notes;
+};
+
+// `music_reference`: the "music" entry as written (relative to the scene file's folder, or
+// absolute). Error when no part is one tutti plays, naming the parts.
+Result<DraftedScene> draft_scene(const music::Score& score,
+                                 const std::filesystem::path& music_reference);
+
+// The document as the hand-written scenes look: an object per line where it fits in 100
+// characters, number lists on one line.
+std::string format_scene_document(const nlohmann::ordered_json& document);
+
+// The "music" entry for a scene written to `scene_file` that plays `music_file`: relative to the
+// scene's folder when both are on one tree, else absolute.
+std::filesystem::path music_reference_from(const std::filesystem::path& scene_file,
+                                           const std::filesystem::path& music_file);
+
+// True for a file name tutti reads as music (.mid, .midi, .kar, .musicxml, .xml, .mxl, .txt PIG)
+// rather than as a scene (.json).
+bool is_music_file(const std::filesystem::path& path);
+
+}  // namespace tutti::performance
