@@ -22,7 +22,6 @@
 namespace tutti::editor {
 namespace {
 
-constexpr int kExitFailed = 1;
 
 bool parse_size(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
   unsigned w = 0, h = 0;
@@ -103,9 +102,9 @@ class Editor final : public ScriptHost {
   double now() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - origin_).count();
   }
-  int fail(const std::string& message) {
-    err_ << "error: " << message << "\n";
-    return kExitFailed;
+  int fail(const Error& error) {
+    err_ << "error: " << error.message << "\n";
+    return app::exit_code_of(error);
   }
   Status frame();
   void viewport_input();
@@ -229,18 +228,18 @@ int Editor::run() {
   window_options.height = height;
   window_options.title = "tutti-editor " + options_.scene.filename().string();
   auto window = render::Window::create(window_options);
-  if (!window) return fail(window.error().message);
+  if (!window) return fail(window.error());
   window_ = std::move(*window);
   render::VulkanContextOptions context_options;
   context_options.validation = options_.validate;
   render::require_presentation(*window_, context_options);
   auto context = render::VulkanContext::create(context_options);
-  if (!context) return fail(context.error().message);
+  if (!context) return fail(context.error());
   context_ = std::move(*context);
   render::WindowTargetOptions target_options;
   target_options.present_mode = VK_PRESENT_MODE_MAILBOX_KHR;
   auto target = render::WindowTarget::create(*context_, *window_, target_options);
-  if (!target) return fail(target.error().message);
+  if (!target) return fail(target.error());
   target_ = std::move(*target);
 
   runtime::ScenePlayerOptions player_options;
@@ -248,11 +247,15 @@ int Editor::run() {
   player_options.sound_options.driver = options_.audio_driver;
   auto player =
       runtime::ScenePlayer::create(*context_, *target_, session_->shared_stage(), player_options);
-  if (!player) return fail(player.error().message);
+  if (!player) return fail(player.error());
   player_ = std::move(*player);
+  if (const audio::LiveOutput* sound = player_->transport().output();
+      sound != nullptr && sound->simulated() && options_.audio_driver != "simulated") {
+    out_ << "editor: no sound device: playing silently\n";
+  }
   shown_revision_ = session_->stage_revision();
   auto imgui = runtime::ImGuiLayer::create(*context_, *window_, *target_);
-  if (!imgui) return fail(imgui.error().message);
+  if (!imgui) return fail(imgui.error());
   imgui_ = std::move(*imgui);
 
   ui_.view_start_s = session_->timeline().start_s;
@@ -270,17 +273,17 @@ int Editor::run() {
     if (Status s = frame(); !s) {
       // Whatever went wrong, unsaved edits stay in the autosave.
       (void)session_->document().autosave();
-      return fail(s.error().message);
+      return fail(s.error());
     }
     if (!script) continue;
     if (next_command >= script->commands.size()) {
       if (session_->document().dirty()) (void)session_->document().autosave();
-      return fail(script->file + ": ended without quit");
+      return fail(Error{script->file + ": ended without quit"});
     }
     auto step = run_script_command(*script, script->commands[next_command++], *session_, *this);
     if (!step) {
       (void)session_->document().autosave();
-      return fail(step.error().message);
+      return fail(step.error());
     }
     const ScriptCommand& done = script->commands[next_command - 1];
     out_ << "editor: " << script->file << ":" << done.line << ": " << done.words[0] << " done\n"

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include <tutti/ensemble_variation/variation_params.hpp>
+#include <tutti/runtime/input_bindings.hpp>
 
 namespace tutti::editor {
 namespace {
@@ -127,7 +128,11 @@ void draw_transport(Session& session, UiState& ui, UiRequests& out) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90);
   float tempo = static_cast<float>(ui.tempo);
-  if (ImGui::SliderFloat("tempo", &tempo, 0.25f, 2.0f, "%.2fx")) out.tempo = tempo;
+  if (ImGui::SliderFloat("tempo", &tempo, static_cast<float>(runtime::kMinTempo),
+                         static_cast<float>(runtime::kMaxTempo), "%.2fx",
+                         ImGuiSliderFlags_Logarithmic)) {
+    out.tempo = tempo;
+  }
   ImGui::SameLine();
   const Document& doc = session.document();
   if (ImGui::Button("Undo")) request(ui, PendingAction::Kind::undo);

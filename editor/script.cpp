@@ -6,6 +6,10 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string_view>
+#include <vector>
+
+#include <tutti/core/did_you_mean.hpp>
 
 namespace tutti::editor {
 namespace {
@@ -122,7 +126,11 @@ Result<Script> parse_script(const std::string& text, const std::string& file_nam
     command.words = std::move(*words);
     const auto action = actions().find(command.words[0]);
     if (action == actions().end()) {
-      return at(script, command, "unknown command \"" + command.words[0] + "\"");
+      std::vector<std::string_view> names;
+      for (const auto& [name, unused] : actions()) names.push_back(name);
+      return at(script, command,
+                "unknown command \"" + command.words[0] + "\"" +
+                    did_you_mean(command.words[0], names));
     }
     const int args = static_cast<int>(command.words.size()) - 1;
     if (args < action->second.min_args || args > action->second.max_args) {

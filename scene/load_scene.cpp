@@ -8,6 +8,7 @@
 
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/content/content_dir.hpp>
+#include <tutti/core/did_you_mean.hpp>
 #include <tutti/core/file_io.hpp>
 #include <tutti/music/load_score.hpp>
 #include <tutti/scene/asset_mapping.hpp>
@@ -125,7 +126,10 @@ Status SceneParser::parse_variation(const json& object, const std::string& path,
     if (field == kVariationFields.end()) {
       std::vector<std::string> known;
       for (const VariationField& f : kVariationFields) known.emplace_back(f.key);
-      return reader_.error(join_path(path, item.key()), "unknown key (known: " + join(known) + ")");
+      const std::vector<std::string_view> names(known.begin(), known.end());
+      return reader_.error(join_path(path, item.key()),
+                           "unknown key" + did_you_mean(item.key(), names) + " (known: " +
+                               join(known) + ")");
     }
     auto value = reader_.number(object, path, item.key().c_str(), 0.0, 1.0);
     if (!value) return value.error();

@@ -175,20 +175,17 @@ void player_text(const PlayerReport& r, const brass::BrassMotionParams& motion, 
 }  // namespace
 
 int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err) {
-  auto fail = [&](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   auto score = music::load_score(options.file);
-  if (!score) return fail(score.error().message);
+  if (!score) return fail(score.error());
   auto known = brass::load_all_instruments();
-  if (!known) return fail(known.error().message);
+  if (!known) return fail(known.error());
   auto weights = brass::load_planner_weights();
-  if (!weights) return fail(weights.error().message);
+  if (!weights) return fail(weights.error());
   auto motion = brass::load_brass_motion_params();
-  if (!motion) return fail(motion.error().message);
+  if (!motion) return fail(motion.error());
   auto breath_params = brass::load_breath_params();
-  if (!breath_params) return fail(breath_params.error().message);
+  if (!breath_params) return fail(breath_params.error());
 
   const brass::Instrument* forced = nullptr;
   if (!options.instrument.empty()) {
@@ -236,7 +233,7 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
     for (int voice = 0; voice < part.voices; ++voice) {
       if (options.voice > 0 && voice != options.voice - 1) continue;
       auto line = brass::extract_line(*score, part.part, voice, *part.instrument);
-      if (!line) return fail(line.error().message);
+      if (!line) return fail(line.error());
       PlayerReport report;
       report.line = std::move(*line);
       report.summary = brass::plan_line(report.line, *weights, &*score);

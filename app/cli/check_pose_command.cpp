@@ -13,13 +13,10 @@
 namespace tutti::app {
 
 int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& err) {
-  auto fail = [&](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   if (o.fps < 1 || o.fps > 240) return fail("--fps " + std::to_string(o.fps) + ": must be 1..240");
   auto staged = stage_scene_file(o.scene, o.assets);
-  if (!staged) return fail(staged.error().message);
+  if (!staged) return fail(staged.error());
   stage::Stage& stage = **staged;
   const scene::Scene* scene = &stage.scene();
   performance::PoseCheckOptions options;
@@ -37,7 +34,7 @@ int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& e
     options.to_s = to;
   }
   auto report = performance::check_pose(stage, options);
-  if (!report) return fail(scene->source + ": " + report.error().message);
+  if (!report) return fail(Error{scene->source + ": " + report.error().message, report.error().code});
   bool over = false;
   for (const performance::PoseMeasure& m : report->measures) over = over || !m.within_limit();
   if (o.json) {

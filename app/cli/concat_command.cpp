@@ -70,10 +70,7 @@ struct RemoveOnExit {
 }  // namespace
 
 int run_concat(const ConcatOptions& o, std::ostream& out, std::ostream& err) {
-  const auto fail = [&err](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   if (o.output.extension() != ".mp4") {
     return fail(o.output.string() + ": the output is an .mp4 file");
   }
@@ -85,7 +82,7 @@ int run_concat(const ConcatOptions& o, std::ostream& out, std::ostream& err) {
       return fail(o.output.string() + ": is also one of the slices");
     }
     auto slice = read_slice(file);
-    if (!slice) return fail(slice.error().message);
+    if (!slice) return fail(slice.error());
     slices.push_back(std::move(*slice));
   }
   std::stable_sort(slices.begin(), slices.end(),
@@ -125,19 +122,19 @@ int run_concat(const ConcatOptions& o, std::ostream& out, std::ostream& err) {
   fs::path wav;
   if (o.audio) {
     auto scene = scene::load_scene(o.scene);
-    if (!scene) return fail(scene.error().message);
+    if (!scene) return fail(scene.error());
     stage::StageOptions stage_options;
     stage_options.asset_dir = o.assets;
     auto stage = performance::build_stage(*scene, stage_options);
-    if (!stage) return fail(scene->source + ": " + stage.error().message);
+    if (!stage) return fail(Error{scene->source + ": " + stage.error().message, stage.error().code});
     SceneAudioOptions audio_options;
     audio_options.sound_font = o.soundfont;
     audio_options.tempo_factor = whole.tempo;
     auto sound = render_scene_audio(**stage, whole.fps, whole.first, whole.end, audio_options);
-    if (!sound) return fail(sound.error().message);
+    if (!sound) return fail(sound.error());
     wav = o.output.parent_path() / ("." + o.output.filename().string() + ".tutti-audio.wav");
     temporary.paths.push_back(wav);
-    if (Status s = audio::write_wav(wav, *sound); !s) return fail(s.error().message);
+    if (Status s = audio::write_wav(wav, *sound); !s) return fail(s.error());
   }
   std::vector<std::string> args = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error",           "-f",
                                    "concat", "-safe",    "0",  "-i",        list_file.string()};
@@ -153,7 +150,7 @@ int run_concat(const ConcatOptions& o, std::ostream& out, std::ostream& err) {
   }
   args.insert(args.end(), {"-c:v", "copy", "-movflags", "+faststart", "-metadata",
                            "comment=" + format_slice_tag(whole), "-f", "mp4", partial.string()});
-  if (auto ran = run_tool(args, o.output.string()); !ran) return fail(ran.error().message);
+  if (auto ran = run_tool(args, o.output.string()); !ran) return fail(ran.error());
   std::error_code ec;
   fs::rename(partial, o.output, ec);
   if (ec) return fail(o.output.string() + ": cannot replace it (" + ec.message() + ")");

@@ -5,6 +5,9 @@
 //   2  bad input or usage: the message names the file or option and what is wrong
 //   3  the machine lacks something: a Vulkan device, ffmpeg, a sound font, a display
 
+#include <ostream>
+#include <string>
+
 #include <tutti/core/result.hpp>
 
 namespace tutti::app {
@@ -23,5 +26,16 @@ inline int exit_code_of(const Error& error) {
   }
   return kExitBadInput;
 }
+
+// A command's failure: "error: <message>" on `err`, and the exit code of the error's kind
+// (a plain message is bad input).
+struct Fail {
+  std::ostream& err;
+  int operator()(const Error& error) const {
+    err << "error: " << error.message << "\n";
+    return exit_code_of(error);
+  }
+  int operator()(const std::string& message) const { return (*this)(Error{message}); }
+};
 
 }  // namespace tutti::app

@@ -16,10 +16,7 @@
 namespace tutti::app {
 
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
-  const auto fail = [&err](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   if (o.output.extension() != ".glb") {
     return fail(o.output.string() + ": the output is a .glb file (binary glTF 2.0)");
   }
@@ -27,7 +24,7 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   if (!o.frames.empty() && !o.seconds.empty()) return fail("--frames and --seconds: give one");
 
   auto staged = stage_scene_file(o.scene, o.assets);
-  if (!staged) return fail(staged.error().message);
+  if (!staged) return fail(staged.error());
   stage::Stage& stage = **staged;
   const scene::Scene* scene = &stage.scene();
 
@@ -36,11 +33,11 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   FrameRange range{0, total};
   if (!o.frames.empty()) {
     auto parsed = parse_frame_range(o.frames, total);
-    if (!parsed) return fail(parsed.error().message);
+    if (!parsed) return fail(parsed.error());
     range = *parsed;
   } else if (!o.seconds.empty()) {
     auto parsed = parse_seconds_range(o.seconds, stage.start_s(), fps, total);
-    if (!parsed) return fail(parsed.error().message);
+    if (!parsed) return fail(parsed.error());
     range = *parsed;
   }
   if (range.end <= range.first) return fail(o.scene.string() + ": nothing to export");
@@ -48,11 +45,11 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   const gltf_export::KeyTolerances tolerances;
   auto exported = gltf_export::export_performance(
       stage, {fps, range.first, range.end - range.first}, tolerances);
-  if (!exported) return fail(exported.error().message);
+  if (!exported) return fail(exported.error());
   const gltf_export::ExportSummary& summary = *exported;
   const Status written =
       write_file_atomically(o.output, std::string(summary.glb.begin(), summary.glb.end()));
-  if (!written) return fail(written.error().message);
+  if (!written) return fail(written.error());
 
   if (o.json_summary) {
     nlohmann::json clips = nlohmann::json::array();

@@ -99,10 +99,7 @@ Status write_output(OutFormat format, const FingeringOptions& o, const music::Sc
 }  // namespace
 
 int run_fingering(const FingeringOptions& o, std::ostream& out, std::ostream& err) {
-  const auto fail = [&err](const Error& e) {
-    err << "error: " << e.message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   // Usage first, so a typo fails before any planning.
   const auto format = output_format(o);
   if (!format) return fail(format.error());

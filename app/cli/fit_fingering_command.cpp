@@ -23,10 +23,7 @@ std::string percent(double rate) {
 }  // namespace
 
 int run_fit_fingering(const FitFingeringOptions& o, std::ostream& out, std::ostream& err) {
-  auto fail = [&](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   if (o.inputs.empty()) return fail("fit-fingering: no annotated files given");
   if (o.output.empty()) return fail("fit-fingering: -o weights.json is required");
   if (o.rounds < 1 || o.rounds > 100) return fail("--rounds: must be within 1..100");
@@ -35,7 +32,7 @@ int run_fit_fingering(const FitFingeringOptions& o, std::ostream& out, std::ostr
   int marked = 0;
   for (const auto& input : o.inputs) {
     auto score = music::load_score(input);
-    if (!score) return fail(score.error().message);
+    if (!score) return fail(score.error());
     int file_marks = 0;
     for (const auto& note : score->notes) file_marks += note.finger != 0 ? 1 : 0;
     if (file_marks == 0) return fail(input.string() + ": no fingering marks to fit to");
@@ -44,7 +41,7 @@ int run_fit_fingering(const FitFingeringOptions& o, std::ostream& out, std::ostr
   }
 
   auto model = load_model_with_weights(o.start, o.hand_size, o.content_dir);
-  if (!model) return fail(model.error().message);
+  if (!model) return fail(model.error());
 
   piano::FitOptions fit;
   fit.max_rounds = o.rounds;
@@ -54,13 +51,13 @@ int run_fit_fingering(const FitFingeringOptions& o, std::ostream& out, std::ostr
   auto result = piano::fit_weights(annotated, model->weights, fit);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (!result) return fail(result.error().message);
+  if (!result) return fail(result.error());
 
   const Status saved = piano::save_cost_weights(
       result->weights, o.output,
       "fitted by tutti fit-fingering on " + std::to_string(o.inputs.size()) + " file(s), " +
           std::to_string(marked) + " marked notes, starting from " + o.start);
-  if (!saved) return fail(saved.error().message);
+  if (!saved) return fail(saved.error());
 
   out << "fitted " << marked << " marked notes in " << o.inputs.size() << " file(s): match "
       << percent(result->match_before) << " -> " << percent(result->match_after) << " ("

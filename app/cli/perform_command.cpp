@@ -42,10 +42,7 @@ nlohmann::json notes_json(const music::Score& score,
 }  // namespace
 
 int run_perform(const PerformOptions& o, std::ostream& out, std::ostream& err) {
-  const auto fail = [&err](const Error& e) {
-    err << "error: " << e.message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   if (!o.output.empty() && o.style == "all") {
     return fail(
         Error{"--style all: reports every style; give one style to write " + o.output.string()});
@@ -96,7 +93,7 @@ int run_perform(const PerformOptions& o, std::ostream& out, std::ostream& err) {
     in.seed = o.seed;
     auto performed = key_action::perform(in);
     if (!performed) return fail(performed.error());
-    out << style.name << ": " << key_action::format_report(performed->report) << "\n";
+    if (!o.json) out << style.name << ": " << key_action::format_report(performed->report) << "\n";
     if (!o.output.empty()) {
       const music::Score heard = key_action::performed_score(*score, performed->played);
       const std::vector<std::uint8_t> bytes = music::write_midi(heard);
@@ -104,7 +101,7 @@ int run_perform(const PerformOptions& o, std::ostream& out, std::ostream& err) {
         return fail(s.error());
       }
     }
-    if (!o.report_json.empty()) {
+    if (o.json) {
       const key_action::PerformanceReport& r = performed->report;
       report[style.name] = {{"notes", r.notes},
                             {"sounded", r.sounded},
@@ -121,11 +118,7 @@ int run_perform(const PerformOptions& o, std::ostream& out, std::ostream& err) {
                             {"played", notes_json(*score, performed->played)}};
     }
   }
-  if (!o.report_json.empty()) {
-    if (Status s = write_file_atomically(o.report_json, report.dump(1) + "\n"); !s) {
-      return fail(s.error());
-    }
-  }
+  if (o.json) out << report.dump(1) << "\n";
   return kExitOk;
 }
 
@@ -142,8 +135,8 @@ void register_perform_command(Commands& commands) {
                  "precise (default), gentle, beginner, or all (report only)");
   command.option("--seed", options->seed, "motor-noise seed (default 1)");
   command.option("--hand-size", options->hand_size, "small, medium or large");
-  command.option("--report-json", options->report_json,
-                 "write the report and every note's outcome as JSON");
+  command.flag("--json", options->json,
+               "print the report and every note's outcome as JSON (instead of text)");
   command.on_run(
       [options](std::ostream& out, std::ostream& err) { return run_perform(*options, out, err); });
 }

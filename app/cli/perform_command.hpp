@@ -22,7 +22,7 @@ struct PerformOptions {
   std::uint64_t seed = 1;
   std::string hand_size;              // hands.json preset; empty = its default
   std::filesystem::path content_dir;  // empty = piano::default_content_dir()
-  std::filesystem::path report_json;  // per-note outcomes as JSON; empty = none
+  bool json = false;  // the report and per-note outcomes as JSON on stdout, instead of text
 };
 
 int run_perform(const PerformOptions& options, std::ostream& out, std::ostream& err);

@@ -109,17 +109,17 @@ struct InputQueue {
 }  // namespace
 
 int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
-  auto fail = [&](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   // Everything that can be checked without a window is checked first.
   if (!(o.tempo >= runtime::kMinTempo && o.tempo <= runtime::kMaxTempo)) {
     char text[96];
-    std::snprintf(text, sizeof text, "--tempo %g: must be in [0.25, 2]", o.tempo);
+    std::snprintf(text, sizeof text, "--tempo %g: must be in [%g, %g]", o.tempo, runtime::kMinTempo,
+                  runtime::kMaxTempo);
     return fail(text);
   }
-  if (o.frames < 0) return fail("--frames " + std::to_string(o.frames) + ": must be 1 or more");
+  if (o.frames < 0) {
+    return fail("--frame-count " + std::to_string(o.frames) + ": must be 1 or more");
+  }
   if (!o.screenshot.empty() && o.screenshot.extension() != ".png") {
     return fail("--screenshot " + o.screenshot.string() + ": writes a .png file");
   }
@@ -142,11 +142,11 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   }
   std::vector<std::string> draft_notes;
   auto scene = load_scene_or_music(o.scene, &draft_notes);
-  if (!scene) return fail(scene.error().message);
+  if (!scene) return fail(scene.error());
   for (const std::string& note : draft_notes) err << "note: " << note << "\n";
   auto live_play =
       LivePlay::open({o.midi_in, o.keyboard_piano, o.soundfont, o.audio_driver}, *scene);
-  if (!live_play) return fail(live_play.error().message);
+  if (!live_play) return fail(live_play.error());
   LivePlay& live = **live_play;
   int fixed_camera = -1;
   if (!o.camera.empty()) {
@@ -161,18 +161,18 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   window_options.height = static_cast<std::uint32_t>(scene->output.height);
   window_options.title = "tutti play " + o.scene.filename().string();
   auto window = render::Window::create(window_options);
-  if (!window) return fail(window.error().message);
+  if (!window) return fail(window.error());
   render::VulkanContextOptions context_options;
   context_options.validation = o.validate;
   context_options.device = o.device;
   render::require_presentation(**window, context_options);
   auto context = render::VulkanContext::create(context_options);
-  if (!context) return fail(context.error().message);
+  if (!context) return fail(context.error());
   render::WindowTargetOptions target_options;
   target_options.samples = render::sample_count_flag(scene->output.msaa);
   target_options.present_mode = VK_PRESENT_MODE_MAILBOX_KHR;  // never wait for a vertical blank
   auto target = render::WindowTarget::create(**context, **window, target_options);
-  if (!target) return fail(target.error().message);
+  if (!target) return fail(target.error());
 
   if (o.audio_driver.empty()) quiet_alsa_errors();
   runtime::ScenePlayerOptions player_options;
@@ -182,19 +182,19 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   player_options.sound_options.driver = o.audio_driver;
   player_options.sound = !live.enabled();  // live: the notes that come in sound, not the score
   auto created = runtime::ScenePlayer::create(**context, **target, *scene, player_options);
-  if (!created) return fail(created.error().message);
+  if (!created) return fail(created.error());
   runtime::ScenePlayer& player = **created;
   runtime::Transport& transport = player.transport();
   for (const std::string& note : player.stage().notes()) err << "note: " << note << "\n";
   if (live.enabled()) {
     std::string notice;
-    if (Status s = live.attach(player.stage(), *scene, notice); !s) return fail(s.error().message);
+    if (Status s = live.attach(player.stage(), *scene, notice); !s) return fail(s.error());
     if (!notice.empty()) out << notice << "\n";
     out << live.describe() << "\n";
   }
   if (const audio::LiveOutput* sound = transport.output(); sound && sound->simulated()) {
     if (o.audio_driver != "simulated") {
-      out << "play: no sound device; the clock runs on a simulated one (silent)\n";
+      out << "play: no sound device: playing silently\n";
     }
   }
 
@@ -236,7 +236,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     input.actions.clear();
     if (quit) break;
     // Paused and nothing asked for: the picture cannot change, so wait for input instead of
-    // drawing it again (not with --frames, which counts drawn frames).
+    // drawing it again (not with --frame-count, which counts drawn frames).
     if (o.frames == 0 && !live.enabled() && !transport.playing() && !acted && frames > 0 &&
         player.shown_time() == transport.time() && !resized()) {
       glfwWaitEventsTimeout(0.1);
@@ -246,7 +246,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     const bool last = o.frames > 0 && frames + 1 == o.frames;
     if (last && !o.screenshot.empty()) (*target)->capture_next_frame();
     auto frame = (*target)->begin_frame();
-    if (!frame) return fail(frame.error().message);
+    if (!frame) return fail(frame.error());
     // The time is read after begin_frame's wait for a free slot: the picture shows the music as
     // late as possible, and however long the last frame took, none is drawn for a stale time.
     if (live.enabled()) {
@@ -257,8 +257,8 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     } else {
       player.update(host_now());
     }
-    if (Status s = player.record(*frame, **target); !s) return fail(s.error().message);
-    if (auto id = (*target)->end_frame(); !id) return fail(id.error().message);
+    if (Status s = player.record(*frame, **target); !s) return fail(s.error());
+    if (auto id = (*target)->end_frame(); !id) return fail(id.error());
     ++frames;
     if (o.validate && (*context)->validation_log()->size() > 0) {
       return fail("Vulkan validation: " + (*context)->validation_log()->messages().front());
@@ -283,11 +283,11 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
 
   if (!o.screenshot.empty() && frames > 0 && o.frames > 0) {
     auto captured = (*target)->take_capture();
-    if (!captured) return fail(captured.error().message);
+    if (!captured) return fail(captured.error());
     if (Status s =
             image::write_png(o.screenshot, captured->rgba, captured->width, captured->height);
         !s) {
-      return fail(s.error().message);
+      return fail(s.error());
     }
     out << "play: wrote " << o.screenshot.string() << " (" << captured->width << "x"
         << captured->height << ")\n";
@@ -308,7 +308,7 @@ void register_play_command(Commands& commands) {
       "Home start, 0 director, 1-9 camera, F or drag free camera, [ ] \\ loop, - = tempo, Esc)");
   command.option("SCENE", options->scene, "scene file, or a .mid / .musicxml / .mxl piece")
       .required();
-  command.option("--tempo", options->tempo, "practice tempo, 0.25..2 (0.5 = half speed)");
+  command.option("--tempo", options->tempo, "practice tempo, 0.1..4 (0.5 = half speed)");
   command.option("--camera", options->camera, "start on this scene camera (not the shot list)");
   command.option("--start", options->start, "start at this time (seconds of the music)");
   command.option("--loop", options->loop, "A:B, play seconds [A, B) over and over");
@@ -318,7 +318,7 @@ void register_play_command(Commands& commands) {
   command.option("--audio-driver", options->audio_driver,
                  "FluidSynth audio driver (pulseaudio, alsa, ...; simulated: none)");
   command.option("--device", options->device, "Vulkan device: index or part of its name");
-  command.option("--frames", options->frames, "quit after this many frames");
+  command.option("--frame-count", options->frames, "quit after drawing this many frames");
   command.option("--screenshot", options->screenshot, "write the last frame to this .png");
   command.option("--midi-in", options->midi_in,
                  "live MIDI (ALSA sequencer): auto, none, CLIENT:PORT or a client name; the "

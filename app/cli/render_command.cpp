@@ -22,6 +22,7 @@
 #include <tutti/render/model_renderer.hpp>
 #include <tutti/render/offscreen_target.hpp>
 #include <tutti/render/vulkan_context.hpp>
+#include <tutti/runtime/input_bindings.hpp>
 #include <tutti/runtime/stage_renderer.hpp>
 #include <tutti/runtime/stage_view.hpp>
 #include <tutti/scene/load_scene.hpp>
@@ -105,20 +106,17 @@ class Progress {
 }  // namespace
 
 int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
-  auto fail = [&](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   auto kind = output_kind(o);
-  if (!kind) return fail(kind.error().message);
+  if (!kind) return fail(kind.error());
   std::vector<std::string> draft_notes;
   auto scene = load_scene_or_music(o.scene, &draft_notes);
-  if (!scene) return fail(scene.error().message);
+  if (!scene) return fail(scene.error());
   for (const std::string& note : draft_notes) err << "note: " << note << "\n";
   int width = scene->output.width;
   int height = scene->output.height;
   if (!o.size.empty()) {
-    if (Status s = parse_size(o.size, width, height); !s) return fail(s.error().message);
+    if (Status s = parse_size(o.size, width, height); !s) return fail(s.error());
   }
   const int fps = o.fps > 0 ? o.fps : scene->output.fps;
   if (o.fps < 0 || fps > 240) return fail("--fps " + std::to_string(o.fps) + ": must be 1..240");
@@ -129,7 +127,9 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   if (!o.shadows.empty() && o.shadows != "hard" && o.shadows != "soft") {
     return fail("--shadows \"" + o.shadows + "\": must be hard or soft");
   }
-  if (!(o.tempo >= 0.1 && o.tempo <= 4.0)) return fail("--tempo: must be in [0.1, 4]");
+  if (!(o.tempo >= runtime::kMinTempo && o.tempo <= runtime::kMaxTempo)) {
+    return fail("--tempo: must be in [0.1, 4]");
+  }
   const bool soft_shadows = o.shadows.empty() ? scene->output.soft_shadows : o.shadows == "soft";
 
   int fixed_camera = -1;
@@ -143,7 +143,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   stage::StageOptions stage_options;
   stage_options.asset_dir = o.assets;
   auto stage = performance::build_stage(*scene, stage_options);
-  if (!stage) return fail((*scene).source + ": " + stage.error().message);
+  if (!stage) return fail(Error{scene->source + ": " + stage.error().message, stage.error().code});
   stage::Stage& st = **stage;
 
   const std::int64_t total = frame_count(0.0, (st.end_s() - st.start_s()) / o.tempo, fps);
@@ -159,11 +159,11 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     return fail("--frames and --seconds: give one of them");
   } else if (!o.frames.empty()) {
     auto parsed = parse_frame_range(o.frames, total);
-    if (!parsed) return fail(parsed.error().message);
+    if (!parsed) return fail(parsed.error());
     range = *parsed;
   } else if (!o.seconds.empty()) {
     auto parsed = parse_seconds_range(o.seconds, st.start_s(), fps, total, o.tempo);
-    if (!parsed) return fail(parsed.error().message);
+    if (!parsed) return fail(parsed.error());
     range = *parsed;
   }
   if (range.end <= range.first) return fail(o.scene.string() + ": nothing to render");
@@ -172,15 +172,15 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   context_options.validation = o.validate;
   context_options.device = o.device;
   auto context = render::VulkanContext::create(context_options);
-  if (!context) return fail(context.error().message);
+  if (!context) return fail(context.error());
   auto target = render::OffscreenTarget::create(**context, static_cast<std::uint32_t>(width),
                                                 static_cast<std::uint32_t>(height), 2,
                                                 render::sample_count_flag(msaa));
-  if (!target) return fail(target.error().message);
+  if (!target) return fail(target.error());
   render::ModelRendererOptions renderer_options;
   renderer_options.shadow_taps = soft_shadows ? 4 : 1;
   auto renderer = runtime::StageRenderer::create(**context, **target, st, renderer_options);
-  if (!renderer) return fail(renderer.error().message);
+  if (!renderer) return fail(renderer.error());
 
   // Sound first: ffmpeg reads the WAV while the frames arrive. Without --wav the track goes
   // through a temporary file next to the video, removed at the end.
@@ -199,13 +199,13 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     audio_options.sound_font = o.soundfont;
     audio_options.tempo_factor = o.tempo;
     auto sound = render_scene_audio(st, fps, range.first, range.end, audio_options);
-    if (!sound) return fail(sound.error().message);
+    if (!sound) return fail(sound.error());
     if (audio_file.empty()) {
       audio_file = o.output;
       audio_file += ".tutti-audio.wav";
       temporary_audio.path = audio_file;
     }
-    if (Status s = audio::write_wav(audio_file, *sound); !s) return fail(s.error().message);
+    if (Status s = audio::write_wav(audio_file, *sound); !s) return fail(s.error());
   }
 
   std::unique_ptr<VideoPipe> video;
@@ -217,7 +217,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     auto opened = VideoPipe::open(o.output, static_cast<std::uint32_t>(width),
                                   static_cast<std::uint32_t>(height), fps,
                                   o.audio ? audio_file : std::filesystem::path{}, encoding);
-    if (!opened) return fail(opened.error().message);
+    if (!opened) return fail(opened.error());
     video = std::move(*opened);
   } else if (*kind == OutputKind::folder) {
     std::error_code ec;
@@ -270,24 +270,24 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     st.run({o.still.empty() ? 0.0 : std::strtod(o.still.c_str(), nullptr), 0.0});
     const double t = st.world().resource<ecs::FrameTime>()->t_s;
     auto frame = (*target)->begin_frame();
-    if (!frame) return fail(frame.error().message);
+    if (!frame) return fail(frame.error());
     if (Status s = (*renderer)->record(
             *frame, **target, st,
             fixed_camera >= 0
                 ? runtime::scene_camera(st, static_cast<std::size_t>(fixed_camera), aspect)
                 : runtime::camera_at(st, t, aspect));
         !s) {
-      return fail(s.error().message);
+      return fail(s.error());
     }
     auto id = (*target)->end_frame();
-    if (!id) return fail(id.error().message);
-    if (Status s = flush(); !s) return fail(s.error().message);
+    if (!id) return fail(id.error());
+    if (Status s = flush(); !s) return fail(s.error());
     pending_id = *id;
     pending_frame = k;
   }
-  if (Status s = flush(); !s) return fail(s.error().message);
+  if (Status s = flush(); !s) return fail(s.error());
   if (video) {
-    if (Status s = video->finish(); !s) return fail(s.error().message);
+    if (Status s = video->finish(); !s) return fail(s.error());
   }
   for (const std::string& note : st.notes()) err << "note: " << note << "\n";
   out << "render: wrote " << o.output.string() << " (" << (range.end - range.first) << " frame"

@@ -12,10 +12,7 @@
 namespace tutti::app {
 
 int run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
-  auto fail = [&](const Error& error) {
-    err << "error: " << error.message << "\n";
-    return exit_code_of(error);
-  };
+  const Fail fail{err};
   if (o.action != "new") {
     return fail(Error{"scene " + o.action + ": unknown action (the one there is: new)"});
   }

@@ -47,20 +47,17 @@ void add(piano::StreamingAgreement& total, const piano::StreamingAgreement& a) {
 }  // namespace
 
 int run_stream_report(const StreamReportOptions& o, std::ostream& out, std::ostream& err) {
-  auto fail = [&](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   if (o.inputs.empty()) return fail("no input files");
   for (int l : o.lookaheads) {
     if (l < 0) return fail("--lookahead " + std::to_string(l) + ": must be >= 0");
   }
   auto model = piano::load_fingering_model(o.weights);
-  if (!model) return fail(model.error().message);
+  if (!model) return fail(model.error());
   std::vector<music::Score> scores;
   for (const auto& input : o.inputs) {
     auto score = music::load_score(input);
-    if (!score) return fail(score.error().message);
+    if (!score) return fail(score.error());
     for (music::Note& n : score->notes) n.finger = 0;  // plan from scratch on both sides
     scores.push_back(std::move(*score));
   }

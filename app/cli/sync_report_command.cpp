@@ -40,17 +40,14 @@ std::string kinds_of(const SyncMatch& match) {
 }  // namespace
 
 int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream& err) {
-  auto fail = [&](const std::string& message) {
-    err << "error: " << message << "\n";
-    return kExitBadInput;
-  };
+  const Fail fail{err};
   if (!(o.tempo >= 0.1 && o.tempo <= 4.0)) return fail("--tempo: must be in [0.1, 4]");
   if (!(o.step_ms >= 0.05 && o.step_ms <= 10.0)) return fail("--step-ms: must be in [0.05, 10]");
   if (!(o.tolerance_ms >= 1.0 && o.tolerance_ms <= 500.0)) {
     return fail("--tolerance-ms: must be in [1, 500]");
   }
   auto built = stage_scene_file(o.scene, o.assets);
-  if (!built) return fail(built.error().message);
+  if (!built) return fail(built.error());
   stage::Stage& stage = **built;
   const scene::Scene* scene = &stage.scene();
 
@@ -61,9 +58,9 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
   audio_options.tempo_factor = o.tempo;
   audio_options.compensate_attacks = o.compensate_attacks;
   auto audio = render_scene_audio(stage, fps, 0, frames, audio_options);
-  if (!audio) return fail(audio.error().message);
+  if (!audio) return fail(audio.error());
   if (!o.wav.empty()) {
-    if (Status s = audio::write_wav(o.wav, *audio); !s) return fail(s.error().message);
+    if (Status s = audio::write_wav(o.wav, *audio); !s) return fail(s.error());
   }
 
   SyncOptions sync;

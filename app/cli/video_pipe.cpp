@@ -92,8 +92,10 @@ Status VideoPipe::write(std::span<const std::uint8_t> rgba) {
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       Status finished = finish();
-      return Error{path_.string() + ": ffmpeg stopped taking frames" +
-                   (finished ? std::string() : " (" + finished.error().message + ")")};
+      if (finished) return Error{path_.string() + ": ffmpeg stopped taking frames"};
+      // Its own error names the file already; a missing ffmpeg stays the machine's lack.
+      if (finished.error().code == ErrorCode::environment) return finished;
+      return Error{"ffmpeg stopped taking frames: " + finished.error().message};
     }
     done += static_cast<std::size_t>(n);
   }

@@ -7,8 +7,8 @@
 namespace tutti::runtime {
 namespace {
 
-constexpr std::array<double, 13> kTempoLadder = {0.25, 0.5, 0.6,  0.7, 0.75, 0.8, 0.9,
-                                                 1.0,  1.1, 1.25, 1.5, 1.75, 2.0};
+constexpr std::array<double, 16> kTempoLadder = {0.1, 0.25, 0.5, 0.6,  0.7, 0.75, 0.8, 0.9,
+                                                 1.0, 1.1,  1.25, 1.5, 1.75, 2.0, 3.0, 4.0};
 
 Action of(ActionKind kind) {
   Action action;

@@ -41,8 +41,9 @@ struct Action {
 };
 
 inline constexpr double kSeekStepS = 5.0;
-inline constexpr double kMinTempo = 0.25;
-inline constexpr double kMaxTempo = 2.0;
+// Practice tempo, the same range for tutti render, tutti play and the editor.
+inline constexpr double kMinTempo = 0.1;
+inline constexpr double kMaxTempo = 4.0;
 
 // A key press (GLFW_KEY_*, GLFW_MOD_* bits). Unbound keys: ActionKind::none.
 Action key_action(int key, int mods);

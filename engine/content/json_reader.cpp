@@ -3,7 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
+#include <tutti/core/did_you_mean.hpp>
 #include <tutti/core/file_io.hpp>
 
 namespace tutti::content {
@@ -27,7 +29,11 @@ Status JsonReader::check_keys(const nlohmann::json& object, std::string_view pat
   for (const auto& item : object.items()) {
     bool known = false;
     for (std::string_view key : allowed) known = known || key == item.key();
-    if (!known) return error(std::string(path) + "/" + item.key(), "unknown key");
+    if (!known) {
+      const std::vector<std::string_view> names(allowed.begin(), allowed.end());
+      return error(std::string(path) + "/" + item.key(),
+                   "unknown key" + did_you_mean(item.key(), names));
+    }
   }
   return Status::success();
 }
@@ -64,7 +70,12 @@ Status JsonReader::read_number_fields(const nlohmann::json& object, std::string_
   for (const auto& item : object.items()) {
     bool known = item.key() == "description";
     for (const NumberField& f : fields) known = known || item.key() == f.key;
-    if (!known) return error(std::string(path) + "/" + item.key(), "unknown key");
+    if (!known) {
+      std::vector<std::string_view> names{"description"};
+      for (const NumberField& f : fields) names.push_back(f.key);
+      return error(std::string(path) + "/" + item.key(),
+                   "unknown key" + did_you_mean(item.key(), names));
+    }
   }
   if (object.contains("description") && !object.at("description").is_string()) {
     return error(std::string(path) + "/description", "expected a string");

@@ -207,7 +207,9 @@ Result<std::unique_ptr<ModelRenderer>> ModelRenderer::create(
   return renderer;
 }
 
-ModelRenderer::~ModelRenderer() = default;
+// Frames still in flight use the pipelines, buffers and descriptor sets (a render that stops on
+// an error returns with its last frame submitted): they finish before anything is destroyed.
+ModelRenderer::~ModelRenderer() { (void)context_.wait_idle(); }
 
 Status ModelRenderer::build_pipelines(std::span<const std::uint32_t> lit_vert,
                                       std::span<const std::uint32_t> lit_frag,

@@ -33,7 +33,8 @@ Status acquire_glfw() {
       return Error{
           "cannot open a window: no display (set DISPLAY, or use tutti render for headless "
           "output); " +
-          last_glfw_error()};
+              last_glfw_error(),
+          ErrorCode::environment};
     }
   }
   ++glfw_users();

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -155,6 +156,24 @@ TEST_F(RenderCommandTest, ABarePieceWithBrassAndPianoRendersToAVideoWithSound) {
   for (std::int16_t v : sound->samples) sum += static_cast<double>(v) * v;
   EXPECT_GT(std::sqrt(sum / static_cast<double>(sound->samples.size())), 300.0) << "audible";
 
+}
+
+// A machine without ffmpeg lacks something; the input is fine: exit 3, one line saying what.
+TEST_F(RenderCommandTest, NoFfmpegIsAMissingEnvironmentNotBadInput) {
+  const char* path = std::getenv("PATH");
+  const std::string saved = path != nullptr ? path : "";
+  ::setenv("PATH", "/nonexistent", 1);
+  RenderOptions o;
+  o.scene = scene_path();
+  o.frames = "0:2";
+  o.audio = false;
+  o.output = dir_ / "no_ffmpeg.mp4";
+  std::string error;
+  const int code = run(o, &error);
+  ::setenv("PATH", saved.c_str(), 1);
+  EXPECT_EQ(code, 3) << error;
+  EXPECT_EQ(error, "error: " + o.output.string() +
+                       ": ffmpeg not found (install the ffmpeg package)\n");
 }
 
 TEST_F(RenderCommandTest, ASlicesWavHasExactlyTheFullRendersSamples) {

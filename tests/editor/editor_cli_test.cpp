@@ -262,6 +262,18 @@ TEST(EditorCli, BadInputIsAOneLineError) {
   output = run(quoted(kEditor) + " x.json --size 10x10", code);
   EXPECT_EQ(code, 2);
   EXPECT_EQ(output, "error: --size \"10x10\": expected WxH, at least 320x240\n");
+  const auto typo = dir.write("typo.txt", "add-breth \"Trumpet 1\" 6.0\n");
+  output = run(editor_command(test::source_dir() / "content/scenes/quartet.json", typo), code);
+  EXPECT_EQ(code, 2);
+  EXPECT_EQ(output,
+            "error: typo.txt:1: unknown command \"add-breth\" (did you mean \"add-breath\"?)\n");
+  // No display is the machine's lack, not the user's input: exit 3.
+  const auto quit = dir.write("quit.txt", "quit\n");
+  output = run("env -u DISPLAY -u WAYLAND_DISPLAY " +
+                   editor_command(test::source_dir() / "content/scenes/quartet.json", quit),
+               code);
+  EXPECT_EQ(code, 3) << output;
+  EXPECT_NE(output.find("error: cannot open a window: no display"), std::string::npos) << output;
 }
 
 }  // namespace

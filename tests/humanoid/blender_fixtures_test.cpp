@@ -44,7 +44,7 @@ std::map<std::string, std::string> rigify_bones() {
 
 TEST(BlenderFixtures, EveryExportIsRecognisedWithoutAMapping) {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "no blender (Debian package blender, in scripts/packages.txt)";
+    GTEST_SKIP() << "no blender (Debian package blender, in scripts/packages-test.txt)";
   }
   test::ScratchDir dir;
   const std::string script = std::string(TUTTI_SOURCE_DIR) + "/tests/data/characters/make_fixtures.py";

@@ -75,7 +75,7 @@ std::string file_text(const std::filesystem::path& path) {
 // the original within the quantization's error.
 TEST(PipelineGltf, GltfpackOutputLoadsToTheSameShape) {
   if (std::system("command -v gltfpack > /dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "no gltfpack (Debian package gltfpack, in scripts/packages.txt)";
+    GTEST_SKIP() << "no gltfpack (Debian package gltfpack, in scripts/packages-test.txt)";
   }
   test::ScratchDir dir;
   for (const char* name : {"performer.glb", "trumpet.glb"}) {
@@ -284,7 +284,7 @@ TEST(PipelineGltf, QuantizedAttributesAreDequantized) {
 // decoder cannot take is named.
 TEST(PipelineGltf, BrokenMeshoptDataIsAnError) {
   if (std::system("command -v gltfpack > /dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "no gltfpack (Debian package gltfpack, in scripts/packages.txt)";
+    GTEST_SKIP() << "no gltfpack (Debian package gltfpack, in scripts/packages-test.txt)";
   }
   test::ScratchDir dir;
   const std::filesystem::path packed = dir.path() / "trumpet_cc.glb";

@@ -63,19 +63,20 @@ TEST(InputBindingsTest, TempoLadderStaysWithinItsEnds) {
   EXPECT_DOUBLE_EQ(step_tempo(1.0, 1), 1.1);
   EXPECT_DOUBLE_EQ(step_tempo(1.0, -1), 0.9);
   EXPECT_DOUBLE_EQ(step_tempo(0.75, -1), 0.7);
-  EXPECT_DOUBLE_EQ(step_tempo(0.25, -1), 0.25);
-  EXPECT_DOUBLE_EQ(step_tempo(2.0, 1), 2.0);
+  EXPECT_DOUBLE_EQ(step_tempo(0.1, -1), 0.1);
+  EXPECT_DOUBLE_EQ(step_tempo(4.0, 1), 4.0);
+  EXPECT_DOUBLE_EQ(step_tempo(2.0, 1), 3.0);
   EXPECT_DOUBLE_EQ(step_tempo(0.85, 1), 0.9);  // off the ladder: the next rung
   EXPECT_DOUBLE_EQ(step_tempo(0.85, -1), 0.8);
-  double tempo = 0.25;
+  double tempo = kMinTempo;
   int steps = 0;
-  while (tempo < 2.0 && steps < 100) {
+  while (tempo < kMaxTempo && steps < 100) {
     const double next = step_tempo(tempo, 1);
     EXPECT_GT(next, tempo);
     tempo = next;
     ++steps;
   }
-  EXPECT_EQ(steps, 12);
+  EXPECT_EQ(steps, 15);
 }
 
 }  // namespace

@@ -174,19 +174,23 @@ TEST(SceneErrors, TheValidBaseLoads) {
 TEST(SceneErrors, UnknownKeyAtTopLevel) {
   json doc = valid_scene();
   doc["camera"] = json::array();
-  EXPECT_EQ(error_of(doc), "s.json: /camera: unknown key");
+  EXPECT_EQ(error_of(doc), "s.json: /camera: unknown key (did you mean \"cameras\"?)");
 }
 
 TEST(SceneErrors, UnknownKeyNested) {
   json doc = valid_scene();
   doc["performers"][1]["positon_m"] = {0, 0, 0};
-  EXPECT_EQ(error_of(doc), "s.json: /performers/1/positon_m: unknown key");
+  EXPECT_EQ(error_of(doc),
+            "s.json: /performers/1/positon_m: unknown key (did you mean \"position_m\"?)");
   doc = valid_scene();
   doc["output"] = {{"widht", 640}};
-  EXPECT_EQ(error_of(doc), "s.json: /output/widht: unknown key");
+  EXPECT_EQ(error_of(doc), "s.json: /output/widht: unknown key (did you mean \"width\"?)");
   doc = valid_scene();
   doc["lights"] = {{"key", {{"colour", {1, 1, 1}}}}};
-  EXPECT_EQ(error_of(doc), "s.json: /lights/key/colour: unknown key");
+  EXPECT_EQ(error_of(doc), "s.json: /lights/key/colour: unknown key (did you mean \"color\"?)");
+  doc = valid_scene();
+  doc["cameras"][0]["fov"] = 30;
+  EXPECT_EQ(error_of(doc), "s.json: /cameras/0/fov: unknown key (did you mean \"fov_deg\"?)");
 }
 
 TEST(SceneErrors, WrongType) {
@@ -340,7 +344,8 @@ TEST(SceneErrors, UnknownVariationKey) {
   json doc = valid_scene();
   doc["performers"][0]["variation"]["sway"] = 0.5;
   EXPECT_EQ(error_of(doc),
-            "s.json: /performers/0/variation/sway: unknown key (known: sway_amount, sway_period, "
+            "s.json: /performers/0/variation/sway: unknown key (did you mean \"sway_amount\"?) "
+            "(known: sway_amount, sway_period, "
             "sway_phase, weight_shift_rate, breath_depth, cue_strength, head_motion)");
 }
 

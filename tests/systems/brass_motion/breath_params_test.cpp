@@ -48,7 +48,8 @@ TEST(BreathParams, UnknownKeyIsNamed) {
   doc["capacity"] = 8;
   auto p = breath_params_from_json(doc, "breath.json");
   ASSERT_FALSE(p.ok());
-  EXPECT_EQ(p.error().message, "breath.json: /capacity: unknown key");
+  EXPECT_EQ(p.error().message,
+            "breath.json: /capacity: unknown key (did you mean \"capacity_s\"?)");
 }
 
 TEST(BreathParams, BadValuesAreNamed) {

@@ -30,7 +30,9 @@ TEST(FingerMotionParams, UnknownKeyIsNamed) {
   doc["timing"]["press_led_s"] = 0.1;
   auto p = finger_motion_params_from_json(doc, "finger_motion.json");
   ASSERT_FALSE(p.ok());
-  EXPECT_EQ(p.error().message, "finger_motion.json: /timing/press_led_s: unknown key");
+  EXPECT_EQ(p.error().message,
+            "finger_motion.json: /timing/press_led_s: unknown key (did you mean "
+            "\"press_lead_s\"?)");
 }
 
 TEST(FingerMotionParams, BadValuesAreNamed) {
