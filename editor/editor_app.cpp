@@ -15,6 +15,7 @@
 #include <tutti/image/png.hpp>
 #include <tutti/render/window.hpp>
 #include <tutti/render/window_target.hpp>
+#include <tutti/runtime/dynamic_resolution.hpp>
 #include <tutti/runtime/imgui_layer.hpp>
 #include <tutti/runtime/input_bindings.hpp>
 #include <tutti/runtime/scene_player.hpp>
@@ -107,6 +108,7 @@ class Editor final : public ScriptHost {
     return app::exit_code_of(error);
   }
   Status frame();
+  void draw_stats() const;
   void viewport_input();
   void follow_replans();
 
@@ -123,6 +125,12 @@ class Editor final : public ScriptHost {
   UiState ui_;
   std::uint64_t shown_revision_ = 0;
   double last_autosave_s_ = 0.0;
+  // Draft view on a CPU device (runtime::ViewQuality): hard shadows, a dynamic 3D view scale.
+  bool dynamic_resolution_ = false;
+  runtime::DynamicResolution resolution_;
+  double last_frame_end_s_ = -1.0;
+  double last_frame_s_ = 0.0;
+  bool show_stats_ = false;  // F3
   bool quit_ = false;
 };
 
@@ -134,6 +142,25 @@ void Editor::follow_replans() {
       !s) {
     ui_.status = s.error().message;
   }
+}
+
+// The statistics (F3) at the 3D view's bottom-left: frame time, the view's scale, the quality.
+void Editor::draw_stats() const {
+  const VkExtent2D view = target_->render_extent();
+  const VkExtent2D window = target_->extent();
+  ImGui::SetNextWindowPos(ImVec2(8.0f, static_cast<float>(window.height) - 8.0f),
+                          ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  ImGui::Begin("stats", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Text("frame %.1f ms (%.1f fps), average %.1f ms", 1000.0 * last_frame_s_,
+              last_frame_s_ > 0 ? 1.0 / last_frame_s_ : 0.0, 1000.0 * resolution_.average_frame_s());
+  ImGui::Text("3D view %.0f %% (%ux%u of %ux%u)%s", 100.0 * target_->render_scale(), view.width,
+              view.height, window.width, window.height, dynamic_resolution_ ? ", dynamic" : "");
+  ImGui::Text("%s", dynamic_resolution_ ? "draft: 1 sample per pixel, hard shadows"
+                                        : "full quality, 1 sample per pixel");
+  ImGui::End();
 }
 
 void Editor::viewport_input() {
@@ -156,6 +183,7 @@ void Editor::viewport_input() {
       }
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) ui_.quit_requested = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F3, false)) show_stats_ = !show_stats_;
   }
 }
 
@@ -178,6 +206,10 @@ Status Editor::frame() {
   if (requests.toggle_play) transport.toggle(now());
   if (requests.tempo) (void)transport.set_tempo(now(), *requests.tempo);
   if (requests.quit) quit_ = true;
+  if (show_stats_) draw_stats();
+  if (dynamic_resolution_ && last_frame_s_ > 0.0) {
+    target_->set_render_scale(resolution_.update(last_frame_s_));
+  }
 
   auto recording = target_->begin_frame();
   if (!recording) return recording.error();
@@ -185,6 +217,9 @@ Status Editor::frame() {
   if (Status s = player_->record(*recording, *target_); !s) return s;
   imgui_->record_overlay(*recording, *target_);
   if (auto id = target_->end_frame(); !id) return id.error();
+  const double frame_end_s = now();
+  if (last_frame_end_s_ >= 0.0) last_frame_s_ = frame_end_s - last_frame_end_s_;
+  last_frame_end_s_ = frame_end_s;
   if (options_.validate && context_->validation_log()->size() > 0) {
     return Error{"Vulkan validation: " + context_->validation_log()->messages().front()};
   }
@@ -243,6 +278,8 @@ int Editor::run() {
   target_ = std::move(*target);
 
   runtime::ScenePlayerOptions player_options;
+  dynamic_resolution_ = context_->device_info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (dynamic_resolution_) player_options.renderer.shadow_taps = 1;
   player_options.sound_options.sound_font = options_.soundfont;
   player_options.sound_options.driver = options_.audio_driver;
   auto player =

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <chrono>
 #include <cmath>
@@ -22,6 +23,8 @@
 #include <tutti/render/vulkan_context.hpp>
 #include <tutti/render/window.hpp>
 #include <tutti/render/window_target.hpp>
+#include <tutti/runtime/dynamic_resolution.hpp>
+#include <tutti/runtime/imgui_layer.hpp>
 #include <tutti/runtime/input_bindings.hpp>
 #include <tutti/runtime/scene_player.hpp>
 #include <tutti/scene/load_scene.hpp>
@@ -106,6 +109,24 @@ struct InputQueue {
   }
 };
 
+// The statistics (F3) in the top-left corner: frame time, the 3D view's scale, the quality.
+void draw_stats(double frame_s, double average_s, const render::WindowTarget& target, bool draft,
+                bool dynamic) {
+  const VkExtent2D view = target.render_extent();
+  const VkExtent2D window = target.extent();
+  ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  ImGui::Begin("stats", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Text("frame %.1f ms (%.1f fps), average %.1f ms", 1000.0 * frame_s,
+              frame_s > 0 ? 1.0 / frame_s : 0.0, 1000.0 * average_s);
+  ImGui::Text("3D view %.0f %% (%ux%u of %ux%u)%s", 100.0 * target.render_scale(), view.width,
+              view.height, window.width, window.height, dynamic ? ", dynamic" : "");
+  ImGui::Text("%s", draft ? "draft: 1 sample per pixel, hard shadows" : "full quality");
+  ImGui::End();
+}
+
 }  // namespace
 
 int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
@@ -116,6 +137,27 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     std::snprintf(text, sizeof text, "--tempo %g: must be in [%g, %g]", o.tempo, runtime::kMinTempo,
                   runtime::kMaxTempo);
     return fail(text);
+  }
+  int window_width = 0;
+  int window_height = 0;
+  if (!o.size.empty()) {
+    char extra = 0;
+    if (std::sscanf(o.size.c_str(), "%dx%d%c", &window_width, &window_height, &extra) != 2 ||
+        window_width < 320 || window_height < 240 || window_width > 7680 ||
+        window_height > 4320) {
+      return fail("--size \"" + o.size + "\": expected WxH, from 320x240 to 7680x4320");
+    }
+  }
+  if (o.quality != "auto" && o.quality != "draft" && o.quality != "full") {
+    return fail("--quality \"" + o.quality + "\": must be auto, draft or full");
+  }
+  std::optional<float> fixed_scale;
+  if (o.render_scale != "auto") {
+    const std::optional<double> scale = parse_seconds(o.render_scale);
+    if (!scale || *scale < 0.25 || *scale > 1.0) {
+      return fail("--render-scale \"" + o.render_scale + "\": must be auto or in [0.25, 1]");
+    }
+    fixed_scale = static_cast<float>(*scale);
   }
   if (o.frames < 0) {
     return fail("--frame-count " + std::to_string(o.frames) + ": must be 1 or more");
@@ -157,8 +199,10 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   }
 
   render::WindowOptions window_options;
-  window_options.width = static_cast<std::uint32_t>(scene->output.width);
-  window_options.height = static_cast<std::uint32_t>(scene->output.height);
+  window_options.width =
+      static_cast<std::uint32_t>(window_width > 0 ? window_width : scene->output.width);
+  window_options.height =
+      static_cast<std::uint32_t>(window_height > 0 ? window_height : scene->output.height);
   window_options.title = "tutti play " + o.scene.filename().string();
   auto window = render::Window::create(window_options);
   if (!window) return fail(window.error());
@@ -168,8 +212,15 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   render::require_presentation(**window, context_options);
   auto context = render::VulkanContext::create(context_options);
   if (!context) return fail(context.error());
+  // Draft on a CPU device: one sample per pixel, hard shadows, the 3D view scaled to hold the
+  // frame rate; offline renders (tutti render) keep the scene's quality.
+  const bool cpu_device = (*context)->device_info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const runtime::ViewQuality quality =
+      o.quality == "full" || (o.quality == "auto" && !cpu_device) ? runtime::ViewQuality::full
+                                                                  : runtime::ViewQuality::draft;
+  const bool draft = quality == runtime::ViewQuality::draft;
   render::WindowTargetOptions target_options;
-  target_options.samples = render::sample_count_flag(scene->output.msaa);
+  target_options.samples = render::sample_count_flag(draft ? 1 : scene->output.msaa);
   target_options.present_mode = VK_PRESENT_MODE_MAILBOX_KHR;  // never wait for a vertical blank
   auto target = render::WindowTarget::create(**context, **window, target_options);
   if (!target) return fail(target.error());
@@ -177,6 +228,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   if (o.audio_driver.empty()) quiet_alsa_errors();
   runtime::ScenePlayerOptions player_options;
   player_options.stage.asset_dir = o.assets;
+  if (draft) player_options.renderer.shadow_taps = 1;
   player_options.tempo = o.tempo;
   player_options.sound_options.sound_font = o.soundfont;
   player_options.sound_options.driver = o.audio_driver;
@@ -209,6 +261,17 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
       return fail("--loop \"" + o.loop + "\": " + s.error().message);
     }
   }
+  runtime::ImGuiLayerOptions overlay_options;
+  overlay_options.install_callbacks = false;  // the statistics take no input
+  auto overlay = runtime::ImGuiLayer::create(**context, **window, **target, overlay_options);
+  if (!overlay) return fail(overlay.error());
+  bool show_stats = o.stats;
+  runtime::DynamicResolution resolution;
+  const bool dynamic = !fixed_scale && draft;
+  (*target)->set_render_scale(fixed_scale ? *fixed_scale : 1.0f);
+  double last_frame_end_s = -1.0;
+  double last_frame_s = 0.0;
+
   InputQueue input;
   input.piano = live.keyboard();
   input.clock = host_now;
@@ -230,6 +293,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     bool quit = (*window)->should_close();
     const float height = static_cast<float>(std::max(1u, (*target)->extent().height));
     for (const runtime::Action& action : input.actions) {
+      if (action.kind == runtime::ActionKind::toggle_stats) show_stats = !show_stats;
       if (!player.apply(action, now, height)) quit = true;
     }
     const bool acted = !input.actions.empty();
@@ -245,6 +309,11 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
 
     const bool last = o.frames > 0 && frames + 1 == o.frames;
     if (last && !o.screenshot.empty()) (*target)->capture_next_frame();
+    if (dynamic && last_frame_s > 0.0) (*target)->set_render_scale(resolution.update(last_frame_s));
+    if (show_stats) {
+      (*overlay)->new_frame();
+      draw_stats(last_frame_s, resolution.average_frame_s(), **target, draft, dynamic);
+    }
     auto frame = (*target)->begin_frame();
     if (!frame) return fail(frame.error());
     // The time is read after begin_frame's wait for a free slot: the picture shows the music as
@@ -258,8 +327,14 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
       player.update(host_now());
     }
     if (Status s = player.record(*frame, **target); !s) return fail(s.error());
+    if (show_stats) (*overlay)->record_overlay(*frame, **target);
     if (auto id = (*target)->end_frame(); !id) return fail(id.error());
     ++frames;
+    // A frame's cost: from the end of the one before to the end of this one (the wait for a free
+    // slot included: that is the device's time).
+    const double frame_end_s = host_now();
+    if (last_frame_end_s >= 0.0) last_frame_s = frame_end_s - last_frame_end_s;
+    last_frame_end_s = frame_end_s;
     if (o.validate && (*context)->validation_log()->size() > 0) {
       return fail("Vulkan validation: " + (*context)->validation_log()->messages().front());
     }
@@ -292,10 +367,15 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     out << "play: wrote " << o.screenshot.string() << " (" << captured->width << "x"
         << captured->height << ")\n";
   }
-  char summary[160];
-  std::snprintf(summary, sizeof summary, "play: %lld frames in %.2f s (%.1f fps), music %.2f s\n",
+  char summary[256];
+  const VkExtent2D view = (*target)->render_extent();
+  std::snprintf(summary, sizeof summary,
+                "play: %lld frames in %.2f s (%.1f fps), music %.2f s; %s quality, 3D view at "
+                "%.0f %% (%ux%u)%s\n",
                 static_cast<long long>(frames), elapsed,
-                elapsed > 0 ? static_cast<double>(frames) / elapsed : 0.0, player.shown_time());
+                elapsed > 0 ? static_cast<double>(frames) / elapsed : 0.0, player.shown_time(),
+                draft ? "draft" : "full", 100.0 * (*target)->render_scale(), view.width,
+                view.height, dynamic ? ", dynamic" : "");
   out << summary;
   return kExitOk;
 }
@@ -319,6 +399,13 @@ void register_play_command(Commands& commands) {
                  "FluidSynth audio driver (pulseaudio, alsa, ...; simulated: none)");
   command.option("--device", options->device, "Vulkan device: index or part of its name");
   command.option("--frame-count", options->frames, "quit after drawing this many frames");
+  command.option("--size", options->size, "window size WxH (default: the scene's output size)");
+  command.option("--quality", options->quality,
+                 "auto (draft on a CPU device), draft (1 sample, hard shadows, dynamic 3D view "
+                 "scale) or full");
+  command.option("--render-scale", options->render_scale,
+                 "the 3D view's share of the window per axis: auto or 0.25..1");
+  command.flag("--stats", options->stats, "show the statistics (F3) from the start");
   command.option("--screenshot", options->screenshot, "write the last frame to this .png");
   command.option("--midi-in", options->midi_in,
                  "live MIDI (ALSA sequencer): auto, none, CLIENT:PORT or a client name; the "

@@ -15,7 +15,7 @@ namespace tutti::app {
 
 struct PlayOptions {
   std::filesystem::path scene;
-  double tempo = 1.0;                // practice tempo, 0.25..2
+  double tempo = 1.0;                // practice tempo, 0.1..4
   std::string camera;                // a scene camera's name (default: the shot list)
   std::string start;                 // seconds of the music to start at (default: the scene's)
   std::string loop;                  // "A:B": play [A, B) over and over
@@ -24,6 +24,14 @@ struct PlayOptions {
   std::string audio_driver;          // FluidSynth driver; "simulated": no device
   std::string device;                // Vulkan device selector (index or name part)
   int frames = 0;                    // > 0: quit after this many frames (tests, automation)
+  std::string size;                  // window "WxH" (default: the scene's output size)
+  // "draft" (1 sample per pixel, hard shadows, the 3D view at a dynamic scale), "full" (the
+  // scene's settings, full size) or "auto": draft on a CPU device (lavapipe), full on a GPU.
+  std::string quality = "auto";
+  // The 3D view's share of the window per axis: "auto" (dynamic in draft, 1 in full) or a fixed
+  // number in [0.25, 1].
+  std::string render_scale = "auto";
+  bool stats = false;  // show the statistics (F3) from the start
   std::filesystem::path screenshot;  // .png: the last frame
   bool validate = false;             // Vulkan validation layer; any message fails
   // Live input (play_live.hpp): the pianist plays what comes in instead of the score.

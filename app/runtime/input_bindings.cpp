@@ -54,6 +54,8 @@ Action key_action(int key, int mods) {
       return of(ActionKind::tempo_up);
     case GLFW_KEY_ESCAPE:
       return of(ActionKind::quit);
+    case GLFW_KEY_F3:
+      return of(ActionKind::toggle_stats);
     default:
       return of(ActionKind::none);
   }

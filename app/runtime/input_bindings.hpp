@@ -30,6 +30,7 @@ enum class ActionKind {
   orbit,  // dx, dy: pixels
   pan,    // dx, dy: pixels
   zoom,   // amount: wheel steps, + = closer
+  toggle_stats,  // the on-screen statistics (frame time, 3D view scale, quality): the host's
 };
 
 struct Action {

@@ -168,6 +168,7 @@ bool ScenePlayer::apply(const Action& action, double host_s, float viewport_heig
   Transport& t = *transport_;
   switch (action.kind) {
     case ActionKind::none:
+    case ActionKind::toggle_stats:  // drawn by the host (tutti play, the editor)
       break;
     case ActionKind::toggle_play:
       t.toggle(host_s);

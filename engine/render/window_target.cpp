@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -184,6 +185,7 @@ void WindowTarget::destroy_swapchain_images() {
   image_views_.clear();
   images_.clear();
   msaa_color_ = DeviceImage{};
+  scaled_color_ = DeviceImage{};
   depth_ = DeviceImage{};
 }
 
@@ -274,6 +276,13 @@ Status WindowTarget::create_swapchain() {
   std::uint32_t image_count = caps.minImageCount + 1;
   if (caps.maxImageCount != 0) image_count = std::min(image_count, caps.maxImageCount);
   can_copy_from_images_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+  VkFormatProperties format_properties{};
+  vkGetPhysicalDeviceFormatProperties(physical, color_format_, &format_properties);
+  const VkFormatFeatureFlags blit_features = VK_FORMAT_FEATURE_BLIT_SRC_BIT |
+                                             VK_FORMAT_FEATURE_BLIT_DST_BIT |
+                                             VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  can_blit_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT) != 0 &&
+              (format_properties.optimalTilingFeatures & blit_features) == blit_features;
 
   VkSwapchainCreateInfoKHR info =
       vk_struct<VkSwapchainCreateInfoKHR>(VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR);
@@ -285,7 +294,8 @@ Status WindowTarget::create_swapchain() {
   info.imageArrayLayers = 1;
   info.imageUsage =
       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-      (can_copy_from_images_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : 0u);
+      (can_copy_from_images_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : 0u) |
+      (can_blit_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_DST_BIT} : 0u);
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;  // one queue renders and presents
   info.preTransform = caps.currentTransform;
   info.compositeAlpha = choose_composite_alpha(caps.supportedCompositeAlpha);
@@ -362,7 +372,29 @@ Status WindowTarget::create_swapchain() {
     if (!msaa) return msaa.error();
     msaa_color_ = std::move(*msaa);
   }
+  if (can_blit_) {
+    Result<DeviceImage> scaled = create_image(
+        physical, device, color_format_, extent_,
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+        VK_IMAGE_ASPECT_COLOR_BIT);
+    if (!scaled) return scaled.error();
+    scaled_color_ = std::move(*scaled);
+  }
   return Status::success();
+}
+
+void WindowTarget::set_render_scale(float scale) {
+  render_scale_ = std::isfinite(scale) ? std::clamp(scale, 0.25f, 1.0f) : 1.0f;
+}
+
+VkExtent2D WindowTarget::render_extent() const {
+  const float scale = render_scale();
+  if (scale >= 1.0f) return extent_;
+  auto scaled = [scale](std::uint32_t pixels) {
+    return std::max<std::uint32_t>(
+        1, static_cast<std::uint32_t>(std::lround(static_cast<float>(pixels) * scale)));
+  };
+  return {scaled(extent_.width), scaled(extent_.height)};
 }
 
 Result<RecordingFrame> WindowTarget::begin_frame() {
@@ -419,6 +451,8 @@ void WindowTarget::begin_main_pass(const ClearColor& clear) {
   if (!recording_ || main_pass_open_ || main_pass_done_) return;  // precondition: record nothing
   const VkCommandBuffer commands = slots_[slot_index_].commands;
   const VkImage image = images_[image_index_];
+  scaled_pass_ = render_scale() < 1.0f;
+  scaled_area_ = scaled_pass_ ? render_extent() : extent_;
   // The swap-chain image comes from the presentation engine (the acquire semaphore is waited at
   // COLOR_ATTACHMENT_OUTPUT, so the barrier chains to it there); its old contents are cleared or
   // resolved over, so its old layout does not matter.
@@ -427,9 +461,15 @@ void WindowTarget::begin_main_pass(const ClearColor& clear) {
       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
   // Depth and MSAA colour are shared by the frames in flight: order this frame's writes after
   // the previous frame's.
+  // A scaled pass draws into scaled_color_ (last read by the previous frame's blit); the
+  // swap-chain image is then only written by the blit (blit_scaled_image's barriers).
+  const VkImage drawn = scaled_pass_ ? scaled_color_.image.get() : image;
   record_image_barriers(
       commands,
-      {image_barrier(image, VK_IMAGE_ASPECT_COLOR_BIT, attachment_stage, VK_ACCESS_2_NONE,
+      {image_barrier(drawn, VK_IMAGE_ASPECT_COLOR_BIT,
+                     scaled_pass_ ? attachment_stage | VK_PIPELINE_STAGE_2_BLIT_BIT
+                                  : attachment_stage,
+                     scaled_pass_ ? VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT : VK_ACCESS_2_NONE,
                      attachment_stage, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL),
        image_barrier(depth_.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, depth_stages,
@@ -455,10 +495,11 @@ void WindowTarget::begin_main_pass(const ClearColor& clear) {
     color.imageView = msaa_color_.view.get();
     color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;  // only the resolved image is kept
     color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
-    color.resolveImageView = image_views_[image_index_].get();
+    color.resolveImageView =
+        scaled_pass_ ? scaled_color_.view.get() : image_views_[image_index_].get();
     color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   } else {
-    color.imageView = image_views_[image_index_].get();
+    color.imageView = scaled_pass_ ? scaled_color_.view.get() : image_views_[image_index_].get();
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   }
   VkRenderingAttachmentInfo depth =
@@ -469,7 +510,7 @@ void WindowTarget::begin_main_pass(const ClearColor& clear) {
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfo rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-  rendering.renderArea = {{0, 0}, extent_};
+  rendering.renderArea = {{0, 0}, scaled_area_};
   rendering.layerCount = 1;
   rendering.colorAttachmentCount = 1;
   rendering.pColorAttachments = &color;
@@ -477,17 +518,53 @@ void WindowTarget::begin_main_pass(const ClearColor& clear) {
   vkCmdBeginRendering(commands, &rendering);
 
   const VkViewport viewport{
-      0.0f, 0.0f, static_cast<float>(extent_.width), static_cast<float>(extent_.height),
+      0.0f, 0.0f, static_cast<float>(scaled_area_.width), static_cast<float>(scaled_area_.height),
       0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, extent_};
+  const VkRect2D scissor{{0, 0}, scaled_area_};
   vkCmdSetViewport(commands, 0, 1, &viewport);
   vkCmdSetScissor(commands, 0, 1, &scissor);
   main_pass_open_ = true;
 }
 
+void WindowTarget::blit_scaled_image(VkCommandBuffer commands, VkExtent2D from) {
+  const VkImage image = images_[image_index_];
+  // The swap-chain image's barrier starts at COLOR_ATTACHMENT_OUTPUT, where the acquire
+  // semaphore is waited, so the blit comes after the presentation engine let go of it.
+  record_image_barriers(
+      commands,
+      {image_barrier(scaled_color_.image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                     VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL),
+       image_barrier(image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL)});
+  VkImageBlit region{};
+  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.srcOffsets[1] = {static_cast<std::int32_t>(from.width),
+                          static_cast<std::int32_t>(from.height), 1};
+  region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.dstOffsets[1] = {static_cast<std::int32_t>(extent_.width),
+                          static_cast<std::int32_t>(extent_.height), 1};
+  vkCmdBlitImage(commands, scaled_color_.image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_LINEAR);
+  // Back to where an unscaled main pass leaves it: the overlay and finish_image go on from there.
+  record_image_barriers(
+      commands,
+      {image_barrier(image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL)});
+}
+
 void WindowTarget::end_main_pass() {
   if (!main_pass_open_) return;
   vkCmdEndRendering(slots_[slot_index_].commands);
+  if (scaled_pass_) blit_scaled_image(slots_[slot_index_].commands, scaled_area_);
   // The image stays in COLOR_ATTACHMENT_OPTIMAL: an overlay pass may follow; end_frame()
   // records its final barrier.
   main_pass_open_ = false;

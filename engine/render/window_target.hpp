@@ -30,6 +30,12 @@
 // minimised (0x0) begin_frame() blocks in Window::wait_events(); it returns an error if the
 // window is asked to close meanwhile.
 //
+// Dynamic resolution: set_render_scale(s < 1) makes the main pass render s × extent() per axis
+// into an image of its own (MSAA resolved there), which end_main_pass stretches over the
+// swap-chain image with a linear filter before the overlay pass; extent() (and so the camera's
+// aspect and the renderer's level-of-detail choice) stays the window's, so a change of scale
+// never switches a mesh's detail level. Surfaces that cannot be blitted to keep scale 1.
+//
 // The context must be created with require_presentation(window, options) (window.hpp). The
 // context and the window outlive the target. One thread (GLFW's main thread).
 
@@ -83,6 +89,13 @@ class WindowTarget final : public FrameTarget {
   // How often the swap chain was recreated since create() (resize, out of date, suboptimal).
   std::uint32_t recreate_count() const { return recreate_count_; }
 
+  // The main pass's share of extent() per axis, clamped to [0.25, 1]; takes effect at the next
+  // begin_main_pass. render_scale() is what is used (1 when the surface cannot be blitted to).
+  void set_render_scale(float scale);
+  float render_scale() const { return can_blit_ ? render_scale_ : 1.0f; }
+  // The main pass's size in pixels: extent() × render_scale(), at least 1 × 1.
+  VkExtent2D render_extent() const;
+
   Result<RecordingFrame> begin_frame() override;
   void begin_main_pass(const ClearColor& clear) override;
   void end_main_pass() override;
@@ -118,6 +131,8 @@ class WindowTarget final : public FrameTarget {
   Status create_overlay_render_pass();
   // The image's last writes before the present (or the capture's copy): its final barrier.
   void finish_image(bool capture);
+  // Stretches scaled_color_'s render_extent() corner over the swap-chain image.
+  void blit_scaled_image(VkCommandBuffer commands, VkExtent2D from);
 
   VulkanContext& context_;
   Window& window_;
@@ -130,13 +145,18 @@ class WindowTarget final : public FrameTarget {
   VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
   VkPresentModeKHR present_mode_ = VK_PRESENT_MODE_FIFO_KHR;
   bool can_copy_from_images_ = false;  // surface supports TRANSFER_SRC usage (capture)
+  bool can_blit_ = false;              // TRANSFER_DST usage and linear blits of the format
 
   std::vector<VkImage> images_;  // owned by the swap chain
   std::vector<DeviceHandle<VkImageView>> image_views_;
   // Per swap-chain image index; grows, never shrinks, so a present still waiting on one keeps it.
   std::vector<DeviceHandle<VkSemaphore>> render_finished_;
   DeviceImage depth_;
-  DeviceImage msaa_color_;  // only when samples_ > 1
+  DeviceImage msaa_color_;    // only when samples_ > 1
+  DeviceImage scaled_color_;  // the main pass's image when render_scale() < 1 (extent_-sized)
+  float render_scale_ = 1.0f;
+  bool scaled_pass_ = false;  // this frame's main pass renders into scaled_color_
+  VkExtent2D scaled_area_{};  // this frame's main pass area
   DeviceHandle<VkRenderPass> overlay_pass_;
   std::vector<DeviceHandle<VkFramebuffer>> overlay_framebuffers_;  // per swap-chain image
 

@@ -247,6 +247,53 @@ TEST_F(WindowTargetTest, SingleSampleHasNoBlendedEdges) {
   keep_artifact(*captured, "window_640x360_1x.png");
 }
 
+// Dynamic resolution: the main pass at half the size per axis, stretched over the whole image —
+// the same picture (the clear colour in the corners, the triangle in the middle) with the
+// triangle's edges softened by the linear filter; scale 1 gives the sharp frame back. The
+// validation layer, with its synchronization checks, stays silent (TearDown).
+TEST_F(WindowTargetTest, AScaledMainPassIsStretchedOverTheWholeImage) {
+  ASSERT_NO_FATAL_FAILURE(make_target(VK_SAMPLE_COUNT_1_BIT));
+  target_->set_render_scale(0.5f);
+  if (target_->render_scale() == 1.0f) GTEST_SKIP() << "this surface cannot be blitted to";
+  EXPECT_EQ(target_->render_extent().width, 320u);
+  EXPECT_EQ(target_->render_extent().height, 180u);
+  EXPECT_EQ(target_->extent().width, 640u) << "the window's size is unchanged";
+  constexpr int kFrames = 6;
+  for (int frame = 0; frame < kFrames; ++frame) {
+    ASSERT_NO_FATAL_FAILURE(render(frame, frame == kFrames - 1));
+  }
+  auto scaled = target_->take_capture();
+  ASSERT_TRUE(scaled) << scaled.error().message;
+  expect_frame(*scaled, {640, 360}, animated_clear(kFrames - 1));
+  EXPECT_GT(blended_pixels(*scaled, srgb_of(animated_clear(kFrames - 1))), 100u)
+      << "stretched edges are filtered";
+  keep_artifact(*scaled, "window_640x360_scaled_half.png");
+
+  target_->set_render_scale(1.0f);
+  for (int frame = 0; frame < 3; ++frame) ASSERT_NO_FATAL_FAILURE(render(frame, frame == 2));
+  auto full = target_->take_capture();
+  ASSERT_TRUE(full) << full.error().message;
+  EXPECT_EQ(blended_pixels(*full, srgb_of(animated_clear(2))), 0u);
+  target_->set_render_scale(0.1f);
+  EXPECT_EQ(target_->render_scale(), 0.25f) << "clamped";
+}
+
+// With MSAA the samples are resolved into the scaled image, which is then stretched.
+TEST_F(WindowTargetTest, AScaledMsaaPassIsResolvedThenStretched) {
+  ASSERT_NO_FATAL_FAILURE(make_target(VK_SAMPLE_COUNT_4_BIT));
+  target_->set_render_scale(0.75f);
+  if (target_->render_scale() == 1.0f) GTEST_SKIP() << "this surface cannot be blitted to";
+  EXPECT_EQ(target_->render_extent().width, 480u);
+  EXPECT_EQ(target_->render_extent().height, 270u);
+  constexpr int kFrames = 4;
+  for (int frame = 0; frame < kFrames; ++frame) {
+    ASSERT_NO_FATAL_FAILURE(render(frame, frame == kFrames - 1));
+  }
+  auto captured = target_->take_capture();
+  ASSERT_TRUE(captured) << captured.error().message;
+  expect_frame(*captured, {640, 360}, animated_clear(kFrames - 1));
+}
+
 #ifdef TUTTI_TEST_X11_PIXELS
 // What was presented reaches the X server: the window shows the clear colour in a corner and
 // the triangle in the middle. Presentation may be asynchronous (Mesa's FIFO queue thread), so
