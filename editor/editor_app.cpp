@@ -158,7 +158,7 @@ void Editor::draw_stats() const {
               last_frame_s_ > 0 ? 1.0 / last_frame_s_ : 0.0, 1000.0 * resolution_.average_frame_s());
   ImGui::Text("3D view %.0f %% (%ux%u of %ux%u)%s", 100.0 * target_->render_scale(), view.width,
               view.height, window.width, window.height, dynamic_resolution_ ? ", dynamic" : "");
-  ImGui::Text("%s", dynamic_resolution_ ? "draft: 1 sample per pixel, hard shadows"
+  ImGui::Text("%s", dynamic_resolution_ ? "draft: 1 sample per pixel, hard 1024² shadows"
                                         : "full quality, 1 sample per pixel");
   ImGui::End();
 }
@@ -279,7 +279,10 @@ int Editor::run() {
 
   runtime::ScenePlayerOptions player_options;
   dynamic_resolution_ = context_->device_info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  if (dynamic_resolution_) player_options.renderer.shadow_taps = 1;
+  if (dynamic_resolution_) {
+    player_options.renderer.shadow_taps = 1;
+    player_options.renderer.shadow_map_size = 1024;
+  }
   player_options.sound_options.sound_font = options_.soundfont;
   player_options.sound_options.driver = options_.audio_driver;
   auto player =

@@ -9,6 +9,12 @@ import time
 
 import bpy
 import mathutils
+import numpy
+
+# Debian 12's Blender 3.4 importer still says numpy.bool, which Debian's numpy 1.24 removed
+# (the same shim as tests/export/blender_import.py).
+if not hasattr(numpy, "bool"):
+    numpy.bool = bool
 
 glb, scene_json, camera_name, engine, frames, width, height, out = sys.argv[sys.argv.index("--") + 1:]
 frames, width, height = int(frames), int(width), int(height)

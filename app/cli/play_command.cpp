@@ -123,7 +123,7 @@ void draw_stats(double frame_s, double average_s, const render::WindowTarget& ta
               frame_s > 0 ? 1.0 / frame_s : 0.0, 1000.0 * average_s);
   ImGui::Text("3D view %.0f %% (%ux%u of %ux%u)%s", 100.0 * target.render_scale(), view.width,
               view.height, window.width, window.height, dynamic ? ", dynamic" : "");
-  ImGui::Text("%s", draft ? "draft: 1 sample per pixel, hard shadows" : "full quality");
+  ImGui::Text("%s", draft ? "draft: 1 sample per pixel, hard 1024² shadows" : "full quality");
   ImGui::End();
 }
 
@@ -228,7 +228,10 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   if (o.audio_driver.empty()) quiet_alsa_errors();
   runtime::ScenePlayerOptions player_options;
   player_options.stage.asset_dir = o.assets;
-  if (draft) player_options.renderer.shadow_taps = 1;
+  if (draft) {
+    player_options.renderer.shadow_taps = 1;
+    player_options.renderer.shadow_map_size = 1024;
+  }
   player_options.tempo = o.tempo;
   player_options.sound_options.sound_font = o.soundfont;
   player_options.sound_options.driver = o.audio_driver;
