@@ -17,6 +17,7 @@
 #include <tutti/render/window_target.hpp>
 #include <tutti/runtime/dynamic_resolution.hpp>
 #include <tutti/runtime/imgui_layer.hpp>
+#include <tutti/runtime/view_stats.hpp>
 #include <tutti/runtime/input_bindings.hpp>
 #include <tutti/runtime/scene_player.hpp>
 
@@ -108,7 +109,6 @@ class Editor final : public ScriptHost {
     return app::exit_code_of(error);
   }
   Status frame();
-  void draw_stats() const;
   void viewport_input();
   void follow_replans();
 
@@ -142,25 +142,6 @@ void Editor::follow_replans() {
       !s) {
     ui_.status = s.error().message;
   }
-}
-
-// The statistics (F3) at the 3D view's bottom-left: frame time, the view's scale, the quality.
-void Editor::draw_stats() const {
-  const VkExtent2D view = target_->render_extent();
-  const VkExtent2D window = target_->extent();
-  ImGui::SetNextWindowPos(ImVec2(8.0f, static_cast<float>(window.height) - 8.0f),
-                          ImGuiCond_Always, ImVec2(0.0f, 1.0f));
-  ImGui::SetNextWindowBgAlpha(0.6f);
-  ImGui::Begin("stats", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                   ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::Text("frame %.1f ms (%.1f fps), average %.1f ms", 1000.0 * last_frame_s_,
-              last_frame_s_ > 0 ? 1.0 / last_frame_s_ : 0.0, 1000.0 * resolution_.average_frame_s());
-  ImGui::Text("3D view %.0f %% (%ux%u of %ux%u)%s", 100.0 * target_->render_scale(), view.width,
-              view.height, window.width, window.height, dynamic_resolution_ ? ", dynamic" : "");
-  ImGui::Text("%s", dynamic_resolution_ ? "draft: 1 sample per pixel, hard 1024² shadows"
-                                        : "full quality, 1 sample per pixel");
-  ImGui::End();
 }
 
 void Editor::viewport_input() {
@@ -206,7 +187,11 @@ Status Editor::frame() {
   if (requests.toggle_play) transport.toggle(now());
   if (requests.tempo) (void)transport.set_tempo(now(), *requests.tempo);
   if (requests.quit) quit_ = true;
-  if (show_stats_) draw_stats();
+  if (show_stats_) {
+    runtime::draw_view_stats(
+        {last_frame_s_, resolution_.average_frame_s(), dynamic_resolution_, dynamic_resolution_},
+        *target_, 1);
+  }
   if (dynamic_resolution_ && last_frame_s_ > 0.0) {
     target_->set_render_scale(resolution_.update(last_frame_s_));
   }

@@ -3,7 +3,6 @@
 #include <dlfcn.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 
 #include <chrono>
 #include <cmath>
@@ -27,6 +26,7 @@
 #include <tutti/runtime/imgui_layer.hpp>
 #include <tutti/runtime/input_bindings.hpp>
 #include <tutti/runtime/scene_player.hpp>
+#include <tutti/runtime/view_stats.hpp>
 #include <tutti/scene/load_scene.hpp>
 
 namespace tutti::app {
@@ -108,24 +108,6 @@ struct InputQueue {
     });
   }
 };
-
-// The statistics (F3) in the top-left corner: frame time, the 3D view's scale, the quality.
-void draw_stats(double frame_s, double average_s, const render::WindowTarget& target, bool draft,
-                bool dynamic) {
-  const VkExtent2D view = target.render_extent();
-  const VkExtent2D window = target.extent();
-  ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f));
-  ImGui::SetNextWindowBgAlpha(0.6f);
-  ImGui::Begin("stats", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                   ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::Text("frame %.1f ms (%.1f fps), average %.1f ms", 1000.0 * frame_s,
-              frame_s > 0 ? 1.0 / frame_s : 0.0, 1000.0 * average_s);
-  ImGui::Text("3D view %.0f %% (%ux%u of %ux%u)%s", 100.0 * target.render_scale(), view.width,
-              view.height, window.width, window.height, dynamic ? ", dynamic" : "");
-  ImGui::Text("%s", draft ? "draft: 1 sample per pixel, hard 1024² shadows" : "full quality");
-  ImGui::End();
-}
 
 }  // namespace
 
@@ -315,7 +297,8 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     if (dynamic && last_frame_s > 0.0) (*target)->set_render_scale(resolution.update(last_frame_s));
     if (show_stats) {
       (*overlay)->new_frame();
-      draw_stats(last_frame_s, resolution.average_frame_s(), **target, draft, dynamic);
+      runtime::draw_view_stats({last_frame_s, resolution.average_frame_s(), draft, dynamic},
+                               **target);
     }
     auto frame = (*target)->begin_frame();
     if (!frame) return fail(frame.error());

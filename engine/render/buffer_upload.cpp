@@ -47,6 +47,28 @@ Result<DeviceBuffer> create_device_buffer_with_data(VulkanContext& context,
                     VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, false);
   if (!buffer) return buffer.error();
 
+  const Status copied = submit_once(context, [&](VkCommandBuffer commands) {
+    const VkBufferCopy region{0, 0, size};
+    vkCmdCopyBuffer(commands, staging->buffer.get(), buffer->buffer.get(), 1, &region);
+    // Later submissions read the buffer as vertices, indices or storage.
+    VkMemoryBarrier2 barrier = vk_struct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
+    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+    barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    barrier.dstStageMask =
+        VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT;
+    barrier.dstAccessMask = VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT |
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+    VkDependencyInfo dependency = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(commands, &dependency);
+  });
+  if (!copied) return copied.error();
+  return std::move(*buffer);
+}
+
+Status submit_once(const VulkanContext& context,
+                   const std::function<void(VkCommandBuffer)>& record) {
   const VkDevice device = context.device();
   Result<VkCommandBuffer> allocated = context.allocate_command_buffer();
   if (!allocated) return allocated.error();
@@ -57,27 +79,13 @@ Result<DeviceBuffer> create_device_buffer_with_data(VulkanContext& context,
     VkCommandBuffer commands;
     ~FreeCommands() { vkFreeCommandBuffers(device, pool, 1, &commands); }
   } free_commands{device, context.command_pool(), commands};
-
   VkCommandBufferBeginInfo begin =
       vk_struct<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   if (VkResult r = vkBeginCommandBuffer(commands, &begin); r != VK_SUCCESS) {
     return vk_error("vkBeginCommandBuffer", r);
   }
-  const VkBufferCopy region{0, 0, size};
-  vkCmdCopyBuffer(commands, staging->buffer.get(), buffer->buffer.get(), 1, &region);
-  // Later submissions read the buffer as vertices, indices or storage.
-  VkMemoryBarrier2 barrier = vk_struct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
-  barrier.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-  barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-  barrier.dstStageMask =
-      VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT;
-  barrier.dstAccessMask = VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT |
-                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
-  VkDependencyInfo dependency = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dependency.memoryBarrierCount = 1;
-  dependency.pMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(commands, &dependency);
+  record(commands);
   if (VkResult r = vkEndCommandBuffer(commands); r != VK_SUCCESS) {
     return vk_error("vkEndCommandBuffer", r);
   }
@@ -94,7 +102,7 @@ Result<DeviceBuffer> create_device_buffer_with_data(VulkanContext& context,
   if (VkResult r = vkQueueWaitIdle(context.graphics_queue()); r != VK_SUCCESS) {
     return vk_error("vkQueueWaitIdle", r);
   }
-  return std::move(*buffer);
+  return Status::success();
 }
 
 }  // namespace tutti::render

@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
+#include <functional>
 #include <span>
 
 #include <tutti/core/result.hpp>
@@ -25,5 +26,10 @@ Result<DeviceBuffer> create_frame_buffer(VulkanContext& context, VkDeviceSize si
 
 // Makes host writes to `buffer` visible to the device (no-op for coherent memory).
 Status flush_for_device_read(VkDevice device, const DeviceBuffer& buffer);
+
+// Records `record` into a one-time command buffer, submits it to the graphics queue and waits for
+// it (uploads at load time: buffers, textures).
+Status submit_once(const VulkanContext& context,
+                   const std::function<void(VkCommandBuffer)>& record);
 
 }  // namespace tutti::render

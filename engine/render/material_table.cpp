@@ -138,69 +138,44 @@ Result<std::unique_ptr<MaterialTable>> MaterialTable::create(
     if (!staging) return staging.error();
     std::memcpy(staging->mapped, chain.data(), chain.size());
     if (Status s = flush_for_device_read(device, *staging); !s) return s;
-    Result<VkCommandBuffer> allocated = context.allocate_command_buffer();
-    if (!allocated) return allocated.error();
-    VkCommandBuffer commands = *allocated;
-    struct FreeCommands {
-      VkDevice device;
-      VkCommandPool pool;
-      VkCommandBuffer commands;
-      ~FreeCommands() { vkFreeCommandBuffers(device, pool, 1, &commands); }
-    } free_commands{device, context.command_pool(), commands};
-    VkCommandBufferBeginInfo begin = vk_struct<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    if (VkResult r = vkBeginCommandBuffer(commands, &begin); r != VK_SUCCESS) {
-      return vk_error("vkBeginCommandBuffer", r);
-    }
-    const auto transition = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src_stage,
-                                VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
-                                VkAccessFlags2 dst_access) {
-      VkImageMemoryBarrier2 barrier = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
-      barrier.srcStageMask = src_stage;
-      barrier.srcAccessMask = src_access;
-      barrier.dstStageMask = dst_stage;
-      barrier.dstAccessMask = dst_access;
-      barrier.oldLayout = from;
-      barrier.newLayout = to;
-      barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.image = image;
-      barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, level_count, 0, 1};
-      VkDependencyInfo dependency = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-      dependency.imageMemoryBarrierCount = 1;
-      dependency.pImageMemoryBarriers = &barrier;
-      vkCmdPipelineBarrier2(commands, &dependency);
-    };
-    transition(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
-               VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    std::vector<VkBufferImageCopy> regions;
-    for (std::uint32_t level = 0; level < level_count; ++level) {
-      VkBufferImageCopy region{};
-      region.bufferOffset = levels[level].second;
-      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
-      region.imageExtent = {levels[level].first.width, levels[level].first.height, 1};
-      regions.push_back(region);
-    }
-    vkCmdCopyBufferToImage(commands, staging->buffer.get(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           level_count, regions.data());
-    transition(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-               VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    if (VkResult r = vkEndCommandBuffer(commands); r != VK_SUCCESS) {
-      return vk_error("vkEndCommandBuffer", r);
-    }
-    VkCommandBufferSubmitInfo command_info = vk_struct<VkCommandBufferSubmitInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO);
-    command_info.commandBuffer = commands;
-    VkSubmitInfo2 submit = vk_struct<VkSubmitInfo2>(VK_STRUCTURE_TYPE_SUBMIT_INFO_2);
-    submit.commandBufferInfoCount = 1;
-    submit.pCommandBufferInfos = &command_info;
-    if (VkResult r = vkQueueSubmit2(context.graphics_queue(), 1, &submit, VK_NULL_HANDLE); r != VK_SUCCESS) {
-      return vk_error("vkQueueSubmit2", r);
-    }
-    if (VkResult r = vkQueueWaitIdle(context.graphics_queue()); r != VK_SUCCESS) {
-      return vk_error("vkQueueWaitIdle", r);
-    }
+    const Status uploaded = submit_once(context, [&](VkCommandBuffer commands) {
+      const auto transition = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src_stage,
+                                  VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
+                                  VkAccessFlags2 dst_access) {
+        VkImageMemoryBarrier2 barrier = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
+        barrier.srcStageMask = src_stage;
+        barrier.srcAccessMask = src_access;
+        barrier.dstStageMask = dst_stage;
+        barrier.dstAccessMask = dst_access;
+        barrier.oldLayout = from;
+        barrier.newLayout = to;
+        barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        barrier.image = image;
+        barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, level_count, 0, 1};
+        VkDependencyInfo dependency = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
+        dependency.imageMemoryBarrierCount = 1;
+        dependency.pImageMemoryBarriers = &barrier;
+        vkCmdPipelineBarrier2(commands, &dependency);
+      };
+      transition(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT);
+      std::vector<VkBufferImageCopy> regions;
+      for (std::uint32_t level = 0; level < level_count; ++level) {
+        VkBufferImageCopy region{};
+        region.bufferOffset = levels[level].second;
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+        region.imageExtent = {levels[level].first.width, levels[level].first.height, 1};
+        regions.push_back(region);
+      }
+      vkCmdCopyBufferToImage(commands, staging->buffer.get(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                             level_count, regions.data());
+      transition(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                 VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    });
+    if (!uploaded) return uploaded;
     table->textures_.push_back(std::move(texture));
     return Status::success();
   };

@@ -56,6 +56,16 @@ float ArmPlacer::place(const glm::vec3& wrist, const glm::quat& rotation,
   return glm::distance(glm::vec3(world[static_cast<std::size_t>(arm_.end)][3]), wrist);
 }
 
+void ArmPlacer::refresh(std::vector<glm::mat4>& world) const {
+  world.resize(asset_.nodes.size());
+  model::compute_world_matrices(asset_, pose_, root_, world);
+}
+
+void FreeHandPlacer::refresh(std::vector<glm::mat4>& world) const {
+  world.resize(asset_.nodes.size());
+  model::compute_world_matrices(asset_, pose_, root_, world);
+}
+
 float FreeHandPlacer::place(const glm::vec3& wrist, const glm::quat& rotation,
                             std::vector<glm::mat4>& world) {
   world.resize(asset_.nodes.size());
@@ -182,7 +192,7 @@ float place_hand(const ecs::World& ecs_world, const model::ModelAsset& asset,
     }
     stage::pose_fingers(asset, nodes, body_side, curls, &goal.tips, world, pose);
     if (last) break;
-    placer.place(wrist, goal.rotation, world);  // the fingers' new pose
+    placer.refresh(world);  // the fingers' new pose
     glm::vec3 worst(0.0f), mean_miss(0.0f);
     int pressing = 0;
     for (std::size_t f = 0; f < 5; ++f) {

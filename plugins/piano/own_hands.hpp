@@ -30,6 +30,8 @@ class WristPlacer {
   virtual ~WristPlacer() = default;
   virtual float place(const glm::vec3& wrist, const glm::quat& rotation,
                       std::vector<glm::mat4>& world) = 0;
+  // The world matrices of the pose as it now is (the fingers bent), the wrist left where it is.
+  virtual void refresh(std::vector<glm::mat4>& world) const = 0;
 };
 
 // The wrist on a seated body's arm (two-bone IK, elbow down, out and a little back).
@@ -40,6 +42,7 @@ class ArmPlacer : public WristPlacer {
       : asset_(asset), pose_(pose), root_(root), arm_(arm), side_(side) {}
   float place(const glm::vec3& wrist, const glm::quat& rotation,
               std::vector<glm::mat4>& world) override;
+  void refresh(std::vector<glm::mat4>& world) const override;
 
  private:
   const model::ModelAsset& asset_;
@@ -58,6 +61,7 @@ class FreeHandPlacer : public WristPlacer {
       : asset_(asset), pose_(pose), root_(root), hand_(hand) {}
   float place(const glm::vec3& wrist, const glm::quat& rotation,
               std::vector<glm::mat4>& world) override;
+  void refresh(std::vector<glm::mat4>& world) const override;
 
  private:
   const model::ModelAsset& asset_;
