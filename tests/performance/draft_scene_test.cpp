@@ -85,6 +85,7 @@ void expect_cuts_follow_the_players(const Drafted& d) {
 }
 
 TEST(DraftScene, AChoraleWithTrumpetsGetsThreeTrumpetersAndNamesTheVoicesItLeavesOut) {
+  TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/music21/bwv29.8.mxl");
   ASSERT_EQ(d.scene.performers.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
@@ -103,6 +104,7 @@ TEST(DraftScene, AChoraleWithTrumpetsGetsThreeTrumpetersAndNamesTheVoicesItLeave
 }
 
 TEST(DraftScene, ASymphonysHornsAndTrumpetsGetAPlayerPerVoiceSeatedBySection) {
+  TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("midi/tonejs/symphony_7_2.mid");
   ASSERT_EQ(d.scene.performers.size(), 4u);
   const char* instruments[] = {"trumpet_bb", "trumpet_bb", "horn_double", "horn_double"};
@@ -128,6 +130,7 @@ TEST(DraftScene, ASymphonysHornsAndTrumpetsGetAPlayerPerVoiceSeatedBySection) {
 }
 
 TEST(DraftScene, EachPlayersCameraLooksAtThatPlayer) {
+  TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("midi/tonejs/symphony_7_2.mid");
   for (const scene::Performer& p : d.scene.performers) {
     std::string stem;
@@ -145,6 +148,7 @@ TEST(DraftScene, EachPlayersCameraLooksAtThatPlayer) {
 }
 
 TEST(DraftScene, APianoPieceGoesToThePianistWithThePianosCameras) {
+  TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/pianoplayer/mozart_sonfacile.mxl");
   EXPECT_TRUE(d.scene.performers.empty());
   ASSERT_TRUE(d.scene.pianist);
@@ -159,6 +163,7 @@ TEST(DraftScene, APianoPieceGoesToThePianistWithThePianosCameras) {
 }
 
 TEST(DraftScene, BrassAndPianoTogetherSitSideBySide) {
+  TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/lilypond-test-suite/72a-TransposingInstruments.xml");
   ASSERT_EQ(d.scene.performers.size(), 2u);
   EXPECT_EQ(d.scene.performers[0].instrument, "trumpet_bb");
@@ -171,6 +176,7 @@ TEST(DraftScene, BrassAndPianoTogetherSitSideBySide) {
 }
 
 TEST(DraftScene, TheSameScoreGivesTheSameDocument) {
+  TUTTI_REQUIRE_TESTDATA();
   const Drafted a = draft_of("midi/tonejs/symphony_7_2.mid");
   const Drafted b = draft_of("midi/tonejs/symphony_7_2.mid");
   EXPECT_EQ(format_scene_document(a.draft.document), format_scene_document(b.draft.document));
@@ -195,6 +201,7 @@ TEST(DraftScene, MusicNobodyCanPlayIsAnErrorNamingTheParts) {
 }
 
 TEST(DraftScene, TheDocumentReadsLikeAHandWrittenScene) {
+  TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/lilypond-test-suite/72a-TransposingInstruments.xml");
   const std::string text = format_scene_document(d.draft.document);
   EXPECT_EQ(text.rfind("{\n  \"description\": ", 0), 0u) << text;
