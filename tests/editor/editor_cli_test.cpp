@@ -216,6 +216,42 @@ TEST(EditorCli, ASceneMadeFromAPieceLoadsEditsAndRenders) {
   EXPECT_GT(changed, 5000) << "the cut to Trumpet 2 is on screen at 9 s";
 }
 
+// Issue 22's round trip, as processes: `add-breath "Trombone 1" 6.4` and save in one editor run;
+// `delete-breath "Trombone 1" 6.667` (the time it was saved at) and save in a second. The breath
+// shows while it is there, and afterwards the scene renders byte for byte as the original at a
+// time the breath covered.
+TEST(EditorCli, ABreathAddedThenDeletedRendersAsTheOriginal) {
+  if (!have_display()) GTEST_SKIP() << "no display";
+  ScratchDir dir;
+  const auto scene = dir.copy_scene("quartet.json");
+  const auto original = dir.write("original.json", read_text(scene));
+  int code = 0;
+  std::string output = run(editor_command(scene, dir.write("add.txt",
+                                                           "add-breath \"Trombone 1\" 6.4\n"
+                                                           "save\nquit\n")),
+                           code);
+  ASSERT_EQ(code, 0) << output;
+  const std::string added = read_text(scene);
+  ASSERT_NE(added.find("6.667"), std::string::npos) << added;
+  // The inhale before the note at 6.667 s, seen from the trombones' camera.
+  const double t = 6.55;
+  const auto before = still(original, t, dir.path() / "original.png", "trombones");
+  const auto with_breath = still(scene, t, dir.path() / "added.png", "trombones");
+  EXPECT_GT(differing_pixels(before, with_breath), 0) << "the added breath shows at " << t << " s";
+
+  output = run(editor_command(scene, dir.write("delete.txt",
+                                               "delete-breath \"Trombone 1\" 6.667\n"
+                                               "save\nquit\n")),
+               code);
+  ASSERT_EQ(code, 0) << output;
+  const auto after = still(scene, t, dir.path() / "after.png", "trombones");
+  EXPECT_EQ(read_text(after), read_text(before)) << "the PNGs differ byte for byte";
+  auto reopened = scene::load_scene(scene);
+  ASSERT_TRUE(reopened) << reopened.error().message;
+  EXPECT_TRUE(reopened->performers[2].breaths.add_s.empty());
+  EXPECT_TRUE(reopened->performers[2].breaths.remove_s.empty());
+}
+
 TEST(EditorCli, KilledWhileSavingThePreviousFileIsIntact) {
   if (!have_display()) GTEST_SKIP() << "no display";
   ScratchDir dir;
