@@ -36,6 +36,18 @@ std::string axis_name(const glm::vec3& v) {
 }  // namespace
 
 int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
+  // A mapping file (scene/asset_mapping.hpp) is JSON like a .gltf: name it for what it is.
+  if (o.model.extension() == ".json") {
+    std::ifstream in(o.model);
+    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (doc.is_object() && doc.contains("kind") && doc.contains("model") &&
+        doc.at("model").is_string()) {
+      err << "error: " << o.model.filename().string()
+          << ": a mapping file, not a model (tutti rig reads the model it names: "
+          << doc.at("model").get<std::string>() << ")\n";
+      return kExitBadInput;
+    }
+  }
   auto model = model::load_model(o.model);
   if (!model) {
     err << "error: " << model.error().message << "\n";

@@ -140,6 +140,11 @@ TEST(RigCommand, BrokenRigsAreOneLineNamingTheProblem) {
                          std::memcpy(binary.data() + at, &nan, 4);
                        }),
                    "non-finite number (NaN or infinity)"});
+  // A mapping file given where the model belongs.
+  const std::filesystem::path mapping = dir.path() / "pchar.json";
+  std::ofstream(mapping) << R"({"kind": "character", "model": "hero.glb"})";
+  cases.push_back({mapping, "a mapping file, not a model (tutti rig reads the model it names: "
+                            "hero.glb)"});
   for (const Case& c : cases) {
     RigOptions o;
     o.model = c.file;
