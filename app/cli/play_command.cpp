@@ -17,6 +17,7 @@
 #include <tutti/cli/exit_codes.hpp>
 #include <tutti/cli/stage_scene.hpp>
 #include <tutti/cli/play_live.hpp>
+#include <tutti/cli/size_option.hpp>
 #include <tutti/image/png.hpp>
 #include <tutti/render/frame_target.hpp>
 #include <tutti/render/vulkan_context.hpp>
@@ -32,7 +33,8 @@
 namespace tutti::app {
 namespace {
 
-std::optional<double> parse_seconds(const std::string& text) {
+// A whole string as a finite number (seconds, a scale); nullopt otherwise.
+std::optional<double> parse_number(const std::string& text) {
   if (text.empty()) return std::nullopt;
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
@@ -120,22 +122,18 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
                   runtime::kMaxTempo);
     return fail(text);
   }
-  int window_width = 0;
-  int window_height = 0;
+  Size window_size;
   if (!o.size.empty()) {
-    char extra = 0;
-    if (std::sscanf(o.size.c_str(), "%dx%d%c", &window_width, &window_height, &extra) != 2 ||
-        window_width < 320 || window_height < 240 || window_width > 7680 ||
-        window_height > 4320) {
-      return fail("--size \"" + o.size + "\": expected WxH, from 320x240 to 7680x4320");
-    }
+    auto size = parse_size_option(o.size, 320, 240, /*even=*/false);
+    if (!size) return fail(size.error());
+    window_size = *size;
   }
   if (o.quality != "auto" && o.quality != "draft" && o.quality != "full") {
     return fail("--quality \"" + o.quality + "\": must be auto, draft or full");
   }
   std::optional<float> fixed_scale;
   if (o.render_scale != "auto") {
-    const std::optional<double> scale = parse_seconds(o.render_scale);
+    const std::optional<double> scale = parse_number(o.render_scale);
     if (!scale || *scale < 0.25 || *scale > 1.0) {
       return fail("--render-scale \"" + o.render_scale + "\": must be auto or in [0.25, 1]");
     }
@@ -149,16 +147,16 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   }
   std::optional<double> start;
   if (!o.start.empty()) {
-    start = parse_seconds(o.start);
+    start = parse_number(o.start);
     if (!start) return fail("--start \"" + o.start + "\" is not a time in seconds");
   }
   std::optional<runtime::LoopRange> loop;
   if (!o.loop.empty()) {
     const std::size_t colon = o.loop.find(':');
     const std::optional<double> a =
-        colon == std::string::npos ? std::nullopt : parse_seconds(o.loop.substr(0, colon));
+        colon == std::string::npos ? std::nullopt : parse_number(o.loop.substr(0, colon));
     const std::optional<double> b =
-        colon == std::string::npos ? std::nullopt : parse_seconds(o.loop.substr(colon + 1));
+        colon == std::string::npos ? std::nullopt : parse_number(o.loop.substr(colon + 1));
     if (!a || !b || !(*b > *a)) {
       return fail("--loop \"" + o.loop + "\": expected A:B, seconds, A < B");
     }
@@ -181,10 +179,10 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   }
 
   render::WindowOptions window_options;
-  window_options.width =
-      static_cast<std::uint32_t>(window_width > 0 ? window_width : scene->output.width);
-  window_options.height =
-      static_cast<std::uint32_t>(window_height > 0 ? window_height : scene->output.height);
+  window_options.width = static_cast<std::uint32_t>(
+      window_size.width > 0 ? window_size.width : scene->output.width);
+  window_options.height = static_cast<std::uint32_t>(
+      window_size.height > 0 ? window_size.height : scene->output.height);
   window_options.title = "tutti play " + o.scene.filename().string();
   auto window = render::Window::create(window_options);
   if (!window) return fail(window.error());

@@ -12,6 +12,7 @@
 #include <tutti/cli/exit_codes.hpp>
 #include <tutti/cli/frame_range.hpp>
 #include <tutti/cli/scene_audio.hpp>
+#include <tutti/cli/size_option.hpp>
 #include <tutti/cli/slice_tag.hpp>
 #include <tutti/cli/stage_scene.hpp>
 #include <tutti/cli/video_pipe.hpp>
@@ -45,19 +46,6 @@ Result<OutputKind> output_kind(const RenderOptions& o) {
   return Error{o.output.string() +
                ": the output must be .mp4, a folder for PNG frames, or .png "
                "with --still"};
-}
-
-Status parse_size(const std::string& text, int& width, int& height) {
-  int w = 0;
-  int h = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 16 || h < 16 || w > 7680 ||
-      h > 4320 || w % 2 != 0 || h % 2 != 0) {
-    return Error{"--size \"" + text + "\": expected WxH, even, from 16x16 to 7680x4320"};
-  }
-  width = w;
-  height = h;
-  return Status::success();
 }
 
 // "[=====>     ] 120/900 frames  34.2 fps  ETA 0:23" on a terminal (redrawn in place), else a
@@ -116,7 +104,10 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   int width = scene->output.width;
   int height = scene->output.height;
   if (!o.size.empty()) {
-    if (Status s = parse_size(o.size, width, height); !s) return fail(s.error());
+    auto size = parse_size_option(o.size, 16, 16, /*even=*/true);
+    if (!size) return fail(size.error());
+    width = size->width;
+    height = size->height;
   }
   const int fps = o.fps > 0 ? o.fps : scene->output.fps;
   if (o.fps < 0 || fps > 240) return fail("--fps " + std::to_string(o.fps) + ": must be 1..240");

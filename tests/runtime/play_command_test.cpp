@@ -78,6 +78,11 @@ TEST(PlayCommandTest, BadOptionsAreErrors) {
   expect_one_line_error(run_tutti("play " + scene("piano.json") + " --screenshot x.jpg"), ".png");
   expect_one_line_error(run_tutti("play " + scene("piano.json") + " --frame-count -1"),
                         "--frame-count");
+  expect_one_line_error(run_tutti("play " + scene("piano.json") + " --size 100x100"),
+                        "--size \"100x100\": expected WxH, from 320x240 to 7680x4320");
+  expect_one_line_error(run_tutti("play " + scene("piano.json") + " --quality best"), "--quality");
+  expect_one_line_error(run_tutti("play " + scene("piano.json") + " --render-scale 2"),
+                        "--render-scale");
 }
 
 // The machine lacks something (exit 3), not the user's input (2).
