@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
+#include <utility>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -125,12 +127,42 @@ class Checker {
   Checker(stage::Stage& stage, PoseReport& report, const FingerLimits& limits)
       : stage_(stage), report_(report), limits_(limits) {}
 
+  void at_time(double t_s, double dt_s) {
+    t_s_ = t_s;
+    dt_s_ = dt_s;
+  }
+
+  // The fastest-turning joint of a posed model since the last frame (deg/s), by its local
+  // rotation: a one-frame snap of an arm or a finger shows here as an angular speed no player has.
+  void joint_speeds(const std::string& who, const stage::PlacedModel& placed) {
+    std::vector<glm::quat>& last = last_rotations_[&placed];
+    const std::vector<model::NodeTransform>& now = placed.pose.local;
+    double fastest = 0.0;
+    std::size_t fastest_node = 0;
+    if (last.size() == now.size()) {
+      for (std::size_t n = 0; n < now.size(); ++n) {
+        const double cos_half = std::min(1.0, static_cast<double>(std::abs(glm::dot(last[n], now[n].rotation))));
+        const double degrees = 2.0 * std::acos(cos_half) * 180.0 / 3.14159265358979323846;
+        if (degrees > fastest) fastest = degrees, fastest_node = n;
+      }
+      measure(who + ": fastest joint's angular speed", "deg/s")
+          .add(fastest / dt_s_, t_s_, fastest > 0.0 ? placed.asset->nodes[fastest_node].name : std::string());
+    }
+    last.resize(now.size());
+    for (std::size_t n = 0; n < now.size(); ++n) last[n] = now[n].rotation;
+  }
+
   PoseMeasure& measure(const std::string& name, const char* unit, double limit = -1.0,
                        bool by_p95 = false) {
     for (PoseMeasure& m : report_.measures) {
       if (m.name == name) return m;
     }
-    report_.measures.push_back({name, unit, {}, limit, by_p95});
+    PoseMeasure added;
+    added.name = name;
+    added.unit = unit;
+    added.limit = limit;
+    added.by_p95 = by_p95;
+    report_.measures.push_back(std::move(added));
     return report_.measures.back();
   }
 
@@ -145,7 +177,7 @@ class Checker {
       clearance = std::min(clearance, distance_to_segment(p, bottom, top) - kHeadRadiusM);
     }
     measure(who + ": hands and fingertips inside the head (depth; 0 = outside)", "mm", 0.0)
-        .samples.push_back(std::max(0.0, -clearance) * 1000.0);
+        .add(std::max(0.0, -clearance) * 1000.0, t_s_);
   }
 
   // How deep the deepest of `points` is inside the torso's capsule (hips to neck).
@@ -160,7 +192,7 @@ class Checker {
     }
     measure(who + ": hands, fingertips and elbows inside the torso (depth; 0 = outside)", "mm",
             0.0)
-        .samples.push_back(std::max(0.0, -clearance) * 1000.0);
+        .add(std::max(0.0, -clearance) * 1000.0, t_s_);
   }
 
   // How deep the instrument's surface reaches into either arm's sleeve (shoulder to elbow, elbow to
@@ -170,21 +202,25 @@ class Checker {
     struct Capsule {
       glm::vec3 a, b;
       float radius;
+      const char* name;
     };
     std::vector<Capsule> arms;
     for (const stage::TwoBoneChain* arm : {&nodes.arm_left, &nodes.arm_right}) {
       if (arm->upper < 0 || arm->lower < 0 || arm->end < 0) continue;
+      const bool left = arm == &nodes.arm_left;
       const glm::vec3 shoulder = origin(body_world_[static_cast<std::size_t>(arm->upper)]);
       const glm::vec3 elbow = origin(body_world_[static_cast<std::size_t>(arm->lower)]);
       const glm::vec3 wrist = origin(body_world_[static_cast<std::size_t>(arm->end)]);
       const float forearm = glm::distance(elbow, wrist);
       if (forearm <= kSleeveShortOfWristM) continue;
       const glm::vec3 cuff = elbow + (wrist - elbow) * ((forearm - kSleeveShortOfWristM) / forearm);
-      arms.push_back({shoulder, elbow, kUpperArmRadiusM});
-      arms.push_back({elbow, cuff, kForearmRadiusM});
+      arms.push_back({shoulder, elbow, kUpperArmRadiusM, left ? "left upper arm" : "right upper arm"});
+      arms.push_back({elbow, cuff, kForearmRadiusM, left ? "left forearm" : "right forearm"});
     }
     if (arms.empty()) return;
     double depth = 0.0;
+    const Capsule* deepest_arm = nullptr;
+    std::size_t deepest_node = 0;
     const model::ModelAsset& asset = *horn.asset;
     for (std::size_t n = 0; n < asset.nodes.size(); ++n) {
       const model::Node& node = asset.nodes[n];
@@ -195,14 +231,17 @@ class Checker {
           const glm::vec3 p =
               world * glm::vec4(asset.vertices[primitive.first_vertex + v].position, 1.0f);
           for (const Capsule& arm : arms) {
-            depth = std::max(depth, static_cast<double>(arm.radius) -
-                                        distance_to_segment(p, arm.a, arm.b));
+            const double into = static_cast<double>(arm.radius) - distance_to_segment(p, arm.a, arm.b);
+            if (into > depth) depth = into, deepest_arm = &arm, deepest_node = n;
           }
         }
       }
     }
     measure(who + ": instrument inside an arm's sleeve (depth; 0 = clear)", "mm", 0.0)
-        .samples.push_back(depth * 1000.0);
+        .add(depth * 1000.0, t_s_,
+             deepest_arm == nullptr
+                 ? std::string()
+                 : asset.nodes[deepest_node].name + " in the " + deepest_arm->name);
   }
 
   // A hand held in the bell (the horn's right hand: its palm_at node inside the bell): how far its
@@ -240,7 +279,7 @@ class Checker {
       measure(who + (side == 0 ? ": left" : ": right") +
                   " fingertips through the bell's wall or out past its rim",
               "mm", 0.0)
-          .samples.push_back(through);
+          .add(through, t_s_);
     }
   }
 
@@ -248,20 +287,22 @@ class Checker {
   void finger_limits(const std::string& who, const model::ModelAsset& asset,
                      const model::ModelPose& pose, const stage::BodyNodes& nodes) {
     double worst = 0.0;
+    int worst_node = -1;
     for (std::size_t side = 0; side < 2; ++side) {
       for (std::size_t f = 1; f < 5; ++f) {
         for (std::size_t j = 0; j < 3; ++j) {
           const int node = nodes.fingers[side][f][j];
           const int child = j < 2 ? nodes.fingers[side][f][j + 1] : nodes.fingertips[side][f];
           if (node < 0 || child < 0) continue;
-          worst = std::max(worst, past_limit(pose.local[static_cast<std::size_t>(node)].rotation,
-                                             asset.nodes[static_cast<std::size_t>(child)].rest.translation,
-                                             static_cast<int>(side), limits_[f][j]));
+          const double past = past_limit(pose.local[static_cast<std::size_t>(node)].rotation,
+                                         asset.nodes[static_cast<std::size_t>(child)].rest.translation,
+                                         static_cast<int>(side), limits_[f][j]);
+          if (past > worst) worst = past, worst_node = node;
         }
       }
     }
     measure(who + ": finger joints past their limits (worst joint)", "deg", 0.5)
-        .samples.push_back(worst);
+        .add(worst, t_s_, worst_node < 0 ? std::string() : asset.nodes[static_cast<std::size_t>(worst_node)].name);
   }
 
   void brass(ecs::Entity performer, const brass_family::BrassRig& rig) {
@@ -274,6 +315,7 @@ class Checker {
     const std::string who = name_of(world, performer);
     world_of(*horn, horn_world_);
     world_of(*body, body_world_);
+    joint_speeds(who, *body);
     const model::ModelAsset& body_asset = *body->asset;
     const auto body_point = [&](const std::string& node) -> const glm::mat4* {
       const int n = body_asset.find_node(node);
@@ -297,9 +339,9 @@ class Checker {
             if (tip < 0) continue;
             const glm::vec3 button = origin(horn_world_[static_cast<std::size_t>(rig.valves[v])]);
             measure(who + ": pressing fingertip to its button top", "mm", 10.0, true)
-                .samples.push_back(static_cast<double>(glm::distance(
+                .add(static_cast<double>(glm::distance(
                                        origin(body_world_[static_cast<std::size_t>(tip)]), button)) *
-                                   1000.0);
+                                   1000.0, t_s_);
           }
         }
       }
@@ -313,10 +355,10 @@ class Checker {
       const glm::vec3 wrist =
           origin(body_world_[static_cast<std::size_t>(rig.body_nodes.arm_left.end)]);
       measure(who + ": left hand's origin (wrist) to the valve casings' axis", "mm", 60.0)
-          .samples.push_back(distance_to_line(
+          .add(distance_to_line(
                                  wrist, origin(horn_world_[static_cast<std::size_t>(casing)]),
                                  frame * rig.valve_axis[1]) *
-                             1000.0);
+                             1000.0, t_s_);
     }
     // Palms that hold a grip (the hold's palm_at): the palm's centre to it.
     for (std::size_t side = 0; side < 2; ++side) {
@@ -330,7 +372,7 @@ class Checker {
       measure(who + (side == 0 ? ": left palm to its grip (" : ": right palm to its grip (") +
                   rig.hold.hands[side].palm_at + ")",
               "mm", 20.0)
-          .samples.push_back(distance);
+          .add(distance, t_s_);
     }
     if (const auto* slide = world.try_get<components::Slide>(rig.instrument);
         slide != nullptr && slide->speed_mm_per_s != 0.0 && rig.grip_right >= 0 &&
@@ -338,7 +380,7 @@ class Checker {
       const glm::vec3 palm = origin(body_world_[static_cast<std::size_t>(rig.body_nodes.grip_right)]);
       const glm::vec3 brace = origin(horn_world_[static_cast<std::size_t>(rig.grip_right)]);
       measure(who + ": right palm to the slide grip while the slide moves", "mm", 20.0)
-          .samples.push_back(static_cast<double>(glm::distance(palm, brace)) * 1000.0);
+          .add(static_cast<double>(glm::distance(palm, brace)) * 1000.0, t_s_);
     }
     std::vector<glm::vec3> hands;
     for (const char* node : {"hand_l", "hand_r"}) {
@@ -372,7 +414,10 @@ class Checker {
     // stand-in's fingertips and last joints).
     const auto* body =
         stage::posed_body(world.try_get<stage::PlacedModel>(rig.body), rig.body_retarget);
-    if (body != nullptr) world_of(*body, body_world_);
+    if (body != nullptr) {
+      world_of(*body, body_world_);
+      joint_speeds(who, *body);
+    }
     const stage::PlacedModel* own = nullptr;
     const stage::BodyNodes* own_nodes = nullptr;
     if (rig.hands_retarget) {
@@ -385,7 +430,10 @@ class Checker {
     }
     for (std::size_t side = 0; side < 2; ++side) {
       const auto* hand = world.try_get<stage::PlacedModel>(rig.hand_models[side]);
-      if (hand != nullptr && own == nullptr) world_of(*hand, hand_world_);
+      if (hand != nullptr && own == nullptr) {
+        world_of(*hand, hand_world_);
+        joint_speeds(who, *hand);
+      }
       const std::size_t body_side = side == 0 ? 1 : 0;  // the rig's _r is its side 1
       // The fingertip and its last joint (-1 when the hand has none).
       const auto joints = [&](std::size_t f, glm::vec3& tip, glm::vec3& dip) {
@@ -432,8 +480,20 @@ class Checker {
                                        " pad above its key's top at key bottom",
                                    "mm", 3.0);
         pad.two_sided = true;
-        pad.samples.push_back((static_cast<double>(centre_local.y) - kPadRadiusMm[f] / 1000.0) *
-                               1000.0);
+        // The pad's lowest point over the key's top: off its outline (a black key struck in front
+        // of its front edge, a key missed to the side) it presses nothing.
+        const KeyOutline& outline = key_outline(*piano->asset, key_node);
+        const double off_side = std::max(0.0, std::abs(static_cast<double>(centre_local.x)) -
+                                                  outline.half_width_m);
+        const double off_end = std::max({0.0, -static_cast<double>(centre_local.z),
+                                         static_cast<double>(centre_local.z) - outline.length_m});
+        measure(who + ": pressing pad off its key's top (0 = on it)", "mm", 1.0)
+            .add(std::hypot(off_side, off_end) * 1000.0, t_s_,
+                 (side == 0 ? "right " : "left ") + std::string(kFingerNames[f]) + " on key " +
+                     std::to_string(finger->key));
+        pad.add((static_cast<double>(centre_local.y) - kPadRadiusMm[f] / 1000.0) * 1000.0, t_s_,
+                (side == 0 ? "right " : "left ") + std::string(kFingerNames[f]) + " on key " +
+                    std::to_string(finger->key));
       }
     }
     // The keys: how far each is down, and whether a note of it sounds (or is being struck or
@@ -458,12 +518,38 @@ class Checker {
       key_seconds_ += dt_s;
       if (down > 0.25 && down < 0.75 && !sounding) {
         key_mid_silent_ += dt_s;
-        if (!striking) key_mid_resting_ += dt_s;
+        if (!striking) {
+          key_mid_resting_ += dt_s;
+          if (hanging_key_ < 0) hanging_key_ = key, hanging_at_s_ = t_s;
+        }
       }
     }
     head_tips_ = tips;
     if (body != nullptr) head_clearance(who, rig.body_nodes.head, head_tips_);
     pianist_ = who;
+  }
+
+  // A key's top in its own frame: from the pivot (its back edge, z = 0) toward the player, as
+  // wide and as long as its mesh.
+  struct KeyOutline {
+    double half_width_m = 0.0;
+    double length_m = 0.0;
+  };
+  const KeyOutline& key_outline(const model::ModelAsset& asset, int node) {
+    auto [it, added] = outlines_.try_emplace(node);
+    if (!added) return it->second;
+    const model::Node& key = asset.nodes[static_cast<std::size_t>(node)];
+    if (key.mesh < 0) return it->second;
+    float x_max = 0.0f, z_max = 0.0f;
+    for (const model::Primitive& primitive : asset.meshes[static_cast<std::size_t>(key.mesh)].primitives) {
+      for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
+        const glm::vec3& p = asset.vertices[primitive.first_vertex + v].position;
+        x_max = std::max(x_max, std::abs(p.x));
+        z_max = std::max(z_max, p.z);
+      }
+    }
+    it->second = {static_cast<double>(x_max), static_cast<double>(z_max)};
+    return it->second;
   }
 
   void collect_notes() {
@@ -477,13 +563,14 @@ class Checker {
     // Of every animated key's seconds (all the piano's keys over the range): the figure.
     measure(pianist_ + ": keys half down (25-75 %), no note sounding, of all keys' seconds", "%",
             1.0)
-        .samples.push_back(100.0 * key_mid_silent_ / all_key_seconds_);
+        .add(100.0 * key_mid_silent_ / all_key_seconds_, t_s_);
     // Of the seconds keys are off their rest (stricter, informational): a key passes through half
     // travel before its hammer escapes and after its damper falls, on every stroke and release.
     measure(pianist_ + ": key-seconds half down (25-75 %) with no note of the key sounding", "%")
-        .samples.push_back(100.0 * key_mid_silent_ / key_seconds_);
+        .add(100.0 * key_mid_silent_ / key_seconds_, t_s_);
     measure(pianist_ + ": ... of them outside the keys' strokes (a key left hanging)", "%", 1.0)
-        .samples.push_back(100.0 * key_mid_resting_ / key_seconds_);
+        .add(100.0 * key_mid_resting_ / key_seconds_, hanging_at_s_,
+             hanging_key_ < 0 ? std::string() : "the first: key " + std::to_string(hanging_key_));
   }
 
  private:
@@ -494,7 +581,13 @@ class Checker {
   FingerLimits limits_;
   std::vector<std::pair<ecs::Entity, const components::Note*>> notes_;
   double key_seconds_ = 0.0, all_key_seconds_ = 0.0, key_mid_silent_ = 0.0, key_mid_resting_ = 0.0;
+  int hanging_key_ = -1;  // the first key seen left hanging, and when
+  double hanging_at_s_ = 0.0;
   std::string pianist_;
+  double t_s_ = 0.0;
+  double dt_s_ = 1.0 / 30.0;
+  std::map<const stage::PlacedModel*, std::vector<glm::quat>> last_rotations_;
+  std::map<int, KeyOutline> outlines_;
 };
 
 }  // namespace
@@ -505,6 +598,16 @@ double PoseMeasure::percentile(double p) const {
   std::sort(sorted.begin(), sorted.end());
   const double at = std::clamp(p, 0.0, 1.0) * static_cast<double>(sorted.size() - 1);
   return sorted[static_cast<std::size_t>(std::ceil(at))];
+}
+
+void PoseMeasure::add(double value, double t_s, const std::string& of) {
+  const auto size = [&](double x) { return two_sided ? std::abs(x) : x; };
+  if (samples.empty() || size(value) > size(samples[worst_index_])) {
+    worst_index_ = samples.size();
+    worst_at_s = t_s;
+    worst_of = of;
+  }
+  samples.push_back(value);
 }
 
 bool PoseMeasure::within_limit() const {
@@ -534,6 +637,7 @@ Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& optio
     const double t = options.from_s + static_cast<double>(k) * dt;
     stage.run({t, dt});
     ++report.frames;
+    checker.at_time(t, dt);
     for (ecs::Entity performer : stage.performers()) {
       if (const auto* rig = stage.world().try_get<brass_family::BrassRig>(performer)) {
         checker.brass(performer, *rig);
@@ -550,8 +654,9 @@ Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& optio
 std::string format_pose_report(const PoseReport& report) {
   std::string out;
   char line[512];
-  std::snprintf(line, sizeof line, "%zu frames\n%-80s %7s %7s %7s %7s %7s %10s\n", report.frames,
-                "measure", "samples", "min", "median", "p95", "max", "limit");
+  std::snprintf(line, sizeof line, "%zu frames\n%-80s %7s %7s %7s %7s %7s %10s  %s\n",
+                report.frames, "measure", "samples", "min", "median", "p95", "max", "limit",
+                "worst at");
   out += line;
   for (const PoseMeasure& m : report.measures) {
     char limit[32] = "";
@@ -559,9 +664,14 @@ std::string format_pose_report(const PoseReport& report) {
       std::snprintf(limit, sizeof limit, "%s%g %s", m.by_p95 ? "p95<=" : m.two_sided ? "|x|<=" : "<=",
                     m.limit, m.within_limit() ? "ok" : "OVER");
     }
-    std::snprintf(line, sizeof line, "%-80s %7zu %7.1f %7.1f %7.1f %7.1f %10s\n",
+    char at[96] = "";
+    if (m.samples.size() > 1 || !m.worst_of.empty()) {
+      std::snprintf(at, sizeof at, "%.2f s%s%s%s", m.worst_at_s, m.worst_of.empty() ? "" : " (",
+                    m.worst_of.c_str(), m.worst_of.empty() ? "" : ")");
+    }
+    std::snprintf(line, sizeof line, "%-80s %7zu %7.1f %7.1f %7.1f %7.1f %10s  %s\n",
                   (m.name + " (" + m.unit + ")").c_str(), m.samples.size(), m.percentile(0.0),
-                  m.percentile(0.5), m.percentile(0.95), m.worst(), limit);
+                  m.percentile(0.5), m.percentile(0.95), m.worst(), limit, at);
     out += line;
   }
   return out;

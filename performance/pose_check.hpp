@@ -32,10 +32,19 @@ struct PoseMeasure {
   double limit = -1.0;          // the most allowed for `worst` (p95 if by_p95), < 0: no limit
   bool by_p95 = false;
   bool two_sided = false;  // the limit bounds |sample| (a signed distance: above or into)
+  // Where the worst sample (the largest, or the largest |x| when two-sided) was: its music time
+  // and what it was of ("right index on key 64"), so a figure over its limit can be looked at.
+  double worst_at_s = 0.0;
+  std::string worst_of;
+
+  // Adds a sample taken at music time `t_s`; `of` names what it measured (may be empty).
+  void add(double value, double t_s, const std::string& of = {});
 
   double percentile(double p) const;  // of the samples; 0 when there are none
   double worst() const { return percentile(1.0); }
   bool within_limit() const;
+
+  std::size_t worst_index_ = 0;  // of samples; kept by add()
 };
 
 struct PoseReport {

@@ -23,15 +23,22 @@ int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& e
   options.fps = o.fps;
   options.from_s = stage.start_s();
   options.to_s = std::min(stage.end_s(), stage.start_s() + 12.0);
-  if (!o.seconds.empty()) {
+  if (o.seconds == "all") {
+    options.to_s = stage.end_s();
+  } else if (!o.seconds.empty()) {
     double from = 0.0;
     double to = 0.0;
     char extra = 0;
     if (std::sscanf(o.seconds.c_str(), "%lf:%lf%c", &from, &to, &extra) != 2 || !(to > from)) {
-      return fail("--seconds \"" + o.seconds + "\": expected A:B with A < B");
+      return fail("--seconds \"" + o.seconds + "\": expected A:B with A < B, or all");
     }
     options.from_s = from;
-    options.to_s = to;
+    // Past the music's end nothing moves: the range stops there.
+    options.to_s = std::min(to, stage.end_s());
+    if (!(options.to_s > options.from_s)) {
+      return fail("--seconds \"" + o.seconds + "\": the music ends at " +
+                  std::to_string(stage.end_s()) + " s");
+    }
   }
   auto report = performance::check_pose(stage, options);
   if (!report) return fail(Error{scene->source + ": " + report.error().message, report.error().code});
@@ -49,7 +56,8 @@ int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& e
       nlohmann::json j{{"name", m.name},       {"unit", m.unit},
                        {"samples", m.samples.size()}, {"min", m.percentile(0.0)}, {"median", m.percentile(0.5)},
                        {"p95", m.percentile(0.95)},   {"max", m.worst()},
-                       {"within_limit", m.within_limit()}};
+                       {"within_limit", m.within_limit()}, {"worst_at_s", m.worst_at_s}};
+      if (!m.worst_of.empty()) j["worst_of"] = m.worst_of;
       if (m.limit >= 0.0) {
         j["limit"] = {{"value", m.limit}, {"of", m.by_p95 ? "p95" : m.two_sided ? "abs" : "max"}};
       }
@@ -73,7 +81,7 @@ void register_check_pose_command(Commands& commands) {
       "keys, hands to the instruments, hands inside heads, piano keys left half down");
   command.option("SCENE", options->scene, "scene file").required();
   command.option("--seconds", options->seconds,
-                 "A:B, seconds of the music (default: the first 12 s shown)");
+                 "A:B, seconds of the music, or all (default: the first 12 s shown)");
   command.option("--fps", options->fps, "frames per second sampled (default 30)");
   command.option("--assets", options->assets, "folder of the generated .glb assets");
   command.flag("--json", options->json, "print JSON instead of text");

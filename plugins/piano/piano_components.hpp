@@ -69,10 +69,20 @@ struct PianoRig {
   std::array<int, 2> rig_hands{-1, -1};  // right, left
   std::array<int, 128> key_nodes{};      // piano node per MIDI key, -1 = none
   std::array<double, 128> key_dip_rad{};
+  // How far behind the key node's origin (the visible key's back edge) its lever turns: the
+  // balance rail, hidden under the fallboard (m, along the key's -Z).
+  std::array<float, 128> key_pivot_behind_m{};
   glm::mat4 keyboard_to_world{1.0f};  // the piano's `keyboard` node (metres, glTF axes)
   // Bones of each hand model, [finger 0..4][segment 0..2]; -1 = missing.
   std::array<std::array<std::array<int, 3>, 5>, 2> finger_bones{};
   std::array<int, 2> hand_root{-1, -1};
+  // Each hand model's fingertip nodes ([side][finger]; -1 = missing), and each key's top at rest
+  // in the keyboard frame: height and its back edge's depth into the keys (mm).
+  std::array<std::array<int, 5>, 2> finger_tips{};
+  std::array<double, 128> key_top_z_mm{};
+  std::array<double, 128> key_back_y_mm{};
+  std::array<double, 128> key_centre_x_mm{};  // across the keys, keyboard frame
+  glm::mat4 world_to_keyboard{1.0f};
   std::vector<glm::mat4> scratch_world;  // reused every frame by the pose system
   std::vector<glm::mat4> scratch_target_world;
 };

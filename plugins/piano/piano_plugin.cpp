@@ -47,19 +47,19 @@ void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const Pia
   }
 }
 
-// How far key node `node` turns at the bed: the key action's dip at the key's front over the
-// model key's length from its pivot to its front (its mesh's extent toward the player, to 0.1 mm).
+// How far key node `node` turns at the bed, about the key action's balance rail: the lever's
+// dip at its front over its length from the rail.
 double key_dip_rad(const model::ModelAsset& piano, int node, const key_action::KeyLever& lever) {
-  const int mesh = piano.nodes[static_cast<std::size_t>(node)].mesh;
-  if (mesh < 0) return 0.0;
-  float front_m = 0.0f;
-  for (const model::Primitive& primitive : piano.meshes[static_cast<std::size_t>(mesh)].primitives) {
-    for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
-      front_m = std::max(front_m, piano.vertices[primitive.first_vertex + v].position.z);
-    }
-  }
-  const double length_mm = std::round(static_cast<double>(front_m) * 10000.0) / 10.0;
-  return length_mm > 0.0 ? std::atan(lever.front_dip_mm / length_mm) : 0.0;
+  if (piano.nodes[static_cast<std::size_t>(node)].mesh < 0) return 0.0;
+  return lever.bed_angle_rad();
+}
+
+// The rail behind the visible key's back edge (the key node's origin, `-translation.z` into the
+// keys in the keyboard frame), in metres; 0 when the model's key reaches past it.
+float key_pivot_behind_m(const model::ModelAsset& piano, int node, const key_action::KeyLever& lever) {
+  const double back_y_mm =
+      -1000.0 * static_cast<double>(piano.nodes[static_cast<std::size_t>(node)].rest.translation.z);
+  return static_cast<float>(std::max(0.0, lever.pivot_y_mm - back_y_mm) / 1000.0);
 }
 
 Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
@@ -76,12 +76,19 @@ Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
     if (node < 0) continue;
     const bool black = keyboard.contains(key) && keyboard.is_black(key);
     rig.key_dip_rad[static_cast<std::size_t>(key)] = key_dip_rad(piano, node, action.lever(black));
+    rig.key_pivot_behind_m[static_cast<std::size_t>(key)] =
+        key_pivot_behind_m(piano, node, action.lever(black));
+    const glm::vec3& rest = piano.nodes[static_cast<std::size_t>(node)].rest.translation;
+    rig.key_top_z_mm[static_cast<std::size_t>(key)] = 1000.0 * static_cast<double>(rest.y);
+    rig.key_back_y_mm[static_cast<std::size_t>(key)] = -1000.0 * static_cast<double>(rest.z);
+    rig.key_centre_x_mm[static_cast<std::size_t>(key)] = 1000.0 * static_cast<double>(rest.x);
   }
   {
     std::vector<glm::mat4> world(piano.nodes.size());
     model::compute_world_matrices(piano, builder.placed(rig.piano).pose, glm::mat4(1.0f), world);
     const int keyboard_node = piano.find_node("keyboard");
     if (keyboard_node >= 0) rig.keyboard_to_world = world[static_cast<std::size_t>(keyboard_node)];
+    rig.world_to_keyboard = glm::inverse(rig.keyboard_to_world);
   }
   const char* finger_names[5] = {"thumb", "index", "middle", "ring", "little"};
   for (int side = 0; side < 2; ++side) {
@@ -98,6 +105,8 @@ Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
     const model::ModelAsset& hand = builder.model(*hand_model);
     rig.hand_root[static_cast<std::size_t>(side)] = hand.roots.empty() ? -1 : hand.roots[0];
     for (int f = 0; f < 5; ++f) {
+      rig.finger_tips[static_cast<std::size_t>(side)][static_cast<std::size_t>(f)] =
+          hand.find_node(std::string(finger_names[f]) + "_tip" + (side == 0 ? "_r" : "_l"));
       for (int s = 0; s < 3; ++s) {
         rig.finger_bones[static_cast<std::size_t>(side)][static_cast<std::size_t>(f)]
                         [static_cast<std::size_t>(s)] = hand.find_node(

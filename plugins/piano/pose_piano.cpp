@@ -1,5 +1,7 @@
 #include <tutti/piano/pose_piano.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -48,10 +50,81 @@ void pose_pianist_body(PlacedModel& body, PianoRig& rig, const std::array<glm::v
                            body.root, body.pose, world);
 }
 
+// The key's top surface height (keyboard frame, mm) at depth y_mm, the key turned `angle` about
+// its rail.
+double key_surface_z_mm(const PianoRig& rig, int key, double angle, double y_mm) {
+  const auto k = static_cast<std::size_t>(key);
+  const double rail_y = rig.key_back_y_mm[k] + 1000.0 * static_cast<double>(rig.key_pivot_behind_m[k]);
+  return rig.key_top_z_mm[k] - (rail_y - y_mm) * std::tan(angle);
+}
+
+constexpr double kMostSpreadCorrectionRad = 0.1;
+
+void seat_pads_on_keys(ecs::World& world, PianoRig& rig, int side, PlacedModel& hand_model,
+                       const std::array<double, 128>& key_down) {
+  const model::ModelAsset& asset = *hand_model.asset;
+  std::vector<glm::mat4>& hand_world = rig.scratch_world;
+  const float mirror = side == 0 ? 1.0f : -1.0f;
+  for (std::size_t f = 0; f < 5; ++f) {
+    const auto* finger =
+        world.try_get<components::Finger>(rig.fingers[static_cast<std::size_t>(side)][f]);
+    const auto& bones = rig.finger_bones[static_cast<std::size_t>(side)][f];
+    const int tip = rig.finger_tips[static_cast<std::size_t>(side)][f];
+    if (finger == nullptr || finger->key < 0 || finger->key > 127 || finger->press_depth <= 0.0 ||
+        bones[0] < 0 || bones[2] < 0 || tip < 0) {
+      continue;
+    }
+    const auto key = static_cast<std::size_t>(finger->key);
+    if (rig.key_nodes[key] < 0) continue;
+    const double angle = key_down[key] * rig.key_dip_rad[key];
+    const auto radius = static_cast<double>(stage::kFingertipPadRadiusM[f]) * 1000.0;
+    double stroke_correction = 0.0;
+    double spread_correction = 0.0;
+    for (int round = 0; round < 4; ++round) {
+      hand_world.resize(asset.nodes.size());
+      model::compute_world_matrices(asset, hand_model.pose, hand_model.root, hand_world);
+      const auto in_keyboard = [&](int node) {
+        return glm::vec3(rig.world_to_keyboard * hand_world[static_cast<std::size_t>(node)][3]);
+      };
+      // glTF keyboard frame (m): x, y up, -z into the keys.
+      const glm::vec3 tip_at = in_keyboard(tip);
+      const glm::vec3 last_joint = in_keyboard(bones[2]);
+      const glm::vec3 root = in_keyboard(bones[0]);
+      const glm::vec3 along = glm::normalize(tip_at - last_joint);
+      const glm::vec3 centre = tip_at - static_cast<float>(radius / 1000.0) * along;
+      const double pad_y_mm = -1000.0 * static_cast<double>(centre.z);
+      const double pad_z_mm = 1000.0 * static_cast<double>(centre.y) - radius;
+      const double height_error_mm = pad_z_mm - key_surface_z_mm(rig, finger->key, angle, pad_y_mm);
+      // Across the keys: the pad's centre on the key's centre line (the thumb's tilted joint
+      // and a held key the hand has moved away from both carry it sideways).
+      const double side_error_mm = 1000.0 * static_cast<double>(centre.x) - rig.key_centre_x_mm[key];
+      if (std::abs(height_error_mm) < 0.05 && std::abs(side_error_mm) < 0.2) break;
+      // The pad turns about the stroke joint on an arm as long as its horizontal distance, and
+      // sideways about the vertical through that joint on the same arm.
+      const double arm_mm = 1000.0 * static_cast<double>(glm::length(glm::vec2(
+                                          centre.x - root.x, centre.z - root.z)));
+      if (arm_mm < 10.0) break;
+      stroke_correction += height_error_mm / arm_mm;
+      // A larger spread carries the right hand's pads toward +x, the left's toward -x. Only a
+      // few millimetres: a key further away is the plan's to reach (the hand's place, the
+      // finger's range), not a finger's to twist toward.
+      spread_correction = std::clamp(
+          spread_correction - static_cast<double>(mirror) * side_error_mm / arm_mm,
+          -kMostSpreadCorrectionRad, kMostSpreadCorrectionRad);
+      const double stroke = (f == 0 ? finger->abduction_rad : finger->mcp_flexion_rad) + stroke_correction;
+      hand_model.pose.local[static_cast<std::size_t>(bones[0])].rotation =
+          glm::angleAxis(-mirror * static_cast<float>(finger->spread_rad + spread_correction),
+                         glm::vec3(0, 1, 0)) *
+          glm::angleAxis(static_cast<float>(stroke), glm::vec3(-1, 0, 0));
+    }
+  }
+}
+
 void pose_pianist(ecs::World& world, PianoRig& rig) {
   auto* piano = world.try_get<PlacedModel>(rig.piano);
   if (piano == nullptr) return;
   std::array<glm::vec3, 2> wrists{};
+  std::array<double, 128> key_down{};
   stage::reset_pose(*piano->asset, piano->pose);
   for (int side = 0; side < 2; ++side) {
     const auto* hand = world.try_get<components::Hand>(rig.hands[static_cast<std::size_t>(side)]);
@@ -92,15 +165,32 @@ void pose_pianist(ecs::World& world, PianoRig& rig) {
         hand_model->pose.local[static_cast<std::size_t>(bones[s])].rotation = rotation;
       }
       if (finger->key >= 0 && finger->key < 128) {
-        const int node = rig.key_nodes[static_cast<std::size_t>(finger->key)];
-        if (node >= 0) {
-          stage::turn(piano->pose, node,
-                      static_cast<float>(finger->press_depth *
-                                         rig.key_dip_rad[static_cast<std::size_t>(finger->key)]),
-                      {1, 0, 0});
-        }
+        double& down = key_down[static_cast<std::size_t>(finger->key)];
+        down = std::max(down, finger->press_depth);
       }
     }
+  }
+  // The planned chain is a planar model of the finger; the hand model's joints are not quite it
+  // (the thumb turns about a tilted axis). Where a finger touches its key, its stroke joint is
+  // corrected on the posed model until the pad's lowest point lies on the key's top there.
+  for (int side = 0; side < 2; ++side) {
+    auto* hand_model = rig.hand_models[static_cast<std::size_t>(side)].is_null()
+                           ? &rig.hand_targets[static_cast<std::size_t>(side)]
+                           : world.try_get<PlacedModel>(rig.hand_models[static_cast<std::size_t>(side)]);
+    if (hand_model == nullptr || hand_model->asset == nullptr) continue;
+    seat_pads_on_keys(world, rig, side, *hand_model, key_down);
+  }
+  // A key two fingers hold (one handing it to the other, or both hands) goes down once: as far
+  // as the deeper of them holds it.
+  for (std::size_t key = 0; key < key_down.size(); ++key) {
+    const int node = rig.key_nodes[key];
+    if (node < 0 || key_down[key] <= 0.0) continue;
+    const auto angle = static_cast<float>(key_down[key] * rig.key_dip_rad[key]);
+    stage::turn(piano->pose, node, angle, {1, 0, 0});
+    // About the rail behind the visible key: the rail point (0, 0, -d) stays where it is, so the
+    // key's back edge goes down with its front.
+    const float d = rig.key_pivot_behind_m[key];
+    if (d > 0.0f) stage::move(piano->pose, node, {0.0f, -d * std::sin(angle), d * (std::cos(angle) - 1.0f)});
   }
 
   // A user's hand models: placed where tutti's play; the body's arms reach their wrists.

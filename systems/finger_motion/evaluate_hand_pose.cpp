@@ -120,7 +120,9 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
         z = blend(z, next->bottom_z_mm, w * w);
         touching = next;
         depth = std::clamp((top - z) * next->inv_travel_per_mm, 0.0, 1.0);
-      } else if (touching != nullptr) {
+      } else if (touching != nullptr && t_s < touching->release_end_s) {
+        // Still letting the last key up. Once that is over the finger has left it: shaping for
+        // a white key after a black one lowers the finger below the black key's top, beside it.
         depth = std::clamp((key_top(keys, touching->black) - z) * touching->inv_travel_per_mm, 0.0,
                            1.0);
       }
@@ -145,11 +147,12 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   }
   out.press_depth = depth;
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
+  const double hand_in = evaluate_reach_in(hand.reach_in, t_s);
   out.tip_x_mm = x;
-  out.tip_y_mm = g.root_y_mm + stroke.reach_y_mm;
+  out.tip_y_mm = g.root_y_mm + hand_in + stroke.reach_y_mm;
   out.tip_z_mm = z + g.pad_drop_mm;
   out.contact_y_mm = g.pad_drop_mm > 0.0
-                         ? g.root_y_mm + solve_stroke(shape, g.root_z_mm - z).reach_y_mm
+                         ? g.root_y_mm + hand_in + solve_stroke(shape, g.root_z_mm - z).reach_y_mm
                          : out.tip_y_mm;
   out.contact_z_mm = z;
 }
@@ -159,7 +162,7 @@ void evaluate_hand_pose(const FingerMotionPlan& plan, const motion::HandPath& pa
   const motion::HandState state = motion::evaluate(path, t_s);
   out.x_mm = state.x_mm;
   out.v_x_mm_per_s = state.v_mm_per_s;
-  out.y_mm = plan.geometry[2].root_y_mm;
+  out.y_mm = plan.geometry[2].root_y_mm + evaluate_reach_in(plan.hand(side).reach_in, t_s);
   out.z_mm = plan.geometry[2].root_z_mm;
   for (int finger = 1; finger <= 5; ++finger) {
     evaluate_finger_pose(plan, side, finger, state.x_mm, t_s,

@@ -1,5 +1,7 @@
 #include <tutti/finger_motion/finger_motion_params.hpp>
 
+#include <utility>
+
 #include <nlohmann/json.hpp>
 
 #include <tutti/piano_model/json_document.hpp>
@@ -27,7 +29,9 @@ Status read_keys(const JsonReader& reader, const nlohmann::json& document, KeyHe
   if (!document.contains("keys")) return reader.error(path, "missing");
   const nlohmann::json& object = document.at("keys");
   if (auto ok = reader.check_keys(object, path,
-                                  {"white_top_z_mm", "black_top_z_mm", "dip_mm", "hover_lift_mm"});
+                                  {"white_top_z_mm", "black_top_z_mm", "dip_mm", "hover_lift_mm",
+                                   "black_front_y_mm", "black_press_in_mm", "white_press_in_mm",
+                                   "pivot_y_mm"});
       !ok) {
     return ok;
   }
@@ -40,6 +44,17 @@ Status read_keys(const JsonReader& reader, const nlohmann::json& document, KeyHe
   keys.white_top_z_mm = *white;
   keys.black_top_z_mm = *black;
   if (auto ok = read_positive(reader, object, path, "dip_mm", keys.dip_mm); !ok) return ok;
+  // Optional (older files have none): where the black keys begin and where on them a finger lands.
+  for (const auto& [key, out] : {std::pair{"black_front_y_mm", &keys.black_front_y_mm},
+                                 std::pair{"black_press_in_mm", &keys.black_press_in_mm},
+                                 std::pair{"white_press_in_mm", &keys.white_press_in_mm},
+                                 std::pair{"pivot_y_mm", &keys.pivot_y_mm}}) {
+    if (!object.contains(key)) continue;
+    if (auto ok = read_positive(reader, object, path, key, *out, true); !ok) return ok;
+  }
+  if (keys.pivot_y_mm != 0.0 && !(keys.pivot_y_mm > keys.black_front_y_mm + keys.black_press_in_mm)) {
+    return reader.error(path + "/pivot_y_mm", "must lie behind where black keys are pressed");
+  }
   return read_positive(reader, object, path, "hover_lift_mm", keys.hover_lift_mm, true);
 }
 
@@ -49,7 +64,8 @@ Status read_timing(const JsonReader& reader, const nlohmann::json& document, Str
   const nlohmann::json& object = document.at("timing");
   if (auto ok = reader.check_keys(object, path,
                                   {"press_lead_s", "move_min_s", "move_max_s", "move_s_per_mm",
-                                   "shape_s", "release_s", "relax_time_constant_s"});
+                                   "shape_s", "release_s", "relax_time_constant_s", "reach_in_s",
+                                   "reach_in_bridge_s"});
       !ok) {
     return ok;
   }
@@ -65,6 +81,20 @@ Status read_timing(const JsonReader& reader, const nlohmann::json& document, Str
                 {"release_s", &t.release_s, false},
                 {"relax_time_constant_s", &t.relax_time_constant_s, false}};
   for (const auto& field : fields) {
+    if (auto ok = read_positive(reader, object, path, field.key, *field.out, field.allow_zero);
+        !ok) {
+      return ok;
+    }
+  }
+  // Optional (older files have none).
+  const struct {
+    const char* key;
+    double* out;
+    bool allow_zero;
+  } optional_fields[] = {{"reach_in_s", &t.reach_in_s, false},
+                         {"reach_in_bridge_s", &t.reach_in_bridge_s, true}};
+  for (const auto& field : optional_fields) {
+    if (!object.contains(field.key)) continue;
     if (auto ok = read_positive(reader, object, path, field.key, *field.out, field.allow_zero);
         !ok) {
       return ok;

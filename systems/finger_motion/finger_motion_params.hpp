@@ -37,6 +37,13 @@ struct KeyHeights {
   double black_top_z_mm = 12.5;  // top of a black key at rest (> white)
   double dip_mm = 10.0;          // key travel to the key bottom (> 0)
   double hover_lift_mm = 8.0;    // fingertip height above a key top when not pressing (>= 0)
+  double black_front_y_mm = 55.0;  // the black keys' front edge, behind the white keys' front
+  double black_press_in_mm = 12.0;  // a finger's pad lands this far behind that edge (>= 0)
+  double white_press_in_mm = 12.0;  // and this far behind a white key's front edge (>= 0)
+  // The keys are levers on the balance rail this far in (0: none modelled, every key travels
+  // dip_mm wherever it is pressed); a key pressed at y travels dip_mm x (pivot - y) / (pivot -
+  // its front), its front being 0 for a white key and black_front_y_mm for a black one.
+  double pivot_y_mm = 0.0;
 };
 
 struct StrokeTiming {
@@ -47,6 +54,10 @@ struct StrokeTiming {
   double shape_s = 0.08;               // joints 2-3 reshape over this long before the stroke (> 0)
   double release_s = 0.05;             // key rise after the offset (> 0)
   double relax_time_constant_s = 0.2;  // exponential relax toward neutral after a release (> 0)
+  // The hand's move in toward the fallboard for black keys (hand_reach_in.hpp): its longest ease
+  // (> 0), and the dip between two needs it bridges instead of going out and back (>= 0).
+  double reach_in_s = 0.15;
+  double reach_in_bridge_s = 0.4;
 };
 
 struct FingerMotionParams {

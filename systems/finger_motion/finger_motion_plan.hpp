@@ -12,6 +12,7 @@
 #include <tutti/components/hand_side.hpp>
 #include <tutti/finger_motion/finger_chain.hpp>
 #include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/finger_motion/hand_reach_in.hpp>
 
 namespace tutti::finger_motion {
 
@@ -61,11 +62,14 @@ struct HandFingerPlan {
   // onsets_s[f][j] == fingers[f][j].onset_s: the contiguous copy evaluate binary-searches (8
   // bytes per probe instead of a whole KeyContact; the onsets of a long piece stay in cache).
   std::array<std::vector<double>, 5> onsets_s{};
+  // How far in toward the fallboard the hand sits beyond its rest line over time (mm), so the
+  // short fingers reach the black keys they strike.
+  HandReachIn reach_in;
 };
 
 struct FingerMotionPlan {
-  HandFingerPlan right{components::HandSide::right, {}, {}, {}};
-  HandFingerPlan left{components::HandSide::left, {}, {}, {}};
+  HandFingerPlan right{components::HandSide::right, {}, {}, {}, {}};
+  HandFingerPlan left{components::HandSide::left, {}, {}, {}, {}};
   std::array<FingerGeometry, 5> geometry{};  // scaled to the hand preset
   // Chain shapes for the three bends a held or resting finger has, so evaluate rarely needs trig.
   std::array<ChainShape, 5> neutral_shape{};

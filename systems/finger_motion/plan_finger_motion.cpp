@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace tutti::finger_motion {
 namespace {
@@ -27,11 +29,36 @@ void precompute_for_evaluate(KeyContact& c, const StrokeTiming& timing) {
   c.release_decay_scale = std::exp((c.release_end_s - c.offset_s) / timing.relax_time_constant_s);
 }
 
+// How far past the ends of its range (piano::FingerRange) a finger still holds a key as the hand
+// moves on: the spread and the flattened chain reach about half a white key further.
+constexpr double kHoldBeyondRangeMm = 12.0;
+constexpr double kDepartureStepS = 0.005;
+
+// The first time in [onset, offset] at which the hand has moved so far that the key at key_x
+// lies outside the finger's reach: there the finger lets the key go (a pianist leaving a held
+// note for the next position, the pedal or nothing holding it), else `offset_s`.
+double hand_departure_s(const KeyContact& c, const piano::FingerRange& range,
+                        const motion::HandPath& path) {
+  if (path.empty()) return c.offset_s;
+  // A key the hand already struck from outside the range (a stretch the path allowed) is let
+  // go only when the hand takes it further out still.
+  const double at_onset = c.x_mm - motion::evaluate(path, c.onset_s).x_mm;
+  const double lo = std::min(range.lo_mm, at_onset) - kHoldBeyondRangeMm;
+  const double hi = std::max(range.hi_mm, at_onset) + kHoldBeyondRangeMm;
+  for (double t = c.onset_s + kDepartureStepS; t < c.offset_s; t += kDepartureStepS) {
+    const double offset = c.x_mm - motion::evaluate(path, t).x_mm;
+    if (offset < lo || offset > hi) {
+      return t - kDepartureStepS;
+    }
+  }
+  return c.offset_s;
+}
+
 // Sorts, merges same-onset contacts, trims offsets and fills the timing fields.
 // `preset_strokes`: each contact's stroke_start_s is already the one wanted (a NoteStroke's).
 void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
-                       const motion::HandPath& path, const StrokeTiming& timing,
-                       bool preset_strokes) {
+                       const piano::FingerRange& range, const motion::HandPath& path,
+                       const StrokeTiming& timing, bool preset_strokes) {
   std::sort(contacts.begin(), contacts.end(), [](const KeyContact& a, const KeyContact& b) {
     return a.onset_s != b.onset_s ? a.onset_s < b.onset_s : a.key < b.key;
   });
@@ -54,6 +81,8 @@ void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
       prev.offset_s = std::min(prev.offset_s, c.stroke_start_s);
     }
   }
+  // A key is held only while the hand keeps it in the finger's reach.
+  for (KeyContact& c : merged) c.offset_s = std::max(c.onset_s, hand_departure_s(c, range, path));
   // Pass 2: moves, shaping, releases.
   for (std::size_t j = 0; j < merged.size(); ++j) {
     KeyContact& c = merged[j];
@@ -85,6 +114,67 @@ void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
     precompute_for_evaluate(c, timing);
   }
   contacts = std::move(merged);
+}
+
+// Where a contact's pad lands (y, into the keys) with the hand at its rest line.
+double lands_y_mm(const FingerMotionPlan& plan, std::size_t f, const KeyContact& c) {
+  const FingerGeometry& g = plan.geometry[f];
+  const ChainShape& shape = c.black ? plan.black_shape[f] : plan.white_shape[f];
+  // The pad lies under the tip (the thumb's, pad_drop_mm under it): where the tip is.
+  return g.root_y_mm + solve_stroke(shape, g.root_z_mm - (c.bottom_z_mm + g.pad_drop_mm)).reach_y_mm;
+}
+
+// Each contact needs the hand in far enough that the finger's pad, bent for its key and at the
+// key bottom, lands on the key: press_in behind its front edge (a black key's begins
+// black_front_y_mm in).
+HandReachIn plan_hand_reach_in(const HandFingerPlan& side, const FingerMotionPlan& plan) {
+  std::vector<ReachInNeed> needs;
+  const KeyHeights& keys = plan.keys;
+  for (std::size_t f = 0; f < 5; ++f) {
+    for (const KeyContact& c : side.fingers[f]) {
+      const double target_y =
+          c.black ? keys.black_front_y_mm + keys.black_press_in_mm : keys.white_press_in_mm;
+      needs.push_back({c.shape_start_s, c.release_end_s, target_y - lands_y_mm(plan, f, c)});
+    }
+  }
+  return plan_reach_in(std::move(needs), plan.timing.reach_in_s, plan.timing.reach_in_bridge_s);
+}
+
+// The key bed under each contact where its pad meets the key, the hand moved in: a lever's key
+// travels less nearer its pivot. The drop and the reach depend on each other; a few rounds
+// settle it (as key_action's contact geometry does). A contact's planned travel is the travel at
+// the key's front edge, or with `strokes_travel_at_rest` (NoteStroke's, from key_action) the
+// travel where the pad lands with the hand at its rest line.
+void settle_key_beds(HandFingerPlan& side, const FingerMotionPlan& plan,
+                     bool strokes_travel_at_rest) {
+  const KeyHeights& keys = plan.keys;
+  if (keys.pivot_y_mm <= 0.0) return;
+  for (std::size_t f = 0; f < 5; ++f) {
+    const FingerGeometry& g = plan.geometry[f];
+    for (KeyContact& c : side.fingers[f]) {
+      const double top = c.black ? keys.black_top_z_mm : keys.white_top_z_mm;
+      const double front = c.black ? keys.black_front_y_mm : 0.0;
+      const double planned = top - c.bottom_z_mm;
+      const double planned_at =
+          strokes_travel_at_rest ? std::clamp(lands_y_mm(plan, f, c), front, keys.pivot_y_mm - 1.0)
+                                 : front;
+      const double travel_at_front = planned * (keys.pivot_y_mm - front) / (keys.pivot_y_mm - planned_at);
+      const double hand_in = evaluate_reach_in(side.reach_in, c.onset_s);
+      // Starting from the planned travel: where the hand is at its rest line that is already
+      // the answer (exactly, not to the last rounding of the rounds below).
+      double travel = planned;
+      for (int round = 0; round < 4; ++round) {
+        const ChainShape& shape = c.black ? plan.black_shape[f] : plan.white_shape[f];
+        const double y = std::clamp(
+            g.root_y_mm + hand_in +
+                solve_stroke(shape, g.root_z_mm - (top - travel + g.pad_drop_mm)).reach_y_mm,
+            front, keys.pivot_y_mm);
+        travel = travel_at_front * (keys.pivot_y_mm - y) / (keys.pivot_y_mm - front);
+      }
+      c.bottom_z_mm = top - travel;
+      c.inv_travel_per_mm = 1.0 / travel;
+    }
+  }
 }
 
 }  // namespace
@@ -162,12 +252,16 @@ Result<FingerMotionPlan> plan_finger_motion(
   }
   for (HandFingerPlan* side : {&plan.right, &plan.left}) {
     const motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
+    const music::Hand hand = side->side == HandSide::left ? music::Hand::left : music::Hand::right;
     for (std::size_t f = 0; f < 5; ++f) {
-      schedule_contacts(side->fingers[f], side->rest_offset_mm[f], path, plan.timing,
+      schedule_contacts(side->fingers[f], side->rest_offset_mm[f],
+                        hand_model.range(hand, static_cast<int>(f) + 1), path, plan.timing,
                         !strokes.empty());
       side->onsets_s[f].reserve(side->fingers[f].size());
       for (const KeyContact& c : side->fingers[f]) side->onsets_s[f].push_back(c.onset_s);
     }
+    side->reach_in = plan_hand_reach_in(*side, plan);
+    settle_key_beds(*side, plan, !strokes.empty());
   }
   return plan;
 }

@@ -81,6 +81,81 @@ void split_automatically(const music::Score& score, std::vector<int> indices,
   }
 }
 
+// A note the other hand can take: no crossing (the left hand's notes around it stay below it,
+// the right hand's above), and the other hand's keys over the note's whole length, with it, stay
+// in one hand's reach and at most five.
+bool other_hand_takes(const music::Score& score, const HandAssignment& out, std::size_t note,
+                      music::Hand other, double reach_mm, const Keyboard& keyboard) {
+  // The other hand needs a moment to arrive: its notes ending just before count too.
+  constexpr double kArriveS = 0.08;
+  const music::Note& n = score.notes[note];
+  auto x_of = [&](int key) {
+    return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
+  };
+  double lo = x_of(n.pitch), hi = lo;
+  int at_onset = 1;
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    const music::Note& o = score.notes[i];
+    if (out.hand[i] != other || o.offset_s <= n.onset_s - kArriveS || o.onset_s >= n.offset_s) {
+      continue;
+    }
+    if (o.pitch == n.pitch) return false;
+    if (other == music::Hand::left ? o.pitch > n.pitch : o.pitch < n.pitch) return false;
+    lo = std::min(lo, x_of(o.pitch));
+    hi = std::max(hi, x_of(o.pitch));
+    if (o.onset_s <= n.onset_s && o.offset_s > n.onset_s) ++at_onset;
+  }
+  return hi - lo <= reach_mm && at_onset <= 5;
+}
+
+// Notes struck together that one hand cannot span (a score's staff gives a right hand D4 and B5
+// at once): the outer notes go to the other hand where it is free to take them, as a pianist
+// reads such a chord. What no hand can take is left to the planner (it reports it).
+void keep_chords_in_reach(const music::Score& score, const FingeringModel& model,
+                          HandAssignment& out) {
+  const Keyboard& keyboard = model.keyboard;
+  auto x_of = [&](int key) {
+    return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
+  };
+  for (const music::Hand side : {music::Hand::right, music::Hand::left}) {
+    const music::Hand other = side == music::Hand::right ? music::Hand::left : music::Hand::right;
+    const double reach_mm = model.hand.range(side, 5).hi_mm - model.hand.range(side, 1).lo_mm;
+    std::vector<int> notes;
+    for (std::size_t i = 0; i < score.notes.size(); ++i) {
+      // A hand the file itself states (PIG) is kept.
+      if (out.hand[i] == side && out.source[i] != HandSource::file) notes.push_back(static_cast<int>(i));
+    }
+    std::stable_sort(notes.begin(), notes.end(), [&](int a, int b) {
+      const auto& x = score.notes[static_cast<std::size_t>(a)];
+      const auto& y = score.notes[static_cast<std::size_t>(b)];
+      return x.onset_ticks != y.onset_ticks ? x.onset_ticks < y.onset_ticks : x.pitch < y.pitch;
+    });
+    for (std::size_t start = 0; start < notes.size();) {
+      std::size_t stop = start;
+      const auto onset = score.notes[static_cast<std::size_t>(notes[start])].onset_ticks;
+      while (stop < notes.size() &&
+             score.notes[static_cast<std::size_t>(notes[stop])].onset_ticks == onset) {
+        ++stop;
+      }
+      // [lo, hi): the chord's notes this hand keeps, low to high.
+      std::size_t lo = start, hi = stop;
+      const auto span = [&] {
+        return x_of(score.notes[static_cast<std::size_t>(notes[hi - 1])].pitch) -
+               x_of(score.notes[static_cast<std::size_t>(notes[lo])].pitch);
+      };
+      while (hi - lo > 1 && (span() > reach_mm || hi - lo > 5)) {
+        // The right hand gives away its lowest note, the left its highest.
+        const auto note = static_cast<std::size_t>(side == music::Hand::right ? notes[lo] : notes[hi - 1]);
+        if (!other_hand_takes(score, out, note, other, reach_mm, keyboard)) break;
+        out.hand[note] = other;
+        out.source[note] = HandSource::reach;
+        side == music::Hand::right ? ++lo : --hi;
+      }
+      start = stop;
+    }
+  }
+}
+
 }  // namespace
 
 HandAssignment assign_hands(const music::Score& score, const FingeringModel& model) {
@@ -110,6 +185,7 @@ HandAssignment assign_hands(const music::Score& score, const FingeringModel& mod
     }
   }
   if (!automatic.empty()) split_automatically(score, std::move(automatic), model, out);
+  keep_chords_in_reach(score, model, out);
   return out;
 }
 

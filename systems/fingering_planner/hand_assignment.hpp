@@ -10,6 +10,9 @@
 //     hand near where it was (a far jump counts as an octave), the right hand from middle C up and
 //     the left hand below it.
 // Percussion parts get Hand::unknown (not planned).
+// Then, but for hands a file states: notes struck together that one hand cannot span (wider than
+// its reach, or more than five) give their outer notes to the other hand where it is free to take
+// them without crossing (HandSource::reach).
 
 #include <vector>
 
@@ -18,7 +21,7 @@
 
 namespace tutti::piano {
 
-enum class HandSource { file, part_name, staff, automatic, none };
+enum class HandSource { file, part_name, staff, automatic, reach, none };
 
 struct HandAssignment {
   std::vector<music::Hand> hand;   // per Score::notes entry

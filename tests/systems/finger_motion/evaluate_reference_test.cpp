@@ -85,7 +85,7 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
         z = blend(z, next->bottom_z_mm, w * w);
         touching = next;
         depth = std::clamp((top - z) / (top - next->bottom_z_mm), 0.0, 1.0);
-      } else if (touching != nullptr) {
+      } else if (touching != nullptr && t < touching->release_end_s) {
         const double top_touching = top_of(touching->black);
         depth = std::clamp((top_touching - z) / (top_touching - touching->bottom_z_mm), 0.0, 1.0);
       }
@@ -110,13 +110,15 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
   out.press_depth = depth;
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
   out.tip_x_mm = x;
-  out.tip_y_mm = g.root_y_mm + reach_y;
+  // The hand in toward the fallboard for black keys a short finger cannot reach otherwise.
+  const double hand_in = evaluate_reach_in(hand.reach_in, t);
+  out.tip_y_mm = g.root_y_mm + hand_in + reach_y;
   out.tip_z_mm = z + g.pad_drop_mm;
   out.contact_z_mm = z;
   out.contact_y_mm = out.tip_y_mm;
   if (g.pad_drop_mm > 0.0) {
     const double contact_drop = std::clamp(g.root_z_mm - z, -reach, reach);
-    out.contact_y_mm = g.root_y_mm + std::sqrt(std::max(reach * reach - contact_drop * contact_drop, 0.0));
+    out.contact_y_mm = g.root_y_mm + hand_in + std::sqrt(std::max(reach * reach - contact_drop * contact_drop, 0.0));
   }
   return out;
 }

@@ -73,6 +73,16 @@ inline TestScore make_score(const std::vector<TestNote>& notes) {
 }
 
 inline FingerMotionPlan plan_notes(const std::vector<TestNote>& notes, double right_x_mm,
+                                   double left_x_mm, const FingerMotionParams& params) {
+  const TestScore s = make_score(notes);
+  const Models& m = models();
+  auto plan = plan_finger_motion(s.score, s.plan, constant_path(right_x_mm),
+                                 constant_path(left_x_mm), m.keyboard, m.hand, params);
+  EXPECT_TRUE(plan.ok()) << (plan.ok() ? "" : plan.error().message);
+  return *plan;
+}
+
+inline FingerMotionPlan plan_notes(const std::vector<TestNote>& notes, double right_x_mm,
                                    double left_x_mm) {
   const TestScore s = make_score(notes);
   const Models& m = models();

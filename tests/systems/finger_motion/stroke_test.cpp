@@ -26,7 +26,12 @@ TEST(KeyStroke, PressDepthReachesOneAtOnsetAndIsHeld) {
   const FingerPose at_onset = pose_at(plan, 3, x, 1.0);
   EXPECT_EQ(at_onset.press_depth, 1.0);
   EXPECT_EQ(at_onset.key, 60);
-  EXPECT_EQ(at_onset.contact_z_mm, m.params.keys.white_top_z_mm - m.params.keys.dip_mm);
+  // On the bed of the key where the pad lands: the lever's travel there, never below the dip
+  // at the front edge.
+  const KeyContact& contact = plan.right.fingers[2].front();
+  EXPECT_EQ(at_onset.contact_z_mm, contact.bottom_z_mm);
+  EXPECT_LT(contact.bottom_z_mm, m.params.keys.white_top_z_mm - 0.5 * m.params.keys.dip_mm);
+  EXPECT_GE(contact.bottom_z_mm, m.params.keys.white_top_z_mm - m.params.keys.dip_mm);
   EXPECT_EQ(pose_at(plan, 3, x, 1.25).press_depth, 1.0);
   EXPECT_EQ(pose_at(plan, 3, x, 1.5).press_depth, 1.0);
   const double mid_release = pose_at(plan, 3, x, 1.5 + 0.2 * m.params.timing.release_s).press_depth;
@@ -35,6 +40,24 @@ TEST(KeyStroke, PressDepthReachesOneAtOnsetAndIsHeld) {
   const FingerPose after = pose_at(plan, 3, x, 1.5 + m.params.timing.release_s + 1e-6);
   EXPECT_EQ(after.press_depth, 0.0);
   EXPECT_EQ(after.key, -1);
+}
+
+// A finger that leaves a black key for a white one lowers toward the white key's hover height,
+// below the black key's top, beside it: the black key stays up once it is let go (the third-party
+// pieces showed keys half down a second after their note).
+TEST(KeyStroke, AFingerLeavingABlackKeyForAWhiteOneLeavesItUp) {
+  const Models& m = test::models();
+  const double x = m.keyboard.x_mm(62);
+  const FingerMotionPlan plan = test::plan_notes({{61, 0.5, 1.0, 3}, {64, 2.0, 2.5, 3}}, x, 0);
+  const KeyContact& black = plan.right.fingers[2].front();
+  ASSERT_TRUE(black.black);
+  const KeyContact& white = plan.right.fingers[2].back();
+  ASSERT_LT(black.release_end_s, white.shape_start_s);
+  for (double t = black.release_end_s; t < white.stroke_start_s; t += 0.005) {
+    const FingerPose pose = pose_at(plan, 3, x, t);
+    EXPECT_EQ(pose.press_depth, 0.0) << "at " << t << " s";
+    EXPECT_EQ(pose.key, -1) << "at " << t << " s";
+  }
 }
 
 TEST(KeyStroke, FingersStrikeWithMcpAndKeepPipDipFixed) {
@@ -91,7 +114,30 @@ TEST(KeyStroke, BlackKeyBendIsChosenBeforeTheStroke) {
   EXPECT_GT(pip, std::min(g.black_bend_rad, g.white_bend_rad) - 0.3);
   const FingerPose at_onset = pose_at(plan, 3, x, 2.0);
   EXPECT_EQ(at_onset.press_depth, 1.0);
-  EXPECT_EQ(at_onset.contact_z_mm, m.params.keys.black_top_z_mm - m.params.keys.dip_mm);
+  EXPECT_EQ(at_onset.contact_z_mm, black.bottom_z_mm);
+  EXPECT_LT(black.bottom_z_mm, m.params.keys.black_top_z_mm - 0.5 * m.params.keys.dip_mm);
+  EXPECT_GE(black.bottom_z_mm, m.params.keys.black_top_z_mm - m.params.keys.dip_mm);
+}
+
+// A key is a lever on its balance rail: the deeper in a pad presses it, the less it travels
+// (dip_mm is the travel at the white front edge, or the black key's front). Without a rail
+// (pivot_y_mm 0) every key travels the whole dip.
+TEST(KeyStroke, KeyTravelShrinksTowardTheBalanceRail) {
+  const Models& m = test::models();
+  ASSERT_GT(m.params.keys.pivot_y_mm, 0.0);
+  const double x = m.keyboard.x_mm(60);
+  const FingerMotionPlan plan = test::plan_notes({{60, 1.0, 1.5, 3}, {60, 2.0, 2.5, 5}}, x, 0);
+  const KeyContact& middle = plan.right.fingers[2].front();
+  const KeyContact& little = plan.right.fingers[4].front();
+  const double top = m.params.keys.white_top_z_mm;
+  // The little finger lands nearer the front than the long middle finger: it travels further.
+  EXPECT_GT(top - little.bottom_z_mm, top - middle.bottom_z_mm);
+  EXPECT_DOUBLE_EQ(middle.inv_travel_per_mm, 1.0 / (top - middle.bottom_z_mm));
+
+  FingerMotionParams no_rail = m.params;
+  no_rail.keys.pivot_y_mm = 0.0;
+  const FingerMotionPlan flat = test::plan_notes({{60, 1.0, 1.5, 3}}, x, 0, no_rail);
+  EXPECT_EQ(flat.right.fingers[2].front().bottom_z_mm, top - m.params.keys.dip_mm);
 }
 
 }  // namespace
