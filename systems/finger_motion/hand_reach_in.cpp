@@ -85,47 +85,40 @@ HandReachIn plan_reach_in(std::vector<ReachInNeed> needs, double ramp_s, double 
   std::vector<Step> steps = envelope(needs);
   bridge_dips(steps, bridge_s);
   HandReachIn path;
-  path.times_s.reserve(steps.size());
-  path.values_mm.reserve(steps.size());
-  path.ramp_s.reserve(steps.size());
+  path.ramp_s = ramp_s;
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    const double before = i == 0 ? 0.0 : steps[i - 1].value_mm;
-    const bool rises = steps[i].value_mm > before;
-    // A rise eases during the step before it, a fall during the step after: half of it at most,
-    // so two eases never overlap.
-    double room = ramp_s;
-    if (rises && i > 0) room = std::min(room, 0.5 * (steps[i].t_s - steps[i - 1].t_s));
-    if (!rises && i + 1 < steps.size()) room = std::min(room, 0.5 * (steps[i + 1].t_s - steps[i].t_s));
-    path.times_s.push_back(steps[i].t_s);
+    if (!(steps[i].value_mm > 0.0)) continue;
+    // The envelope always comes back to 0 (every need ends), so a step > 0 has a next.
+    const double end = i + 1 < steps.size() ? steps[i + 1].t_s : steps[i].t_s;
+    path.starts_s.push_back(steps[i].t_s);
+    path.ends_s.push_back(end);
     path.values_mm.push_back(steps[i].value_mm);
-    path.ramp_s.push_back(room);
   }
   return path;
 }
 
 double evaluate_reach_in(const HandReachIn& path, double t_s) noexcept {
-  const std::vector<double>& times = path.times_s;
-  if (times.empty()) return 0.0;
-  // The last boundary at or before t (-1: before the first).
-  const auto next = static_cast<std::size_t>(
-      std::upper_bound(times.begin(), times.end(), t_s) - times.begin());
-  const auto value = [&](std::size_t after) { return path.values_mm[after]; };
-  const double here = next == 0 ? 0.0 : value(next - 1);
-  if (next > 0) {
-    const std::size_t k = next - 1;
-    const double before = k == 0 ? 0.0 : value(k - 1);
-    if (here < before && t_s < times[k] + path.ramp_s[k]) {  // falling after boundary k
-      return blend(before, here, min_jerk((t_s - times[k]) / path.ramp_s[k]));
+  const double ramp = path.ramp_s;
+  // Plateaus beginning after t + ramp cannot reach t yet; going back from there, the first
+  // ending before t - ramp and all earlier ones have eased out (they are in time order).
+  auto index = static_cast<std::size_t>(
+      std::upper_bound(path.starts_s.begin(), path.starts_s.end(), t_s + ramp) -
+      path.starts_s.begin());
+  double in = 0.0;
+  while (index > 0) {
+    --index;
+    const double start = path.starts_s[index];
+    const double end = path.ends_s[index];
+    if (end < t_s - ramp) break;
+    double weight = 1.0;
+    if (t_s < start) {
+      weight = min_jerk((t_s - (start - ramp)) / ramp);
+    } else if (t_s > end) {
+      weight = 1.0 - min_jerk((t_s - end) / ramp);
     }
+    in = std::max(in, weight * path.values_mm[index]);
   }
-  if (next < times.size()) {
-    const double after = value(next);
-    const double start = times[next] - path.ramp_s[next];
-    if (after > here && t_s > start) {  // rising before boundary next
-      return blend(here, after, min_jerk((t_s - start) / path.ramp_s[next]));
-    }
-  }
-  return here;
+  return in;
 }
 
 }  // namespace tutti::finger_motion

@@ -5,9 +5,12 @@
 // hand in while such a key is struck and held, and back out when it is let go; this is that move.
 //
 // Planned offline from spans of need (one per key contact: how far in the hand must be while the
-// contact lasts); evaluated allocation-free in O(log n). The path is the upper envelope of the
-// needs, each change eased by a minimum-jerk ramp that rises before the span that needs more and
-// falls after the span that needed it: the hand is always at least as far in as a held key needs.
+// contact lasts). The needs' upper envelope is cut into plateaus (a short dip between two is
+// bridged at the lower of them); the path is the highest of the plateaus, each eased in by a
+// minimum-jerk ramp that ends where the plateau begins and out by one that starts where it ends.
+// So the hand is always at least as far in as a held key needs, never further than the deepest
+// need, and never faster than one ramp moves it, however close the needs' edges lie. Evaluated
+// allocation-free in O(log n) plus the few plateaus within a ramp of t.
 
 #include <vector>
 
@@ -20,12 +23,11 @@ struct ReachInNeed {
 };
 
 struct HandReachIn {
-  // Step boundaries, strictly increasing; after boundary i the envelope is values_mm[i] (before
-  // the first it is 0). ramp_s[i] is the ease at boundary i: before it when the value rises,
-  // after it when it falls, never more than half of either neighbouring step.
-  std::vector<double> times_s;
+  // Plateaus, disjoint and in time order: [starts_s[i], ends_s[i]] at values_mm[i] (> 0).
+  std::vector<double> starts_s;
+  std::vector<double> ends_s;
   std::vector<double> values_mm;
-  std::vector<double> ramp_s;
+  double ramp_s = 0.15;  // every ease, in and out
 };
 
 // `ramp_s` (> 0): the longest ease. A dip shorter than `bridge_s` between two needs is bridged

@@ -1,0 +1,122 @@
+// Which hand plays each note: a chord the score gives one hand but no hand can span goes, in
+// part, to the other hand when it is free (Scarlatti's K. 27 writes D4 and B5 together on the
+// right-hand staff); when the other hand is busy, or the file states the hands, nothing moves.
+#include <gtest/gtest.h>
+
+#include <tutti/fingering_planner/hand_assignment.hpp>
+#include <tutti/fingering_planner/plan_score.hpp>
+#include <tutti/music/load_score.hpp>
+#include "planner_test_util.hpp"
+#include "testdata.hpp"
+
+namespace tutti::piano {
+namespace {
+
+using music::Hand;
+
+// A two-staff piano part: staff 1 the right hand, staff 2 the left.
+struct PianoScore {
+  music::Score score;
+  PianoScore() {
+    music::Part part;
+    part.staves = 2;
+    score.parts.push_back(part);
+  }
+  void add(int pitch, std::int64_t tick, std::int64_t length, int staff) {
+    music::Note n;
+    n.pitch = pitch;
+    n.onset_ticks = tick;
+    n.offset_ticks = tick + length;
+    n.staff = staff;
+    score.notes.push_back(n);
+  }
+  Hand hand_of(const HandAssignment& a, int pitch, std::int64_t tick) const {
+    for (std::size_t i = 0; i < score.notes.size(); ++i) {
+      if (score.notes[i].pitch == pitch && score.notes[i].onset_ticks == tick) return a.hand[i];
+    }
+    return Hand::unknown;
+  }
+};
+
+TEST(HandAssignment, AChordOneHandCannotSpanGivesItsLowNoteToTheFreeLeftHand) {
+  PianoScore s;
+  s.add(62, 0, 480, 1);  // D4 and B5 together on the right-hand staff: an octave and a sixth
+  s.add(83, 0, 240, 1);
+  s.add(76, 240, 240, 1);
+  s.add(43, 960, 480, 2);  // the left hand plays only later
+  music::finalize_score(s.score);
+  const HandAssignment a = assign_hands(s.score, test::model("default"));
+  EXPECT_EQ(s.hand_of(a, 62, 0), Hand::left);
+  EXPECT_EQ(s.hand_of(a, 83, 0), Hand::right);
+  EXPECT_EQ(s.hand_of(a, 76, 240), Hand::right);
+  EXPECT_EQ(s.hand_of(a, 43, 960), Hand::left);
+  for (std::size_t i = 0; i < s.score.notes.size(); ++i) {
+    EXPECT_EQ(a.source[i], s.score.notes[i].pitch == 62 ? HandSource::reach : HandSource::staff);
+  }
+}
+
+TEST(HandAssignment, AReachableChordStaysWithItsStaff) {
+  PianoScore s;
+  s.add(60, 0, 480, 1);  // an octave: one hand spans it
+  s.add(72, 0, 480, 1);
+  s.add(48, 0, 480, 2);
+  music::finalize_score(s.score);
+  const HandAssignment a = assign_hands(s.score, test::model("default"));
+  EXPECT_EQ(s.hand_of(a, 60, 0), Hand::right);
+  EXPECT_EQ(s.hand_of(a, 72, 0), Hand::right);
+  EXPECT_EQ(s.hand_of(a, 48, 0), Hand::left);
+}
+
+TEST(HandAssignment, ABusyOrCrossingOtherHandTakesNothing) {
+  {
+    PianoScore s;  // the left hand holds a chord far below: it cannot also reach D4
+    s.add(62, 0, 480, 1);
+    s.add(83, 0, 480, 1);
+    s.add(36, 0, 480, 2);
+    s.add(43, 0, 480, 2);
+    music::finalize_score(s.score);
+    const HandAssignment a = assign_hands(s.score, test::model("default"));
+    EXPECT_EQ(s.hand_of(a, 62, 0), Hand::right);
+  }
+  {
+    PianoScore s;  // the left hand plays above D4 meanwhile: taking it would cross the hands
+    s.add(62, 0, 480, 1);
+    s.add(83, 0, 480, 1);
+    s.add(65, 120, 240, 2);
+    music::finalize_score(s.score);
+    const HandAssignment a = assign_hands(s.score, test::model("default"));
+    EXPECT_EQ(s.hand_of(a, 62, 0), Hand::right);
+  }
+}
+
+TEST(HandAssignment, HandsAFileStatesAreKept) {
+  PianoScore s;
+  s.add(62, 0, 480, 1);
+  s.add(83, 0, 480, 1);
+  for (music::Note& n : s.score.notes) n.hand = Hand::right;
+  music::finalize_score(s.score);
+  const HandAssignment a = assign_hands(s.score, test::model("default"));
+  EXPECT_EQ(s.hand_of(a, 62, 0), Hand::right);
+  EXPECT_EQ(s.hand_of(a, 83, 0), Hand::right);
+}
+
+// The third-party sonata: after the assignment, no chord struck by one hand is wider than the
+// hand spans where the other hand was free to help (the planner reports what is left).
+TEST(HandAssignment, ScarlattisWideRightHandChordsAreShared) {
+  TUTTI_REQUIRE_TESTDATA();
+  auto score = music::load_score(tutti::test::testdata("musicxml/pianoplayer/scarlatti_k027.xml"));
+  ASSERT_TRUE(score.ok()) << score.error().message;
+  const HandAssignment a = assign_hands(*score, test::model("default"));
+  int moved = 0;
+  for (std::size_t i = 0; i < score->notes.size(); ++i) {
+    if (a.source[i] != HandSource::reach) continue;
+    ++moved;
+    EXPECT_EQ(a.hand[i], Hand::left) << "note " << i;  // the right-hand staff gives, low notes
+  }
+  EXPECT_GT(moved, 0);
+  auto plan = plan_score(*score, test::model("default"));
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
+}
+
+}  // namespace
+}  // namespace tutti::piano
