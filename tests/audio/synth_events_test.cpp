@@ -10,6 +10,7 @@
 #include <string>
 
 #include <tutti/music/load_score.hpp>
+#include "testdata.hpp"
 
 namespace tutti::audio {
 namespace {
@@ -87,6 +88,7 @@ TEST(SynthTimeline, HalfTempoDoublesEveryTimeAndStartShiftsThem) {
 }
 
 TEST(SynthTimeline, DamperPedalBecomesControllerSixtyFour) {
+  TUTTI_REQUIRE_TESTDATA();
   const music::Score score =
       load(std::filesystem::path(TUTTI_TESTDATA_DIR) / "midi/jazz-soft/test-control-40-damper.mid");
   ASSERT_FALSE(score.pedal_spans.empty());
