@@ -117,6 +117,46 @@ double distance_to_segment(const glm::vec3& p, const glm::vec3& a, const glm::ve
   return static_cast<double>(glm::length(p - (a + t * ab)));
 }
 
+// The closest distance between segments [p1, q1] and [p2, q2] (Ericson, Real-Time Collision
+// Detection, 5.1.9).
+double segment_distance(const glm::vec3& p1, const glm::vec3& q1, const glm::vec3& p2,
+                        const glm::vec3& q2) {
+  const glm::vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  constexpr float kTiny = 1e-12f;
+  float s = 0.0f, t = 0.0f;
+  if (a <= kTiny && e <= kTiny) return static_cast<double>(glm::length(r));
+  if (a <= kTiny) {
+    t = std::clamp(f / e, 0.0f, 1.0f);
+  } else {
+    const float c = glm::dot(d1, r);
+    if (e <= kTiny) {
+      s = std::clamp(-c / a, 0.0f, 1.0f);
+    } else {
+      const float b = glm::dot(d1, d2), denom = a * e - b * b;
+      s = denom > kTiny ? std::clamp((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
+      t = (b * s + f) / e;
+      if (t < 0.0f) {
+        t = 0.0f;
+        s = std::clamp(-c / a, 0.0f, 1.0f);
+      } else if (t > 1.0f) {
+        t = 1.0f;
+        s = std::clamp((b - c) / a, 0.0f, 1.0f);
+      }
+    }
+  }
+  return static_cast<double>(glm::distance(p1 + d1 * s, p2 + d2 * t));
+}
+
+// A finger's bone or the palm across the knuckles, as a capsule, named for reports.
+struct HandCapsule {
+  glm::vec3 a, b;
+  float radius;
+  const char* name;
+};
+// The palm's half thickness across the knuckles.
+constexpr float kPalmRadiusM = 0.011f;
+
 std::string name_of(const ecs::World& world, ecs::Entity performer) {
   const auto* about = world.try_get<components::Performer>(performer);
   return about != nullptr ? about->name : std::string("?");
@@ -455,6 +495,7 @@ class Checker {
         dip = d >= 0 ? origin(hand_world_[static_cast<std::size_t>(d)]) : tip + glm::vec3(0, 1, 0);
         return true;
       };
+      collect_hand_capsules(rig, side, own, own_nodes, body_side, hand);
       for (std::size_t f = 0; f < 5; ++f) {
         glm::vec3 tip, dip;
         if (!joints(f, tip, dip)) continue;
@@ -496,6 +537,7 @@ class Checker {
                     std::to_string(finger->key));
       }
     }
+    hands_apart(who);
     // The keys: how far each is down, and whether a note of it sounds (or is being struck or
     // released: 0.1 s before the onset to 0.1 s after the offset).
     for (int key = 0; key < 128; ++key) {
@@ -527,6 +569,70 @@ class Checker {
     head_tips_ = tips;
     if (body != nullptr) head_clearance(who, rig.body_nodes.head, head_tips_);
     pianist_ = who;
+  }
+
+  // The pianist's hand `side` as capsules (world space): each finger's bones, knuckle to tip, and
+  // the palm across the knuckles. From a user's hands (`own`) or tutti's hand model.
+  void collect_hand_capsules(const piano_family::PianoRig& rig, std::size_t side,
+                             const stage::PlacedModel* own, const stage::BodyNodes* own_nodes,
+                             std::size_t body_side, const stage::PlacedModel* hand) {
+    static constexpr const char* kBoneNames[5][3] = {
+        {"thumb's first bone", "thumb's middle bone", "thumb's tip"},
+        {"index's first bone", "index's middle bone", "index's tip"},
+        {"middle's first bone", "middle's middle bone", "middle's tip"},
+        {"ring's first bone", "ring's middle bone", "ring's tip"},
+        {"little's first bone", "little's middle bone", "little's tip"}};
+    std::vector<HandCapsule>& out = hand_capsules_[side];
+    out.clear();
+    const std::vector<glm::mat4>* world = nullptr;
+    std::array<std::array<int, 4>, 5> chain{};
+    if (own != nullptr) {
+      world = rig.hands_retarget && own == &rig.hands_retarget->proxy ? &hand_world_ : &body_world_;
+      for (std::size_t f = 0; f < 5; ++f) {
+        for (std::size_t j = 0; j < 3; ++j) chain[f][j] = own_nodes->fingers[body_side][f][j];
+        chain[f][3] = own_nodes->fingertips[body_side][f];
+      }
+    } else if (hand != nullptr) {
+      world = &hand_world_;
+      for (std::size_t f = 0; f < 5; ++f) {
+        for (std::size_t j = 0; j < 3; ++j) chain[f][j] = rig.finger_bones[side][f][j];
+        chain[f][3] = rig.finger_tips[side][f];
+      }
+    } else {
+      return;
+    }
+    const auto at = [&](int node) { return origin((*world)[static_cast<std::size_t>(node)]); };
+    for (std::size_t f = 0; f < 5; ++f) {
+      const auto radius = stage::kFingertipPadRadiusM[f];
+      for (std::size_t j = 0; j < 3; ++j) {
+        if (chain[f][j] < 0 || chain[f][j + 1] < 0) continue;
+        out.push_back({at(chain[f][j]), at(chain[f][j + 1]), radius, kBoneNames[f][j]});
+      }
+    }
+    if (chain[1][0] >= 0 && chain[4][0] >= 0) {
+      out.push_back({at(chain[1][0]), at(chain[4][0]), kPalmRadiusM, "palm"});
+    }
+  }
+
+  // How deep one hand's capsules reach into the other's: hands cross over each other, never
+  // through.
+  void hands_apart(const std::string& who) {
+    if (hand_capsules_[0].empty() || hand_capsules_[1].empty()) return;
+    double depth = 0.0;
+    const HandCapsule* deepest_right = nullptr;
+    const HandCapsule* deepest_left = nullptr;
+    for (const HandCapsule& right : hand_capsules_[0]) {
+      for (const HandCapsule& left : hand_capsules_[1]) {
+        const double into = static_cast<double>(right.radius + left.radius) -
+                            segment_distance(right.a, right.b, left.a, left.b);
+        if (into > depth) depth = into, deepest_right = &right, deepest_left = &left;
+      }
+    }
+    measure(who + ": one hand inside the other (depth; 0 = apart)", "mm", 0.0)
+        .add(depth * 1000.0, t_s_,
+             deepest_right == nullptr ? std::string()
+                                      : std::string("right ") + deepest_right->name + " in left " +
+                                            deepest_left->name);
   }
 
   // A key's top in its own frame: from the pivot (its back edge, z = 0) toward the player, as
@@ -587,6 +693,7 @@ class Checker {
   double t_s_ = 0.0;
   double dt_s_ = 1.0 / 30.0;
   std::map<const stage::PlacedModel*, std::vector<glm::quat>> last_rotations_;
+  std::array<std::vector<HandCapsule>, 2> hand_capsules_;  // the pianist's right, left
   std::map<int, KeyOutline> outlines_;
 };
 

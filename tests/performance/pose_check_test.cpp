@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <fstream>
 #include <sstream>
 
@@ -15,9 +16,12 @@
 #include <tutti/model/model_asset.hpp>
 #include <tutti/brass/brass_components.hpp>
 #include <glm/glm.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/performance/draft_scene.hpp>
 #include <tutti/scene/load_scene.hpp>
 
 #include "scratch_dir.hpp"
+#include "testdata.hpp"
 
 namespace tutti::performance {
 namespace {
@@ -190,6 +194,62 @@ TEST(PoseCheck, PianistsPadsMeetTheKeyTopsAndNoKeyIsLeftHanging) {
                   .worst(),
               0.0);
   }
+}
+
+// A third-party piece staged as `tutti scene new` drafts it, checked over [from_s, to_s).
+PoseReport check_piece(const std::string& relative, double from_s, double to_s) {
+  const std::filesystem::path file = test::testdata(relative);
+  auto score = music::load_score(file);
+  EXPECT_TRUE(score) << score.error().message;
+  if (!score) return {};
+  auto drafted = draft_scene(*score, file);
+  EXPECT_TRUE(drafted) << drafted.error().message;
+  if (!drafted) return {};
+  auto scene = scene::parse_scene(nlohmann::json::parse(drafted->document.dump()), "draft.json",
+                                  file.parent_path());
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return {};
+  auto staged = build_stage(*scene, {});
+  EXPECT_TRUE(staged) << staged.error().message;
+  if (!staged) return {};
+  PoseCheckOptions options;
+  options.from_s = from_s;
+  options.to_s = to_s;
+  auto report = check_pose(**staged, options);
+  EXPECT_TRUE(report) << report.error().message;
+  return report ? *report : PoseReport{};
+}
+
+// Hands never pass through each other: the bundled pieces keep them apart; the Entertainer's
+// opening, both hands in one octave, crowds them (a fault the measure exists to show: issue 35
+// lists it until the hands are planned apart). Each pressing pad lies on its key's top.
+TEST(PoseCheck, OneHandInsideTheOtherIsMeasured) {
+  for (const char* scene : {"piano.json", "piano_beginner.json"}) {
+    const PoseReport report = check(scene);
+    const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
+    EXPECT_GT(apart.samples.size(), 300u) << scene;
+    EXPECT_EQ(apart.worst(), 0.0) << scene << " at " << apart.worst_at_s << " s: " << apart.worst_of;
+    EXPECT_TRUE(get(report, "pianist: pressing pad off its key's top (0 = on it)").within_limit())
+        << scene;
+  }
+  TUTTI_REQUIRE_TESTDATA();
+  const PoseReport report = check_piece("midi/tonejs/TheEntertainer.mid", 4.2, 4.7);
+  const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
+  EXPECT_GT(apart.worst(), 5.0);
+  EXPECT_NE(apart.worst_of.find("right "), std::string::npos) << apart.worst_of;
+  EXPECT_NE(apart.worst_of.find(" in left "), std::string::npos) << apart.worst_of;
+}
+
+// Every joint's angular speed from frame to frame: the fastest is reported with its joint's name
+// (Trombone 2's forearm snaps at 5.80 s: 1539 °/s, issue 35's next step).
+TEST(PoseCheck, TheFastestJointIsNamed) {
+  const PoseReport report = check("quartet.json", {}, 5.6, 6.0);
+  const PoseMeasure& trombone = get(report, "Trombone 2: fastest joint's angular speed");
+  EXPECT_GT(trombone.samples.size(), 5u);
+  EXPECT_FALSE(trombone.worst_of.empty());
+  const PoseMeasure& trumpet = get(report, "Trumpet 1: fastest joint's angular speed");
+  EXPECT_GT(trumpet.samples.size(), 5u);
+  EXPECT_GE(trumpet.percentile(0.0), 0.0);
 }
 
 // The same quartet with a hold that puts the right palm on the model's old grip, above and right
