@@ -531,7 +531,9 @@ class Checker {
         measure(who + ": pressing pad off its key's top (0 = on it)", "mm", 1.0)
             .add(std::hypot(off_side, off_end) * 1000.0, t_s_,
                  (side == 0 ? "right " : "left ") + std::string(kFingerNames[f]) + " on key " +
-                     std::to_string(finger->key));
+                     std::to_string(finger->key) +
+                     (off_end > off_side ? (centre_local.z > 0.0f ? ", in front of it" : ", behind it")
+                                         : ", beside it"));
         pad.add((static_cast<double>(centre_local.y) - kPadRadiusMm[f] / 1000.0) * 1000.0, t_s_,
                 (side == 0 ? "right " : "left ") + std::string(kFingerNames[f]) + " on key " +
                     std::to_string(finger->key));
