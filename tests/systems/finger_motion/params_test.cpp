@@ -61,6 +61,36 @@ TEST(FingerMotionParams, BadValuesAreNamed) {
   EXPECT_EQ(p.error().message, "f.json: /timing/move_max_s: below move_min_s");
 }
 
+// The keys' lever and the hand's move in (optional: older files have none): bad values are named.
+TEST(FingerMotionParams, BadLeverAndReachInValuesAreNamed) {
+  nlohmann::json doc = content_json();
+  doc["keys"]["pivot_y_mm"] = 40.0;  // in front of where black keys are pressed
+  auto p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().message, "f.json: /keys/pivot_y_mm: must lie behind where black keys are pressed");
+
+  doc = content_json();
+  doc["keys"]["black_press_in_mm"] = "deep";
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_NE(p.error().message.find("f.json: /keys/black_press_in_mm: "), std::string::npos)
+      << p.error().message;
+
+  doc = content_json();
+  doc["timing"]["reach_in_s"] = 0.0;  // an ease takes time
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_NE(p.error().message.find("f.json: /timing/reach_in_s: "), std::string::npos)
+      << p.error().message;
+
+  doc = content_json();
+  doc["keys"].erase("pivot_y_mm");  // no lever: every key travels the whole dip
+  doc["timing"].erase("reach_in_s");
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_TRUE(p.ok()) << p.error().message;
+  EXPECT_EQ(p->keys.pivot_y_mm, 0.0);
+}
+
 TEST(FingerMotionParams, MissingFileIsAnError) {
   auto p = load_finger_motion_params("/nonexistent/finger_motion.json");
   ASSERT_FALSE(p.ok());
