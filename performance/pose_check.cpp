@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <tutti/brass/brass_components.hpp>
+#include <tutti/stage/finger_joint_limits.hpp>
 #include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/components/finger.hpp>
 #include <tutti/components/note.hpp>
@@ -42,60 +43,6 @@ constexpr float kTorsoRadiusM = 0.10f;
 constexpr float kUpperArmRadiusM = 0.045f;
 constexpr float kForearmRadiusM = 0.037f;
 constexpr float kSleeveShortOfWristM = 0.03f;
-constexpr double kDegree = 3.14159265358979 / 180.0;
-
-// Flexion and spread limits of one finger joint (degrees), from hand_rig.json.
-struct JointLimit {
-  double flex_min = -180, flex_max = 180, spread_min = -180, spread_max = 180;
-};
-using FingerLimits = std::array<std::array<JointLimit, 3>, 5>;
-
-Result<FingerLimits> load_finger_limits(const std::filesystem::path& content_dir) {
-  const std::filesystem::path file =
-      (content_dir.empty() ? content::default_content_dir() : content_dir) / "generator" /
-      "hand_rig.json";
-  auto doc = content::read_json_file(file);
-  if (!doc) return doc.error();
-  FingerLimits limits{};
-  if (!doc->contains("joint_limits_deg") || !doc->at("joint_limits_deg").is_object()) {
-    return Error{file.string() + ": /joint_limits_deg: missing"};
-  }
-  const nlohmann::json& all = doc->at("joint_limits_deg");
-  for (std::size_t f = 0; f < 5; ++f) {
-    for (std::size_t s = 0; s < 3; ++s) {
-      const std::string key = std::string(kFingerNames[f]) + "_" + std::to_string(s + 1);
-      if (!all.contains(key)) continue;
-      const nlohmann::json& j = all.at(key);
-      const auto get = [&](const char* name, double fallback) {
-        return j.contains(name) && j.at(name).is_number() ? j.at(name).get<double>() : fallback;
-      };
-      limits[f][s] = {get("flexion_min_deg", -180), get("flexion_max_deg", 180),
-                      get("spread_min_deg", 0), get("spread_max_deg", 0)};
-    }
-  }
-  return limits;
-}
-
-// How far one posed joint is past its limits (degrees): the child's rest offset turned by the
-// joint's rotation, read as flexion about the hand's flexion axis and spread out of that plane.
-double past_limit(const glm::quat& rotation, const glm::vec3& child_rest, int side,
-                  const JointLimit& limit) {
-  const glm::vec3 axis = side == 0 ? glm::vec3(0, 0, -1) : glm::vec3(0, 0, 1);
-  const glm::vec3 rest = glm::normalize(child_rest);
-  const glm::vec3 posed = glm::normalize(rotation * child_rest);
-  const glm::vec3 rest_in_plane = rest - glm::dot(rest, axis) * axis;
-  const glm::vec3 posed_in_plane = posed - glm::dot(posed, axis) * axis;
-  const double flexion =
-      std::atan2(static_cast<double>(glm::dot(axis, glm::cross(rest_in_plane, posed_in_plane))),
-                 static_cast<double>(glm::dot(rest_in_plane, posed_in_plane))) /
-      kDegree;
-  // Spread > 0 turns toward the little finger (local -Z on both hands).
-  const double spread = -(std::asin(std::clamp(static_cast<double>(posed.z), -1.0, 1.0)) -
-                          std::asin(std::clamp(static_cast<double>(rest.z), -1.0, 1.0))) /
-                        kDegree;
-  return std::max({0.0, limit.flex_min - flexion, flexion - limit.flex_max,
-                   limit.spread_min - spread, spread - limit.spread_max});
-}
 
 glm::vec3 origin(const glm::mat4& m) { return glm::vec3(m[3]); }
 
@@ -164,7 +111,7 @@ std::string name_of(const ecs::World& world, ecs::Entity performer) {
 
 class Checker {
  public:
-  Checker(stage::Stage& stage, PoseReport& report, const FingerLimits& limits)
+  Checker(stage::Stage& stage, PoseReport& report, const stage::FingerJointLimits& limits)
       : stage_(stage), report_(report), limits_(limits) {}
 
   void at_time(double t_s, double dt_s) {
@@ -334,7 +281,7 @@ class Checker {
           const int node = nodes.fingers[side][f][j];
           const int child = j < 2 ? nodes.fingers[side][f][j + 1] : nodes.fingertips[side][f];
           if (node < 0 || child < 0) continue;
-          const double past = past_limit(pose.local[static_cast<std::size_t>(node)].rotation,
+          const double past = stage::past_limit(pose.local[static_cast<std::size_t>(node)].rotation,
                                          asset.nodes[static_cast<std::size_t>(child)].rest.translation,
                                          static_cast<int>(side), limits_[f][j]);
           if (past > worst) worst = past, worst_node = node;
@@ -686,7 +633,7 @@ class Checker {
   PoseReport& report_;
   std::vector<glm::mat4> horn_world_, body_world_, hand_world_;
   std::vector<glm::vec3> head_tips_;
-  FingerLimits limits_;
+  stage::FingerJointLimits limits_;
   std::vector<std::pair<ecs::Entity, const components::Note*>> notes_;
   double key_seconds_ = 0.0, all_key_seconds_ = 0.0, key_mid_silent_ = 0.0, key_mid_resting_ = 0.0;
   int hanging_key_ = -1;  // the first key seen left hanging, and when
@@ -735,7 +682,7 @@ const PoseMeasure* PoseReport::find(const std::string& name) const {
 Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& options) {
   if (options.fps < 1 || options.fps > 240) return Error{"fps must be 1..240"};
   if (!(options.to_s > options.from_s)) return Error{"nothing to check: the range is empty"};
-  auto limits = load_finger_limits(options.content_dir);
+  auto limits = stage::load_finger_joint_limits(options.content_dir);
   if (!limits) return limits.error();
   PoseReport report;
   Checker checker(stage, report, *limits);

@@ -96,7 +96,8 @@ glm::vec3 fingertip_wrist(const model::ModelAsset& body, const BodyNodes& nodes,
 
 void pose_fingers(const model::ModelAsset& body, const BodyNodes& nodes, int side,
                   const FingerCurls& curls, const FingertipTargets* targets,
-                  const std::vector<glm::mat4>& world, model::ModelPose& pose) {
+                  const FingerJointLimits* limits, const std::vector<glm::mat4>& world,
+                  model::ModelPose& pose) {
   const glm::vec3 axis = flex_axis(side);
   const auto s = static_cast<std::size_t>(side);
   const int hand = side == 0 ? nodes.arm_left.end : nodes.arm_right.end;
@@ -150,8 +151,9 @@ void pose_fingers(const model::ModelAsset& body, const BodyNodes& nodes, int sid
     }
     const float pip = 0.5f * (lo + hi);
     const glm::vec3 bent = tip_from_mcp(c, axis, pip, ratio * pip);
-    pose.local[static_cast<std::size_t>(c.node[0])].rotation =
-        rotation_between(glm::normalize(bent), glm::normalize(reach));
+    glm::quat knuckle = rotation_between(glm::normalize(bent), glm::normalize(reach));
+    if (limits != nullptr) knuckle = clamp_to_limit(knuckle, c.offset[1], side, (*limits)[f][0]);
+    pose.local[static_cast<std::size_t>(c.node[0])].rotation = knuckle;
     pose.local[static_cast<std::size_t>(c.node[1])].rotation = glm::angleAxis(pip, axis);
     pose.local[static_cast<std::size_t>(c.node[2])].rotation = glm::angleAxis(ratio * pip, axis);
   }

@@ -12,6 +12,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <tutti/model/model_asset.hpp>
+#include <tutti/stage/finger_joint_limits.hpp>
 #include <tutti/stage/performer_rig.hpp>
 #include <vector>
 
@@ -51,9 +52,12 @@ glm::vec3 fingertip_wrist(const model::ModelAsset& body, const BodyNodes& nodes,
 
 // Bends each targeted finger so its tip reaches its target (as far as the joints allow); the
 // other fingers take their curl. `world` holds the body's world matrices with the hand
-// already placed; the finger nodes' local rotations are rewritten.
+// already placed; the finger nodes' local rotations are rewritten. With `limits`, a knuckle that
+// would have to turn past its limits to reach its target stops at them (the tip then falls short
+// of the target: a hovering finger's target may lie where no hand can put it).
 void pose_fingers(const model::ModelAsset& body, const BodyNodes& nodes, int side,
                   const FingerCurls& curls, const FingertipTargets* targets,
-                  const std::vector<glm::mat4>& world, model::ModelPose& pose);
+                  const FingerJointLimits* limits, const std::vector<glm::mat4>& world,
+                  model::ModelPose& pose);
 
 }  // namespace tutti::stage

@@ -54,6 +54,7 @@ struct BrassRig {
   int slide = -1;
   int mouthpiece = -1, grip_left = -1, grip_right = -1;
   Hold hold;  // content/instruments/holds/<model>.json
+  stage::FingerJointLimits finger_limits;  // content/generator/hand_rig.json
   // The player's phrases [first onset, last offset] (s), rests shorter than a few seconds inside:
   // the instrument is up for them (raised before, lowered after), down between them.
   std::vector<std::array<double, 2>> phrases;

@@ -120,6 +120,9 @@ Status bind_player(stage::StageBuilder& builder, const scene::Performer& perform
   auto hold = load_hold(builder.content_dir() / "instruments" / "holds" / (model_stem + ".json"));
   if (!hold) return hold.error();
   rig.hold = std::move(*hold);
+  auto finger_limits = stage::load_finger_joint_limits(builder.content_dir());
+  if (!finger_limits) return finger_limits.error();
+  rig.finger_limits = *finger_limits;
   for (std::size_t side = 0; side < 2; ++side) {
     const HandHold& hand = rig.hold.hands[side];
     if (!hand.palm_at.empty()) {

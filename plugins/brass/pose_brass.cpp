@@ -196,8 +196,9 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
         short_by[side] =
             glm::distance(origin(body_world[static_cast<std::size_t>(rig_grip)]), palm_goal);
       }
-      stage::pose_fingers(body_asset, rig.body_nodes, hand, hold.curls(), by_fingertips ? &targets : nullptr,
-                   body_world, body->pose);
+      stage::pose_fingers(body_asset, rig.body_nodes, hand, hold.curls(),
+                          by_fingertips ? &targets : nullptr, &rig.finger_limits, body_world,
+                          body->pose);
     }
     return short_by;
   };

@@ -190,7 +190,9 @@ float place_hand(const ecs::World& ecs_world, const model::ModelAsset& asset,
         goal.tips.world[f] = mcp + height * up + room * glm::normalize(across);
       }
     }
-    stage::pose_fingers(asset, nodes, body_side, curls, &goal.tips, world, pose);
+    // No limits: the pads must reach the keys, and check-pose measures the pianist's pads on the
+    // keys rather than the joints.
+    stage::pose_fingers(asset, nodes, body_side, curls, &goal.tips, nullptr, world, pose);
     if (last) break;
     placer.refresh(world);  // the fingers' new pose
     glm::vec3 worst(0.0f), mean_miss(0.0f);

@@ -50,6 +50,9 @@ struct Instrument {
   Mechanism mechanism = Mechanism::valves;
   std::vector<ValveSpec> valves;  // valves, or the slide's trigger(s)
   double max_slide_speed_mm_per_s = 0.0;  // slide only
+  // Slide only: the furthest extension the player's arm reaches (0: any). Further out, the
+  // planner takes another position when the note has one.
+  double slide_reach_mm = 0.0;
   double slide_length_mm = 0.0;           // slide only: 7th position
 
   // Added by the data loader (backward compatible): the physics the chart was derived from.

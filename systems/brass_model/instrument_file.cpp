@@ -190,7 +190,8 @@ Status read_mechanism(const Fields& f, const json& doc, Instrument& inst) {
   }
   if (*kind != "slide") return f.error("/mechanism/kind", "expected \"valves\" or \"slide\"");
   inst.mechanism = Mechanism::slide;
-  if (auto ok = f.keys(m, "/mechanism", {"kind", "positions", "max_speed_mm_per_s", "trigger"});
+  if (auto ok = f.keys(m, "/mechanism",
+                       {"kind", "positions", "max_speed_mm_per_s", "reach_mm", "trigger"});
       !ok) {
     return ok;
   }
@@ -204,6 +205,11 @@ Status read_mechanism(const Fields& f, const json& doc, Instrument& inst) {
   auto speed = f.number(**speed_value, "/mechanism/max_speed_mm_per_s", 1.0, 1e5);
   if (!speed) return speed.error();
   inst.max_slide_speed_mm_per_s = *speed;
+  if (m.contains("reach_mm")) {
+    auto reach = f.number(m.at("reach_mm"), "/mechanism/reach_mm", 1.0, 1e4);
+    if (!reach) return reach.error();
+    inst.slide_reach_mm = *reach;
+  }
   if (m.contains("trigger")) {
     auto triggers = valve_list(f, m.at("trigger"), "/mechanism/trigger", true);
     if (!triggers) return triggers.error();

@@ -16,8 +16,13 @@ namespace {
 
 constexpr double kUnset = std::numeric_limits<double>::infinity();
 
-double strike_cost(const Fingering& f, const PlannerWeights& w) {
-  return w.alternate_rank * f.rank + w.tuning_per_cent * std::abs(f.cents);
+bool beyond_reach(const Fingering& f, const Instrument& instrument) {
+  return instrument.slide_reach_mm > 0.0 && double(f.slide_mm) > instrument.slide_reach_mm;
+}
+
+double strike_cost(const Fingering& f, const Instrument& instrument, const PlannerWeights& w) {
+  return w.alternate_rank * f.rank + w.tuning_per_cent * std::abs(f.cents) +
+         (beyond_reach(f, instrument) ? w.beyond_reach : 0.0);
 }
 
 struct Move {
@@ -75,6 +80,7 @@ Result<PlannerWeights> load_planner_weights(const std::string& file) {
                                          {"rate_cap", &w.rate_cap, 0.0, any},
                                          {"slide_per_100mm", &w.slide_per_100mm, 0.0, any},
                                          {"slide_rush", &w.slide_rush, 0.0, any},
+                                         {"beyond_reach", &w.beyond_reach, 0.0, any},
                                          {"release_fraction", &w.change.release_fraction, 0.0, 1.0},
                                          {"release_max_s", &w.change.release_max_s, 0.0, 10.0},
                                          {"impossible", &w.impossible, 1.0, any}};
@@ -132,7 +138,7 @@ BrassPlanSummary plan_line(BrassLine& line, const PlannerWeights& w, const music
   std::vector<int> back(static_cast<std::size_t>(begin.back()), -1);
   {
     const auto first = options(playable[0]);
-    for (std::size_t o = 0; o < first.size(); ++o) best[o] = strike_cost(first[o], w);
+    for (std::size_t o = 0; o < first.size(); ++o) best[o] = strike_cost(first[o], instrument, w);
   }
   for (std::size_t k = 1; k < playable.size(); ++k) {
     const LineNote& from = line.notes[static_cast<std::size_t>(playable[k - 1])];
@@ -149,7 +155,7 @@ BrassPlanSummary plan_line(BrassLine& line, const PlannerWeights& w, const music
         const double total = base + move_cost(before[a], now[b], window, ioi, instrument, w).cost;
         if (total < best_cost) best_cost = total, best_prev = static_cast<int>(a);
       }
-      best[static_cast<std::size_t>(begin[k]) + b] = best_cost + strike_cost(now[b], w);
+      best[static_cast<std::size_t>(begin[k]) + b] = best_cost + strike_cost(now[b], instrument, w);
       back[static_cast<std::size_t>(begin[k]) + b] = best_prev;
     }
   }
@@ -174,7 +180,22 @@ BrassPlanSummary plan_line(BrassLine& line, const PlannerWeights& w, const music
     note.fingering = chart_index(f);
     note.alternate = f.rank > 0;
     summary.alternates += note.alternate;
-    summary.total_cost += strike_cost(f, w);
+    summary.total_cost += strike_cost(f, instrument, w);
+    if (beyond_reach(f, instrument)) {
+      // No other position for this note: the player leans for it (the pose turns the chest).
+      BrassDiagnostic d;
+      d.kind = BrassIssue::beyond_reach;
+      d.note = playable[k];
+      d.time_s = note.onset_s;
+      char what[160];
+      std::snprintf(what, sizeof what,
+                    ": %s needs position %d, %.0f mm out, beyond the arm's reach (%.0f mm); "
+                    "the player leans for it",
+                    music::pitch_name(note.sounding).c_str(), int(f.position), double(f.slide_mm),
+                    instrument.slide_reach_mm);
+      d.message = at_text(score, line, note, &d.bar) + what;
+      summary.diagnostics.push_back(std::move(d));
+    }
     if (previous != nullptr) {
       const LineNote& from = line.notes[static_cast<std::size_t>(playable[k - 1])];
       const Move m = move_cost(*previous, f, change_window_s(from, note, w.change),

@@ -34,6 +34,7 @@ struct PlannerWeights {
   double rate_cap = 6.0;
   double slide_per_100mm = 1.0;
   double slide_rush = 1.0;
+  double beyond_reach = 20.0;  // a slide position past the instrument's slide_reach_mm
   ChangeWindow change;  // release_fraction, release_max_s
   double impossible = 1e6;
 };
@@ -42,7 +43,7 @@ struct PlannerWeights {
 Result<PlannerWeights> load_planner_weights();
 Result<PlannerWeights> load_planner_weights(const std::string& file);
 
-enum class BrassIssue { out_of_range, slide_too_slow };
+enum class BrassIssue { out_of_range, slide_too_slow, beyond_reach };
 
 struct BrassDiagnostic {
   BrassIssue kind = BrassIssue::out_of_range;

@@ -277,5 +277,20 @@ TEST(InstrumentFile, ATromboneWithoutTheFAttachment) {
   EXPECT_EQ(test::names(*straight, key("C3")), (std::vector<std::string>{"6"}));
 }
 
+TEST(InstrumentFile, TheArmsReachIsOptionalAndChecked) {
+  json doc = shipped_json("trombone_tenor");
+  EXPECT_DOUBLE_EQ(test::instrument("trombone_tenor").slide_reach_mm,
+                   doc["mechanism"]["reach_mm"].get<double>());
+  doc["mechanism"]["reach_mm"] = -5;
+  EXPECT_NE(error_of(doc, "trombone_tenor").find("/mechanism/reach_mm: must be a number in"),
+            std::string::npos);
+  doc["mechanism"]["reach_mm"] = "far";
+  EXPECT_NE(error_of(doc, "trombone_tenor").find("/mechanism/reach_mm: "), std::string::npos);
+  doc["mechanism"].erase("reach_mm");
+  auto unlimited = load_modified(doc, "trombone_tenor");
+  ASSERT_TRUE(unlimited.ok()) << unlimited.error().message;
+  EXPECT_EQ(unlimited->slide_reach_mm, 0.0);
+}
+
 }  // namespace
 }  // namespace tutti::brass

@@ -125,6 +125,51 @@ TEST(BrassPlanner, SlideMovesThatCannotFinishAreAvoidedOrReported) {
   EXPECT_NE(worst.diagnostics.front().message.find("slide cannot move"), std::string::npos);
 }
 
+// The trombone without its F attachment: only the slide's own positions.
+Instrument without_trigger(const Instrument& trombone) {
+  Instrument plain = trombone;
+  plain.chart.clear();
+  plain.chart_begin.assign(1, 0);
+  for (int p = trombone.lowest_written; p <= trombone.highest_written; ++p) {
+    for (const Fingering& f : trombone.fingerings(p)) {
+      if (f.valves == 0) plain.chart.push_back(f);
+    }
+    plain.chart_begin.push_back(static_cast<int>(plain.chart.size()));
+  }
+  return plain;
+}
+
+TEST(BrassPlanner, SlidePositionsPastTheArmsReachTakeTheTrigger) {
+  // B2 held alone, slowly: 7th position is standard, but 609 mm out is past a player's reach
+  // (trombone_tenor.json "reach_mm"), so the F attachment's T2 plays it.
+  const Instrument& trombone = instrument("trombone_tenor");
+  ASSERT_GT(trombone.slide_reach_mm, 0.0);
+  BrassLine line = line_of(trombone, {47}, 2.0);
+  BrassPlanSummary summary = plan_line(line, weights());
+  EXPECT_EQ(fingering_name(trombone, chosen(line, 0)), "T2");
+  EXPECT_LE(double(chosen(line, 0).slide_mm), trombone.slide_reach_mm);
+  EXPECT_TRUE(summary.diagnostics.empty());
+  // Without a reach limit the standard 7th stays.
+  Instrument unlimited = trombone;
+  unlimited.slide_reach_mm = 0.0;
+  BrassLine free_line = line_of(unlimited, {47}, 2.0);
+  plan_line(free_line, weights());
+  EXPECT_EQ(fingering_name(unlimited, chosen(free_line, 0)), "7");
+  // Without a trigger there is no other way: played in 7th and said so.
+  const Instrument plain = without_trigger(trombone);
+  BrassLine plain_line = line_of(plain, {47}, 2.0);
+  plain_line.part_name = "Trombone 1";
+  summary = plan_line(plain_line, weights());
+  EXPECT_EQ(fingering_name(plain, chosen(plain_line, 0)), "7");
+  ASSERT_EQ(summary.diagnostics.size(), 1u);
+  EXPECT_EQ(summary.diagnostics.front().kind, BrassIssue::beyond_reach);
+  EXPECT_EQ(summary.diagnostics.front().note, 0);
+  const std::string& message = summary.diagnostics.front().message;
+  EXPECT_NE(message.find("Trombone 1"), std::string::npos) << message;
+  EXPECT_NE(message.find("B2 needs position 7"), std::string::npos) << message;
+  EXPECT_NE(message.find("beyond the arm's reach (550 mm)"), std::string::npos) << message;
+}
+
 TEST(BrassPlanner, TrumpetTrillTakesTheThirdValveAlternate) {
   // Written G#4 (2-3) to A4 (1-2 standard, 3 alternate), trilled: sounding F#4 / G4.
   std::vector<int> trill;
