@@ -38,6 +38,16 @@ void split_automatically(const music::Score& score, std::vector<int> indices,
   });
   double last_right = 67.0;  // hands start around G4 and C3
   double last_left = 48.0;
+  // Notes already given to a hand that still sound: a fugue voice holds a key while the others
+  // move, and the hand holding it can neither let the other hand's thumb past it nor stretch
+  // beyond its reach from it. A MIDI note overlapping the next by a legato moment is not held.
+  constexpr double kLegatoOverlapS = 0.05;
+  struct Held {
+    double offset_s;
+    int pitch;
+    bool right;
+  };
+  std::vector<Held> held;
   for (std::size_t start = 0; start < indices.size();) {
     std::size_t stop = start;
     const auto onset = score.notes[static_cast<std::size_t>(indices[start])].onset_ticks;
@@ -50,12 +60,34 @@ void split_automatically(const music::Score& score, std::vector<int> indices,
       return score.notes[static_cast<std::size_t>(indices[start + static_cast<std::size_t>(i)])]
           .pitch;
     };
+    const double onset_s = score.notes[static_cast<std::size_t>(indices[start])].onset_s;
+    std::erase_if(held, [&](const Held& h) { return h.offset_s <= onset_s + kLegatoOverlapS; });
+    int held_left_top = -1, held_right_bottom = 128;
+    for (const Held& h : held) {
+      if (h.right) held_right_bottom = std::min(held_right_bottom, h.pitch);
+      else held_left_top = std::max(held_left_top, h.pitch);
+    }
     auto hand_cost = [&](int lo, int hi, bool right) {  // notes [lo, hi)
       if (lo >= hi) return 0.0;
       double cost = 0.0;
-      const double span = x_of(pitch(hi - 1)) - x_of(pitch(lo));
+      int bottom = pitch(lo), top = pitch(hi - 1), keys = hi - lo;
+      for (const Held& h : held) {
+        if (h.right != right) continue;
+        bool struck_again = false;
+        for (int i = lo; i < hi; ++i) struck_again = struck_again || pitch(i) == h.pitch;
+        if (struck_again) continue;
+        bottom = std::min(bottom, h.pitch);
+        top = std::max(top, h.pitch);
+        ++keys;
+      }
+      const double span = x_of(top) - x_of(bottom);
       if (span > reach_mm) cost += 100.0 * (span - reach_mm) / white;
-      if (hi - lo > 5) cost += 100.0 * (hi - lo - 5);
+      if (keys > 5) cost += 100.0 * (keys - 5);
+      // Passing a key the other hand holds puts one thumb through the other: worse than a
+      // stretch too wide, which the planner resolves by letting the held key go early.
+      for (int i = lo; i < hi; ++i) {
+        if (right ? pitch(i) <= held_left_top : pitch(i) >= held_right_bottom) cost += 1000.0;
+      }
       double centre = 0.5 * (pitch(lo) + pitch(hi - 1));
       // Stay near where the hand was (a far jump counts as an octave), right hand above middle
       // C, left hand below it.
@@ -74,6 +106,7 @@ void split_automatically(const music::Score& score, std::vector<int> indices,
       const auto note = static_cast<std::size_t>(indices[start + static_cast<std::size_t>(i)]);
       out.hand[note] = i < best_split ? music::Hand::left : music::Hand::right;
       out.source[note] = HandSource::automatic;
+      held.push_back({score.notes[note].offset_s, score.notes[note].pitch, i >= best_split});
     }
     if (best_split > 0) last_left = 0.5 * (pitch(0) + pitch(best_split - 1));
     if (best_split < n) last_right = 0.5 * (pitch(best_split) + pitch(n - 1));

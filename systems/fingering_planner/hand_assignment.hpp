@@ -8,7 +8,8 @@
 //     keys are cut at one point (low part left, high part right, so hands never cross within an
 //     event), choosing the cut that keeps each hand's span reachable and at most 5 keys, keeps each
 //     hand near where it was (a far jump counts as an octave), the right hand from middle C up and
-//     the left hand below it.
+//     the left hand below it. Keys a hand still holds count in its span, and no hand strikes a
+//     key at or past one the other hand holds (that puts one thumb through the other).
 // Percussion parts get Hand::unknown (not planned).
 // Then, but for hands a file states: notes struck together that one hand cannot span (wider than
 // its reach, or more than five) give their outer notes to the other hand where it is free to take

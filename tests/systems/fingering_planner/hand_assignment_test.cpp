@@ -100,6 +100,56 @@ TEST(HandAssignment, HandsAFileStatesAreKept) {
   EXPECT_EQ(s.hand_of(a, 83, 0), Hand::right);
 }
 
+// Parts split automatically: a key one hand still holds is never passed by the other hand. The
+// left hand holds E4 under the right hand's E5-G5-C6; the D4 that follows goes to the left hand
+// (beside its E4), not to the right thumb under it (which alone would be nearer where the right
+// hand was).
+TEST(HandAssignment, AnAutomaticSplitNeverPassesAKeyTheOtherHandHolds) {
+  PianoScore s;
+  s.score.parts[0].staves = 1;
+  s.add(64, 0, 1920, 0);
+  s.add(76, 0, 1920, 0);
+  s.add(79, 0, 1920, 0);
+  s.add(84, 0, 1920, 0);
+  s.add(62, 480, 240, 0);
+  music::finalize_score(s.score);
+  const HandAssignment a = assign_hands(s.score, test::model("default"));
+  EXPECT_EQ(s.hand_of(a, 64, 0), Hand::left);
+  EXPECT_EQ(s.hand_of(a, 76, 0), Hand::right);
+  EXPECT_EQ(s.hand_of(a, 62, 480), Hand::left);
+}
+
+// Counts notes struck by one hand at or beyond a key the other hand holds (sounding 50 ms past
+// the onset): the right hand at or below a held left key, the left at or above a held right key.
+int passes_a_held_key(const music::Score& score, const HandAssignment& a) {
+  int passes = 0;
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    const music::Note& n = score.notes[i];
+    if (a.source[i] != HandSource::automatic) continue;
+    for (std::size_t j = 0; j < score.notes.size(); ++j) {
+      const music::Note& h = score.notes[j];
+      if (a.hand[j] == a.hand[i] || a.hand[j] == Hand::unknown) continue;
+      if (!(h.onset_s < n.onset_s && h.offset_s > n.onset_s + 0.05)) continue;
+      if (a.hand[i] == Hand::right ? n.pitch <= h.pitch : n.pitch >= h.pitch) ++passes;
+    }
+  }
+  return passes;
+}
+
+// Third-party fugue and invention voices on separate tracks and parts: the automatic split
+// gives no hand a key past one the other hand holds (bach_846's fugue gave the right thumb C4
+// under the left thumb's held E4 at 148 s).
+TEST(HandAssignment, ThirdPartyVoicesSplitWithoutPassingHeldKeys) {
+  TUTTI_REQUIRE_TESTDATA();
+  for (const char* file : {"midi/tonejs/bach_846.mid", "musicxml/pianoplayer/bach_invention4.xml",
+                           "musicxml/pianoplayer/pachelbel_canon.xml"}) {
+    auto score = music::load_score(tutti::test::testdata(file));
+    ASSERT_TRUE(score.ok()) << score.error().message;
+    const HandAssignment a = assign_hands(*score, test::model("default"));
+    EXPECT_EQ(passes_a_held_key(*score, a), 0) << file;
+  }
+}
+
 // The third-party sonata: after the assignment, no chord struck by one hand is wider than the
 // hand spans where the other hand was free to help (the planner reports what is left).
 TEST(HandAssignment, ScarlattisWideRightHandChordsAreShared) {
