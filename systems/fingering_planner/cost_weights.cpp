@@ -65,7 +65,7 @@ Result<CostWeights> cost_weights_from_json(const nlohmann::json& document,
   const JsonReader reader(file_name);
   TUTTI_TRY(reader.check_keys(document, "",
                               {"name", "description", "hand_area", "fingers", "same_finger",
-                               "spacing", "crossing", "events"}));
+                               "spacing", "crossing", "other_hand", "events"}));
   CostWeights w;
   if (document.contains("name")) {
     if (!document.at("name").is_string()) return reader.error("/name", "expected a string");
@@ -144,6 +144,19 @@ Result<CostWeights> cost_weights_from_json(const nlohmann::json& document,
   TUTTI_TRY(c.number("thumb_on_black", w.cross_thumb_black));
   TUTTI_TRY(c.number("thumb_little", w.cross_little));
   TUTTI_TRY(c.number("other", w.cross_other));
+
+  const nlohmann::json& other = section("other_hand");
+  TUTTI_TRY(reader.check_keys(other, "/other_hand",
+                              {"separation_white_keys", "per_white_key", "lead_s"}));
+  SectionReader o(reader, other, "/other_hand");
+  TUTTI_TRY(o.number("separation_white_keys", w.other_hand_separation));
+  TUTTI_TRY(o.number("per_white_key", w.other_hand_per_white_key));
+  TUTTI_TRY(o.number("lead_s", w.other_hand_lead_s));
+  if (w.other_hand_separation < 0) {
+    return reader.error("/other_hand/separation_white_keys", "must be >= 0");
+  }
+  if (w.other_hand_per_white_key < 0) return reader.error("/other_hand/per_white_key", "must be >= 0");
+  if (w.other_hand_lead_s < 0) return reader.error("/other_hand/lead_s", "must be >= 0");
 
   const nlohmann::json& events = section("events");
   TUTTI_TRY(reader.check_keys(events, "/events",

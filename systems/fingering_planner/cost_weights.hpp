@@ -72,6 +72,14 @@ struct CostWeights {
   double cross_little = 0.0;                   // thumb <-> little finger crossing
   double cross_other = 0.0;                    // crossing without the thumb
 
+  // --- the other hand (0 in the paper, which plans one hand) ---
+  // A fingering whose hand area centre lies nearer the other hand's corridor centre than
+  // other_hand_separation white keys costs other_hand_per_white_key per white key of shortfall,
+  // from other_hand_lead_s before the event's onset to its end (other_hand_cost.hpp).
+  double other_hand_separation = 4.0;
+  double other_hand_per_white_key = 0.0;
+  double other_hand_lead_s = 0.15;
+
   // --- events ---
   double chord_tolerance_s = 0.001;  // onsets this close form one event
   double unreachable = 100.0;        // per white key of missing reach when no fingering fits

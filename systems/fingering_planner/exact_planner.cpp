@@ -8,8 +8,9 @@
 namespace tutti::piano {
 
 Result<HandPlan> plan_hand_exact(std::span<const PlanNote> notes, music::Hand side,
-                                 const FingeringModel& model) {
-  auto prepared = prepare_hand(notes, side, model);
+                                 const FingeringModel& model,
+                                 std::span<const HandCorridor> other_hand) {
+  auto prepared = prepare_hand(notes, side, model, other_hand);
   if (!prepared) return prepared.error();
   const PreparedHand& hand = *prepared;
   if (hand.events.empty()) {

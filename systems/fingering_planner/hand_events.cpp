@@ -8,6 +8,7 @@
 #include <numeric>
 #include <string>
 
+#include <tutti/fingering_planner/other_hand_cost.hpp>
 #include <tutti/music/pitch.hpp>
 
 namespace tutti::piano {
@@ -68,7 +69,8 @@ const char* diagnostic_kind_name(DiagnosticKind kind) {
 }
 
 Result<PreparedHand> prepare_hand(std::span<const PlanNote> notes, music::Hand side,
-                                  const FingeringModel& model) {
+                                  const FingeringModel& model,
+                                  std::span<const HandCorridor> other_hand) {
   const Keyboard& keyboard = model.keyboard;
   const CostWeights& w = model.weights;
   for (std::size_t i = 0; i < notes.size(); ++i) {
@@ -342,6 +344,7 @@ Result<PreparedHand> prepare_hand(std::span<const PlanNote> notes, music::Hand s
         e + 1 < hand.events.size() ? std::min(release, hand.events[e + 1].onset_s) : release;
     event.end_s = std::max(event.end_s, event.onset_s);
   }
+  add_other_hand_cost(hand, other_hand, model);
   return hand;
 }
 

@@ -60,8 +60,11 @@ struct PreparedHand {
   std::vector<Diagnostic> diagnostics;
 };
 
+// `other_hand`: the other hand's corridors, planned first; their room is priced into the
+// candidates' strike costs (other_hand_cost.hpp). Empty = this hand alone.
 Result<PreparedHand> prepare_hand(std::span<const PlanNote> notes, music::Hand side,
-                                  const FingeringModel& model);
+                                  const FingeringModel& model,
+                                  std::span<const HandCorridor> other_hand = {});
 
 // Turns a choice of one candidate per event into the plan (fingers, corridors, cost, diagnostics).
 HandPlan finish_plan(const PreparedHand& hand, std::span<const int> chosen,

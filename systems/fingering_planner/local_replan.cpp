@@ -64,7 +64,8 @@ bool settled(const std::vector<int>& now, const std::vector<int>& before, int fi
 
 Result<LocalReplan> replan_hand_locally(std::span<const PlanNote> notes, music::Hand side,
                                         const FingeringModel& model, const HandPlan& previous,
-                                        std::span<const int> edited) {
+                                        std::span<const int> edited,
+                                        std::span<const HandCorridor> other_hand) {
   if (previous.fingers.size() != notes.size()) {
     return Error{"re-plan: the previous plan has " + std::to_string(previous.fingers.size()) +
                  " fingers for " + std::to_string(notes.size()) + " notes"};
@@ -79,7 +80,7 @@ Result<LocalReplan> replan_hand_locally(std::span<const PlanNote> notes, music::
     if (finger < 1 || finger > 5)
       return Error{"re-plan: the previous plan has a note without a finger"};
   }
-  auto prepared = prepare_hand(notes, side, model);
+  auto prepared = prepare_hand(notes, side, model, other_hand);
   if (!prepared) return prepared.error();
   const PreparedHand& hand = *prepared;
   const int events = static_cast<int>(hand.events.size());

@@ -36,6 +36,7 @@ struct LocalReplan {
 // notes, or a previous plan of another size.
 Result<LocalReplan> replan_hand_locally(std::span<const PlanNote> notes, music::Hand side,
                                         const FingeringModel& model, const HandPlan& previous,
-                                        std::span<const int> edited);
+                                        std::span<const int> edited,
+                                        std::span<const HandCorridor> other_hand = {});
 
 }  // namespace tutti::piano

@@ -9,9 +9,10 @@
 namespace tutti::piano {
 
 Result<HandPlan> plan_hand_lookahead(std::span<const PlanNote> notes, music::Hand side,
-                                     const FingeringModel& model, int lookahead) {
+                                     const FingeringModel& model, int lookahead,
+                                     std::span<const HandCorridor> other_hand) {
   if (lookahead < 1) return Error{"lookahead must be at least 1 event"};
-  auto prepared = prepare_hand(notes, side, model);
+  auto prepared = prepare_hand(notes, side, model, other_hand);
   if (!prepared) return prepared.error();
   const PreparedHand& hand = *prepared;
   HandPlan empty;

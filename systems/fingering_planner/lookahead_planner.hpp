@@ -15,6 +15,7 @@ namespace tutti::piano {
 
 // `lookahead` >= 1 (1 = pure greedy). Errors: invalid notes, lookahead < 1.
 Result<HandPlan> plan_hand_lookahead(std::span<const PlanNote> notes, music::Hand side,
-                                     const FingeringModel& model, int lookahead);
+                                     const FingeringModel& model, int lookahead,
+                                     std::span<const HandCorridor> other_hand = {});
 
 }  // namespace tutti::piano

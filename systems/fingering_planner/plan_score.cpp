@@ -13,11 +13,12 @@
 namespace tutti::piano {
 
 Result<HandPlan> plan_hand(std::span<const PlanNote> notes, music::Hand side,
-                           const FingeringModel& model, const PlanOptions& options) {
+                           const FingeringModel& model, const PlanOptions& options,
+                           std::span<const HandCorridor> other_hand) {
   if (options.mode == PlannerMode::lookahead) {
-    return plan_hand_lookahead(notes, side, model, options.lookahead);
+    return plan_hand_lookahead(notes, side, model, options.lookahead, other_hand);
   }
-  return plan_hand_exact(notes, side, model);
+  return plan_hand_exact(notes, side, model, other_hand);
 }
 
 std::vector<int> note_tonics(const music::Score& score) {
@@ -137,7 +138,10 @@ Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& mo
       if (assignment.hand[i] == side) indices.push_back(static_cast<int>(i));
     }
     const std::vector<PlanNote> notes = hand_input(score, model, options, indices, tonics, clamped);
-    auto plan = plan_hand(notes, side, model, options);
+    // The right hand is planned first; the left hand keeps out of its way (other_hand_cost.hpp).
+    auto plan = plan_hand(notes, side, model, options,
+                          side == music::Hand::left ? std::span<const HandCorridor>(out.right.corridors)
+                                                    : std::span<const HandCorridor>());
     if (!plan) return Error{score.source + ": " + plan.error().message};
     for (std::size_t k = 0; k < indices.size(); ++k) {
       out.fingers[static_cast<std::size_t>(indices[k])] = plan->fingers[k];
@@ -160,6 +164,8 @@ Result<ScorePlan> replan_score_locally(const music::Score& score, const Fingerin
   }
   ScorePlan out = previous;
   ScoreReplanSpan summary;
+  int right_changed_notes = 0;
+  double right_changed_first_s = 0.0, right_changed_last_s = 0.0;
   std::vector<Diagnostic> clamped;
   const std::vector<int> tonics =
       options.tonic_from_key ? note_tonics(score) : std::vector<int>(score.notes.size(), -1);
@@ -168,7 +174,15 @@ Result<ScorePlan> replan_score_locally(const music::Score& score, const Fingerin
         side == music::Hand::right ? previous.right_notes : previous.left_notes;
     std::vector<int> local_edits;
     for (std::size_t k = 0; k < indices.size(); ++k) {
-      if (std::find(edited.begin(), edited.end(), indices[k]) != edited.end()) {
+      const music::Note& note = score.notes[static_cast<std::size_t>(indices[k])];
+      // The left hand keeps out of the right hand's way: where the right hand's fingering
+      // changed, the left hand's is searched again too.
+      const double lead = model.weights.other_hand_lead_s;
+      const bool beside_changed_right =
+          side == music::Hand::left && right_changed_notes > 0 &&
+          note.offset_s >= right_changed_first_s - lead && note.onset_s <= right_changed_last_s + lead;
+      if (beside_changed_right ||
+          std::find(edited.begin(), edited.end(), indices[k]) != edited.end()) {
         local_edits.push_back(static_cast<int>(k));
       }
     }
@@ -181,7 +195,10 @@ Result<ScorePlan> replan_score_locally(const music::Score& score, const Fingerin
     }
     // The previous plan's diagnostics are in score terms; the hand-level re-plan keeps the
     // ones outside its window as they are.
-    auto replan = replan_hand_locally(notes, side, model, before, local_edits);
+    auto replan = replan_hand_locally(
+        notes, side, model, before, local_edits,
+        side == music::Hand::left ? std::span<const HandCorridor>(out.right.corridors)
+                                  : std::span<const HandCorridor>());
     if (!replan) return Error{score.source + ": " + replan.error().message};
     HandPlan& target = side == music::Hand::right ? out.right : out.left;
     target = std::move(replan->plan);
@@ -189,6 +206,11 @@ Result<ScorePlan> replan_score_locally(const music::Score& score, const Fingerin
                    target.diagnostics.size() - static_cast<std::size_t>(replan->kept_diagnostics));
     for (std::size_t k = 0; k < indices.size(); ++k) {
       out.fingers[static_cast<std::size_t>(indices[k])] = target.fingers[k];
+    }
+    if (side == music::Hand::right) {
+      right_changed_notes = replan->changed_notes;
+      right_changed_first_s = replan->first_changed_s;
+      right_changed_last_s = replan->last_changed_s;
     }
     summary.changed_notes += replan->changed_notes;
     summary.searched_events += replan->searched_last_event - replan->searched_first_event + 1;

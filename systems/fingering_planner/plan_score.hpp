@@ -59,7 +59,8 @@ Result<ScorePlan> replan_score_locally(const music::Score& score, const Fingerin
 
 // Plans one hand with the chosen mode.
 Result<HandPlan> plan_hand(std::span<const PlanNote> notes, music::Hand side,
-                           const FingeringModel& model, const PlanOptions& options = {});
+                           const FingeringModel& model, const PlanOptions& options = {},
+                           std::span<const HandCorridor> other_hand = {});
 
 // Tonic pitch class (0 = C .. 11) per Score::notes entry: the key signature in force at the note
 // (fifths, minor flag); without key signatures, the major or harmonic-minor scale containing most

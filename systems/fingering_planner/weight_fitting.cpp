@@ -232,6 +232,9 @@ nlohmann::json cost_weights_to_json(const CostWeights& w, const std::string& des
                      {"thumb_on_black", w.cross_thumb_black},
                      {"thumb_little", w.cross_little},
                      {"other", w.cross_other}};
+  doc["other_hand"] = {{"separation_white_keys", w.other_hand_separation},
+                       {"per_white_key", w.other_hand_per_white_key},
+                       {"lead_s", w.other_hand_lead_s}};
   doc["events"] = {{"chord_tolerance_s", w.chord_tolerance_s},
                    {"unreachable_per_white_key", w.unreachable},
                    {"impossible", w.impossible}};

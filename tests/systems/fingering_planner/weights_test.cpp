@@ -37,6 +37,25 @@ TEST(CostWeights, UnknownKeyIsAnErrorWithItsJsonPath) {
   EXPECT_NE(missing.error().message.find("no_such_preset.json"), std::string::npos);
 }
 
+TEST(CostWeights, OtherHandKeysLoadAndAreChecked) {
+  auto empty = cost_weights_from_json(nlohmann::json::object(), "w.json");
+  ASSERT_TRUE(empty.ok());
+  EXPECT_EQ(empty->other_hand_per_white_key, 0.0);  // the paper plans one hand: off
+  const nlohmann::json ok = {
+      {"other_hand", {{"separation_white_keys", 5.0}, {"per_white_key", 2.0}, {"lead_s", 0.3}}}};
+  auto weights = cost_weights_from_json(ok, "w.json");
+  ASSERT_TRUE(weights.ok()) << weights.error().message;
+  EXPECT_DOUBLE_EQ(weights->other_hand_separation, 5.0);
+  EXPECT_DOUBLE_EQ(weights->other_hand_per_white_key, 2.0);
+  EXPECT_DOUBLE_EQ(weights->other_hand_lead_s, 0.3);
+  auto negative = cost_weights_from_json({{"other_hand", {{"per_white_key", -1.0}}}}, "w.json");
+  ASSERT_FALSE(negative.ok());
+  EXPECT_EQ(negative.error().message, "w.json: /other_hand/per_white_key: must be >= 0");
+  auto defaults = load_fingering_model("default");
+  ASSERT_TRUE(defaults.ok()) << defaults.error().message;
+  EXPECT_GT(defaults->weights.other_hand_per_white_key, 0.0);
+}
+
 TEST(CostWeights, ShiftAndSpeedLimitKeysAreChecked) {
   const nlohmann::json ok = {{"hand_area",
                               {{"shift_time_s", 0.2},
