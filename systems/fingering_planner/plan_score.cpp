@@ -138,7 +138,8 @@ Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& mo
       if (assignment.hand[i] == side) indices.push_back(static_cast<int>(i));
     }
     const std::vector<PlanNote> notes = hand_input(score, model, options, indices, tonics, clamped);
-    // The right hand is planned first; the left hand keeps out of its way (other_hand_cost.hpp).
+    // The right hand is planned first alone; the left hand keeps out of its way
+    // (other_hand_cost.hpp).
     auto plan = plan_hand(notes, side, model, options,
                           side == music::Hand::left ? std::span<const HandCorridor>(out.right.corridors)
                                                     : std::span<const HandCorridor>());
@@ -148,6 +149,32 @@ Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& mo
     }
     to_score_terms(score, side, indices, *plan, plan->diagnostics.size());
     (side == music::Hand::right ? out.right : out.left) = std::move(*plan);
+  }
+  // Then the right hand again, beside the left hand: each hand keeps to its own side of the
+  // other (a right hand that would reach past the left thumb takes another fingering).
+  if (model.weights.other_hand_per_white_key > 0.0 && !out.left.corridors.empty() &&
+      !out.right_notes.empty()) {
+    std::vector<Diagnostic> read_already;  // the first pass reported the clamped notes
+    const std::vector<PlanNote> notes =
+        hand_input(score, model, options, out.right_notes, tonics, read_already);
+    auto plan = plan_hand(notes, music::Hand::right, model, options, out.left.corridors);
+    if (!plan) return Error{score.source + ": " + plan.error().message};
+    for (std::size_t k = 0; k < out.right_notes.size(); ++k) {
+      out.fingers[static_cast<std::size_t>(out.right_notes[k])] = plan->fingers[k];
+    }
+    to_score_terms(score, music::Hand::right, out.right_notes, *plan, plan->diagnostics.size());
+    out.right = std::move(*plan);
+    // And the left hand once more beside where the right hand now is, so that each hand's
+    // plan (and cost) is the one beside the other's final plan.
+    const std::vector<PlanNote> left_notes =
+        hand_input(score, model, options, out.left_notes, tonics, read_already);
+    auto left = plan_hand(left_notes, music::Hand::left, model, options, out.right.corridors);
+    if (!left) return Error{score.source + ": " + left.error().message};
+    for (std::size_t k = 0; k < out.left_notes.size(); ++k) {
+      out.fingers[static_cast<std::size_t>(out.left_notes[k])] = left->fingers[k];
+    }
+    to_score_terms(score, music::Hand::left, out.left_notes, *left, left->diagnostics.size());
+    out.left = std::move(*left);
   }
   add_clamped(out, clamped);
   return out;
@@ -195,10 +222,10 @@ Result<ScorePlan> replan_score_locally(const music::Score& score, const Fingerin
     }
     // The previous plan's diagnostics are in score terms; the hand-level re-plan keeps the
     // ones outside its window as they are.
+    // Each hand beside the other, as plan_score leaves them.
     auto replan = replan_hand_locally(
         notes, side, model, before, local_edits,
-        side == music::Hand::left ? std::span<const HandCorridor>(out.right.corridors)
-                                  : std::span<const HandCorridor>());
+        side == music::Hand::left ? out.right.corridors : out.left.corridors);
     if (!replan) return Error{score.source + ": " + replan.error().message};
     HandPlan& target = side == music::Hand::right ? out.right : out.left;
     target = std::move(replan->plan);

@@ -1,6 +1,11 @@
 #pragma once
 // Fingering for a whole Score: hands assigned (hand_assignment.hpp), each hand planned
 // (exact DP by default, or the paper's lookahead search), results mapped back to Score::notes.
+// With the weights' other_hand term (other_hand_cost.hpp) the hands are planned beside each
+// other: the right hand alone, the left beside it, then the right beside the left and the left
+// beside that right hand, so each hand's plan is priced against the other's final corridors.
+// A local re-plan keeps that: each hand beside the other's current plan, and the left hand
+// searched again where the right hand changed.
 //
 // Pins: with `pins_from_marks`, every Note::finger 1..5 in the file is a hard constraint
 // (the editor will pin the same way). Strip Note::finger first to plan from scratch.
