@@ -189,6 +189,64 @@ void keep_chords_in_reach(const music::Score& score, const FingeringModel& model
   }
 }
 
+// A key struck by both hands at once (a score doubles a note in both staves: Clara Schumann's
+// op. 1 no. 3 writes D3 in the right hand's staff under the left hand's D3) is one key: one hand
+// plays it, the one with more of its other keys at that moment within an octave (ties: the left
+// hand below middle C, the right from it up). Otherwise the other hand would fly to it and press
+// it through the first hand's fingers.
+void share_unisons(const music::Score& score, HandAssignment& out) {
+  std::vector<int> order;
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    if (out.hand[i] != music::Hand::unknown) order.push_back(static_cast<int>(i));
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const auto& x = score.notes[static_cast<std::size_t>(a)];
+    const auto& y = score.notes[static_cast<std::size_t>(b)];
+    return x.onset_ticks != y.onset_ticks ? x.onset_ticks < y.onset_ticks : x.pitch < y.pitch;
+  });
+  for (std::size_t start = 0; start < order.size();) {
+    std::size_t stop = start;
+    const auto onset = score.notes[static_cast<std::size_t>(order[start])].onset_ticks;
+    while (stop < order.size() &&
+           score.notes[static_cast<std::size_t>(order[stop])].onset_ticks == onset) {
+      ++stop;
+    }
+    for (std::size_t a = start; a < stop;) {
+      const int pitch = score.notes[static_cast<std::size_t>(order[a])].pitch;
+      std::size_t b = a;
+      bool right = false, left = false, stated = false;
+      while (b < stop && score.notes[static_cast<std::size_t>(order[b])].pitch == pitch) {
+        const auto i = static_cast<std::size_t>(order[b]);
+        right = right || out.hand[i] == music::Hand::right;
+        left = left || out.hand[i] == music::Hand::left;
+        stated = stated || out.source[i] == HandSource::file;
+        ++b;
+      }
+      if (right && left && !stated) {
+        int near_right = 0, near_left = 0;
+        for (std::size_t k = start; k < stop; ++k) {
+          const auto i = static_cast<std::size_t>(order[k]);
+          const int p = score.notes[i].pitch;
+          if (p == pitch || std::abs(p - pitch) > 12) continue;
+          (out.hand[i] == music::Hand::right ? near_right : near_left) += 1;
+        }
+        const music::Hand keeper = near_right != near_left
+                                       ? (near_right > near_left ? music::Hand::right : music::Hand::left)
+                                       : (pitch < 60 ? music::Hand::left : music::Hand::right);
+        for (std::size_t k = a; k < b; ++k) {
+          const auto i = static_cast<std::size_t>(order[k]);
+          if (out.hand[i] != keeper) {
+            out.hand[i] = keeper;
+            out.source[i] = HandSource::unison;
+          }
+        }
+      }
+      a = b;
+    }
+    start = stop;
+  }
+}
+
 }  // namespace
 
 HandAssignment assign_hands(const music::Score& score, const FingeringModel& model) {
@@ -219,6 +277,7 @@ HandAssignment assign_hands(const music::Score& score, const FingeringModel& mod
   }
   if (!automatic.empty()) split_automatically(score, std::move(automatic), model, out);
   keep_chords_in_reach(score, model, out);
+  share_unisons(score, out);
   return out;
 }
 

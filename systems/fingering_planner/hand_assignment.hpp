@@ -13,7 +13,8 @@
 // Percussion parts get Hand::unknown (not planned).
 // Then, but for hands a file states: notes struck together that one hand cannot span (wider than
 // its reach, or more than five) give their outer notes to the other hand where it is free to take
-// them without crossing (HandSource::reach).
+// them without crossing (HandSource::reach). Last, a key both hands strike at once is played by
+// one hand, the one with more of its keys near it then (HandSource::unison).
 
 #include <vector>
 
@@ -22,7 +23,7 @@
 
 namespace tutti::piano {
 
-enum class HandSource { file, part_name, staff, automatic, reach, none };
+enum class HandSource { file, part_name, staff, automatic, reach, unison, none };
 
 struct HandAssignment {
   std::vector<music::Hand> hand;   // per Score::notes entry

@@ -150,6 +150,32 @@ TEST(HandAssignment, ThirdPartyVoicesSplitWithoutPassingHeldKeys) {
   }
 }
 
+// A key both staves strike at once is one key: the hand with its other keys near it plays it.
+TEST(HandAssignment, AKeyBothHandsStrikeAtOnceIsPlayedByOne) {
+  PianoScore s;
+  s.add(62, 0, 480, 1);  // the right-hand staff doubles the left hand's D4
+  s.add(74, 0, 480, 1);
+  s.add(50, 0, 480, 2);
+  s.add(57, 0, 480, 2);
+  s.add(62, 0, 480, 2);
+  s.add(67, 480, 480, 1);  // and later strikes a G4 of its own
+  s.add(67, 960, 480, 1);  // both staves on G4, the left hand's other keys nearer
+  s.add(67, 960, 480, 2);
+  s.add(64, 960, 480, 2);
+  music::finalize_score(s.score);
+  const HandAssignment a = assign_hands(s.score, test::model("default"));
+  int d4_left = 0, g4_left = 0;
+  for (std::size_t i = 0; i < s.score.notes.size(); ++i) {
+    const music::Note& n = s.score.notes[i];
+    if (n.pitch == 62) d4_left += a.hand[i] == Hand::left;
+    if (n.pitch == 67 && n.onset_ticks == 960) g4_left += a.hand[i] == Hand::left;
+  }
+  EXPECT_EQ(d4_left, 2);  // near A3 and D3 of the left hand, one key of the right hand's
+  EXPECT_EQ(g4_left, 2);
+  EXPECT_EQ(s.hand_of(a, 67, 480), Hand::right);
+  EXPECT_EQ(s.hand_of(a, 74, 0), Hand::right);
+}
+
 // The third-party sonata: after the assignment, no chord struck by one hand is wider than the
 // hand spans where the other hand was free to help (the planner reports what is left).
 TEST(HandAssignment, ScarlattisWideRightHandChordsAreShared) {
