@@ -132,49 +132,38 @@ Result<ScorePlan> plan_score(const music::Score& score, const FingeringModel& mo
   std::vector<Diagnostic> clamped;
   const std::vector<int> tonics =
       options.tonic_from_key ? note_tonics(score) : std::vector<int>(score.notes.size(), -1);
+  std::vector<PlanNote> right_input, left_input;  // read once, planned up to twice
   for (music::Hand side : {music::Hand::right, music::Hand::left}) {
     std::vector<int>& indices = side == music::Hand::right ? out.right_notes : out.left_notes;
     for (std::size_t i = 0; i < score.notes.size(); ++i) {
       if (assignment.hand[i] == side) indices.push_back(static_cast<int>(i));
     }
-    const std::vector<PlanNote> notes = hand_input(score, model, options, indices, tonics, clamped);
-    // The right hand is planned first alone; the left hand keeps out of its way
-    // (other_hand_cost.hpp).
-    auto plan = plan_hand(notes, side, model, options,
-                          side == music::Hand::left ? std::span<const HandCorridor>(out.right.corridors)
-                                                    : std::span<const HandCorridor>());
+    (side == music::Hand::right ? right_input : left_input) =
+        hand_input(score, model, options, indices, tonics, clamped);
+  }
+  // Plans one hand beside the other hand's corridors (other_hand_cost.hpp; empty = alone).
+  auto plan_side = [&](music::Hand side, std::span<const HandCorridor> other) -> Status {
+    const bool right = side == music::Hand::right;
+    const std::vector<int>& indices = right ? out.right_notes : out.left_notes;
+    auto plan = plan_hand(right ? right_input : left_input, side, model, options, other);
     if (!plan) return Error{score.source + ": " + plan.error().message};
     for (std::size_t k = 0; k < indices.size(); ++k) {
       out.fingers[static_cast<std::size_t>(indices[k])] = plan->fingers[k];
     }
     to_score_terms(score, side, indices, *plan, plan->diagnostics.size());
-    (side == music::Hand::right ? out.right : out.left) = std::move(*plan);
-  }
-  // Then the right hand again, beside the left hand: each hand keeps to its own side of the
-  // other (a right hand that would reach past the left thumb takes another fingering).
+    (right ? out.right : out.left) = std::move(*plan);
+    return Status::success();
+  };
+  // The right hand first, alone; the left hand beside it. Then the right hand again beside the
+  // left (a right hand that would reach past the left thumb takes another fingering) and the
+  // left once more beside where the right hand now is, so each hand's plan and cost are the
+  // ones beside the other's final plan.
+  if (Status s = plan_side(music::Hand::right, {}); !s) return s.error();
+  if (Status s = plan_side(music::Hand::left, out.right.corridors); !s) return s.error();
   if (model.weights.other_hand_per_white_key > 0.0 && !out.left.corridors.empty() &&
       !out.right_notes.empty()) {
-    std::vector<Diagnostic> read_already;  // the first pass reported the clamped notes
-    const std::vector<PlanNote> notes =
-        hand_input(score, model, options, out.right_notes, tonics, read_already);
-    auto plan = plan_hand(notes, music::Hand::right, model, options, out.left.corridors);
-    if (!plan) return Error{score.source + ": " + plan.error().message};
-    for (std::size_t k = 0; k < out.right_notes.size(); ++k) {
-      out.fingers[static_cast<std::size_t>(out.right_notes[k])] = plan->fingers[k];
-    }
-    to_score_terms(score, music::Hand::right, out.right_notes, *plan, plan->diagnostics.size());
-    out.right = std::move(*plan);
-    // And the left hand once more beside where the right hand now is, so that each hand's
-    // plan (and cost) is the one beside the other's final plan.
-    const std::vector<PlanNote> left_notes =
-        hand_input(score, model, options, out.left_notes, tonics, read_already);
-    auto left = plan_hand(left_notes, music::Hand::left, model, options, out.right.corridors);
-    if (!left) return Error{score.source + ": " + left.error().message};
-    for (std::size_t k = 0; k < out.left_notes.size(); ++k) {
-      out.fingers[static_cast<std::size_t>(out.left_notes[k])] = left->fingers[k];
-    }
-    to_score_terms(score, music::Hand::left, out.left_notes, *left, left->diagnostics.size());
-    out.left = std::move(*left);
+    if (Status s = plan_side(music::Hand::right, out.left.corridors); !s) return s.error();
+    if (Status s = plan_side(music::Hand::left, out.right.corridors); !s) return s.error();
   }
   add_clamped(out, clamped);
   return out;
