@@ -95,6 +95,27 @@ double segment_distance(const glm::vec3& p1, const glm::vec3& q1, const glm::vec
   return static_cast<double>(glm::distance(p1 + d1 * s, p2 + d2 * t));
 }
 
+// How far inside the box [lo, hi]'s outline across x and y the segment [a, b] passes, where it
+// crosses the box (slab clipping); 0 when it misses the box.
+double edge_into_box(const glm::vec3& a, const glm::vec3& b, const glm::vec3& lo, const glm::vec3& hi) {
+  float enter = 0.0f, leave = 1.0f;
+  const glm::vec3 d = b - a;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::abs(d[axis]) < 1e-9f) {
+      if (a[axis] < lo[axis] || a[axis] > hi[axis]) return 0.0;
+      continue;
+    }
+    float t0 = (lo[axis] - a[axis]) / d[axis], t1 = (hi[axis] - a[axis]) / d[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+    if (enter > leave) return 0.0;
+  }
+  const glm::vec3 mid = a + d * (0.5f * (enter + leave));
+  return static_cast<double>(
+      std::min({mid.x - lo.x, hi.x - mid.x, mid.y - lo.y, hi.y - mid.y}));
+}
+
 // A finger's bone or the palm across the knuckles, as a capsule, named for reports.
 struct HandCapsule {
   glm::vec3 a, b;
@@ -229,6 +250,57 @@ class Checker {
              deepest_arm == nullptr
                  ? std::string()
                  : asset.nodes[deepest_node].name + " in the " + deepest_arm->name);
+  }
+
+  // How far the instrument passes through its music stand's desk (a slide dipped too far goes
+  // through the music): any edge of the instrument's triangles crossing the desk's panel, measured
+  // inward from the panel's nearest side (0 = clear). The panel is the desk mesh's outline with
+  // its face at z = 0 of the desk's frame, the thickness behind it
+  // (content/generator/props.hpp); the ledge in front of it is left out.
+  void instrument_clear_of_desk(const std::string& who, const stage::PlacedModel& horn,
+                                const stage::PlacedModel& stand) {
+    const model::ModelAsset& stand_asset = *stand.asset;
+    const int desk = stand_asset.find_node("desk");
+    if (desk < 0) return;
+    const model::Node& desk_node = stand_asset.nodes[static_cast<std::size_t>(desk)];
+    if (desk_node.mesh < 0) return;
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    for (const model::Primitive& primitive :
+         stand_asset.meshes[static_cast<std::size_t>(desk_node.mesh)].primitives) {
+      for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
+        const glm::vec3& p = stand_asset.vertices[primitive.first_vertex + v].position;
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+    }
+    hi.z = std::min(hi.z, 0.0f);
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) return;
+    world_of(stand, stand_world_);
+    const glm::mat4 into_desk = glm::inverse(stand_world_[static_cast<std::size_t>(desk)]);
+    double depth = 0.0;
+    std::size_t deepest_node = 0;
+    const model::ModelAsset& asset = *horn.asset;
+    for (std::size_t n = 0; n < asset.nodes.size(); ++n) {
+      const model::Node& node = asset.nodes[n];
+      if (node.mesh < 0 || node.skin >= 0) continue;
+      const glm::mat4 to_desk = into_desk * horn_world_[n];
+      for (const model::Primitive& primitive : asset.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
+        local_points_.resize(primitive.vertex_count);
+        for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
+          local_points_[v] = to_desk * glm::vec4(asset.vertices[primitive.first_vertex + v].position, 1.0f);
+        }
+        for (std::uint32_t i = 0; i + 2 < primitive.index_count; i += 3) {
+          const std::uint32_t* corner = &asset.indices[primitive.first_index + i];
+          for (int e = 0; e < 3; ++e) {
+            const double inward = edge_into_box(local_points_[corner[e]],
+                                                local_points_[corner[(e + 1) % 3]], lo, hi);
+            if (inward > depth) depth = inward, deepest_node = n;
+          }
+        }
+      }
+    }
+    measure(who + ": instrument through the music stand's desk (depth; 0 = clear)", "mm", 0.0)
+        .add(depth * 1000.0, t_s_, depth > 0.0 ? asset.nodes[deepest_node].name : std::string());
   }
 
   // A hand held in the bell (the horn's right hand: its palm_at node inside the bell): how far its
@@ -386,6 +458,9 @@ class Checker {
     }
     torso_clearance(who, rig.body_nodes.hips, rig.body_nodes.neck, hands);
     arms_clear_of_instrument(who, *horn, rig.body_nodes);
+    if (const auto* stand = world.try_get<stage::PlacedModel>(rig.stand)) {
+      instrument_clear_of_desk(who, *horn, *stand);
+    }
     hand_in_bell(who, *horn, rig);
     finger_limits(who, body_asset, body->pose, rig.body_nodes);
   }
@@ -631,7 +706,8 @@ class Checker {
  private:
   stage::Stage& stage_;
   PoseReport& report_;
-  std::vector<glm::mat4> horn_world_, body_world_, hand_world_;
+  std::vector<glm::mat4> horn_world_, body_world_, hand_world_, stand_world_;
+  std::vector<glm::vec3> local_points_;
   std::vector<glm::vec3> head_tips_;
   stage::FingerJointLimits limits_;
   std::vector<std::pair<ecs::Entity, const components::Note*>> notes_;

@@ -13,6 +13,7 @@
 #include <tutti/brass_motion/breath_params.hpp>
 #include <tutti/brass_motion/breath_plan.hpp>
 #include <tutti/brass_motion/plan_brass_motion.hpp>
+#include <tutti/brass_motion/plan_brass_player.hpp>
 #include <tutti/fingering_planner/brass_lines.hpp>
 #include <tutti/fingering_planner/brass_planner.hpp>
 #include <tutti/music/load_score.hpp>
@@ -236,7 +237,8 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
       if (!line) return fail(line.error());
       PlayerReport report;
       report.line = std::move(*line);
-      report.summary = brass::plan_line(report.line, *weights, &*score);
+      report.summary =
+          brass::plan_line_around_breaths(report.line, *score, *weights, *breath_params);
       report.breaths = brass::plan_breaths(report.line, *score, *breath_params);
       players.push_back(std::move(report));
     }

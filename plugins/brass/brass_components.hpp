@@ -35,6 +35,7 @@ struct BrassRig {
   ecs::Entity instrument = ecs::Entity::null;  // components::Instrument, Valve / Slide
   ecs::Entity horn = ecs::Entity::null;        // PlacedModel
   ecs::Entity body = ecs::Entity::null;        // PlacedModel; null until the rig is generated
+  ecs::Entity stand = ecs::Entity::null;       // PlacedModel: the music stand; null without one
   bool trombone = false;
   bool seated = false;
   stage::BodyNodes body_nodes;  // of the model posed: tutti's performer, or the stand-in

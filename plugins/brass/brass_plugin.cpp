@@ -139,10 +139,12 @@ Status bind_player(stage::StageBuilder& builder, const scene::Performer& perform
     }
   }
   if (performer.music_stand) {
-    // The stand 0.75 m in front of the player, desk toward them.
-    const glm::mat4 stand = glm::rotate(glm::translate(rig.placement, glm::vec3(0, 0, 0.75f)),
+    // The stand in front of the player (the hold's music_stand), desk toward them; the player's
+    // left is +X (they face +Z).
+    const glm::mat4 stand = glm::rotate(
+        glm::translate(rig.placement, glm::vec3(rig.hold.stand_left_m, 0, rig.hold.stand_forward_m)),
                                         glm::radians(180.0f), glm::vec3(0, 1, 0));
-    builder.place(stand_model, stand);
+    rig.stand = builder.place(stand_model, stand);
   }
   if (rig.seated) {
     builder.place(chair_model, glm::translate(rig.placement, glm::vec3(0, 0, -0.12f)));

@@ -121,7 +121,7 @@ Result<Hold> load_hold(const std::filesystem::path& file) {
   const content::JsonReader r(file.filename().string());
   if (auto ok = r.check_keys(*doc, "",
                              {"description", "carriage", "elbows", "left_hand", "right_hand",
-                              "rest"});
+                              "rest", "music_stand"});
       !ok) {
     return ok.error();
   }
@@ -166,6 +166,16 @@ Result<Hold> load_hold(const std::filesystem::path& file) {
     hold.rest_below_lips_m = static_cast<float>(below);
     hold.rest_forward_m = static_cast<float>(forward);
     hold.rest_bell_tilt_rad = static_cast<float>(tilt) * kDegree;
+  }
+  if (doc->contains("music_stand")) {
+    double forward = hold.stand_forward_m, left = hold.stand_left_m;
+    const content::NumberField stand[] = {{"forward_m", &forward, 0.3, 2.0},
+                                          {"left_m", &left, -1.0, 1.0}};
+    if (auto ok = r.read_number_fields(doc->at("music_stand"), "/music_stand", stand, false); !ok) {
+      return ok.error();
+    }
+    hold.stand_forward_m = static_cast<float>(forward);
+    hold.stand_left_m = static_cast<float>(left);
   }
   for (std::size_t side = 0; side < 2; ++side) {
     const std::string key = side == 0 ? "left_hand" : "right_hand";

@@ -53,6 +53,10 @@ struct Hold {
   float rest_below_lips_m = 0.0f;
   float rest_forward_m = 0.0f;
   float rest_bell_tilt_rad = 0.0f;
+  // Where the player's music stand stands, from the feet: forward, and to the player's left (a
+  // trombonist reads beside the slide, which would otherwise pass through the desk).
+  float stand_forward_m = 0.75f;
+  float stand_left_m = 0.0f;
   std::array<HandHold, 2> hands;             // left, right
 
   bool fingertips_place(int hand) const {

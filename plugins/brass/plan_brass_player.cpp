@@ -68,13 +68,14 @@ Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat
     return Error{scene.source + ": performer \"" + performer.name +
                  "\": " + extracted.error().message};
   }
-  const brass::BrassPlanSummary summary = brass::plan_line(*extracted, data.weights, &score);
-  for (const brass::BrassDiagnostic& d : summary.diagnostics) {
-    plan.plan_notes.push_back(performer.name + ": " + d.message);
-  }
   brass::BreathMarks marks;
   marks.add_s = performer.breaths.add_s;
   marks.remove_s = performer.breaths.remove_s;
+  const brass::BrassPlanSummary summary =
+      brass::plan_line_around_breaths(*extracted, score, data.weights, data.breath, marks);
+  for (const brass::BrassDiagnostic& d : summary.diagnostics) {
+    plan.plan_notes.push_back(performer.name + ": " + d.message);
+  }
   plan.player = std::make_shared<const brass::BrassPlayerMotion>(brass::plan_brass_player(
       *extracted, score, data.motion, data.breath, data.weights.change, marks));
   plan.line = std::make_shared<const brass::BrassLine>(std::move(*extracted));

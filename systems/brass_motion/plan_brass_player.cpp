@@ -19,6 +19,21 @@ BrassLine as_played(const BrassLine& line, const BreathPlan& breaths) {
   return played;
 }
 
+BrassPlanSummary plan_line_around_breaths(BrassLine& line, const music::Score& score,
+                                          const PlannerWeights& weights, const BreathParams& breath,
+                                          const BreathMarks& marks) {
+  BrassLine played = as_played(line, plan_breaths(line, score, breath, marks));
+  BrassPlanSummary summary = plan_line(played, weights, &score);
+  for (std::size_t i = 0; i < line.notes.size(); ++i) {
+    LineNote& note = line.notes[i];
+    const double offset_s = note.offset_s, offset_beats = note.offset_beats;
+    note = played.notes[i];
+    note.offset_s = offset_s;
+    note.offset_beats = offset_beats;
+  }
+  return summary;
+}
+
 BrassPlayerMotion plan_brass_player(const BrassLine& line, const music::Score& score,
                                     const BrassMotionParams& motion, const BreathParams& breath,
                                     const ChangeWindow& window, const BreathMarks& marks) {

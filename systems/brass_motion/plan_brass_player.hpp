@@ -7,12 +7,21 @@
 #include <tutti/brass_motion/brass_motion_params.hpp>
 #include <tutti/brass_motion/brass_pose_system.hpp>
 #include <tutti/brass_motion/breath_params.hpp>
+#include <tutti/fingering_planner/brass_planner.hpp>
 #include <tutti/music/score.hpp>
 
 namespace tutti::brass {
 
 // The line with the breath plan's shortened notes applied (offsets moved earlier).
 BrassLine as_played(const BrassLine& line, const BreathPlan& breaths);
+
+// Chooses the line's fingerings (plan_line) on the line as it will be played: the breaths are
+// planned first (they do not depend on the fingering), so a note shortened for a catch-breath
+// gives the slide the time it frees (a trombone's F3 before a breath can take a far alternate
+// and still reach first position for the next entry). Offsets in `line` are left as written.
+BrassPlanSummary plan_line_around_breaths(BrassLine& line, const music::Score& score,
+                                          const PlannerWeights& weights, const BreathParams& breath,
+                                          const BreathMarks& marks = {});
 
 // `line` must have its fingerings (plan_line); `window` is the planner's change window; `marks`
 // are the editor's breath marks (plan_breaths).

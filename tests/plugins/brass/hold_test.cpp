@@ -33,6 +33,12 @@ TEST(Hold, TheTromboneIsHeldByItsGrips) {
   ASSERT_TRUE(hold) << hold.error().message;
   EXPECT_EQ(hold->hands[0].palm_at, "grip_left");
   EXPECT_EQ(hold->hands[1].palm_at, "grip_right");
+  // The music stand beside the slide, to the player's left; the trumpet's straight ahead.
+  EXPECT_GT(hold->stand_left_m, 0.2f);
+  auto trumpet = load_hold(kHolds / "trumpet.json");
+  ASSERT_TRUE(trumpet) << trumpet.error().message;
+  EXPECT_EQ(trumpet->stand_left_m, 0.0f);
+  EXPECT_EQ(trumpet->stand_forward_m, 0.75f);
 }
 
 // The horn's right hand goes into the bell with its thumb turned in; the trombone's left elbow has
@@ -79,6 +85,9 @@ TEST(Hold, BrokenFilesAreRefusedWithTheFileAndThePath) {
       {"elbow.json", "{" + carriage + left + R"(, "right_hand": {"palm_at": "grip_right",
           "finger_curl_deg": [1, 2, 3], "elbow": {"down": "low"}}})",
        "/right_hand/elbow"},
+      {"stand.json", "{" + carriage + left + R"(, "right_hand": {"palm_at": "grip_right",
+          "finger_curl_deg": [1, 2, 3]}, "music_stand": {"forward_m": 0.1}})",
+       "/music_stand/forward_m"},
       {"tilt.json", R"({"carriage": {"standing": {"bell_tilt_deg": "down"}, "seated": {}},
           "elbows": {"down": 1, "out": 0.8, "back": 0.3},)" + left +
                         R"(, "right_hand": {"palm_at": "grip_right", "finger_curl_deg": [1, 2, 3]}})",

@@ -264,5 +264,44 @@ TEST(BrassPlayer, CatchBreathsSilenceTheShortenedNotes) {
   }
 }
 
+// The bundled quartet's second trombone (bar 2): G3 in 4th position, F3, a catch-breath, B-flat2
+// in 1st. The F3 in 1st position is 277 mm away with 100 ms to move: late. Planned on the line
+// as played, the breath frees the time after the F3, so the F3 takes an alternate near 4th
+// position and the slide still reaches the B-flat2: no move is late.
+TEST(BrassPlayer, TheFingeringIsPlannedAroundTheBreaths) {
+  auto score = music::load_score(std::string(TUTTI_CONTENT_DIR) + "/music/quartet.musicxml");
+  ASSERT_TRUE(score.ok()) << score.error().message;
+  auto breath = load_breath_params();
+  ASSERT_TRUE(breath.ok()) << breath.error().message;
+  const Instrument& trombone = instrument("trombone_tenor");
+  int part = -1;
+  for (std::size_t p = 0; p < score->parts.size(); ++p) {
+    if (score->parts[p].name == "Trombone 2") part = static_cast<int>(p);
+  }
+  ASSERT_GE(part, 0);
+  auto written = extract_line(*score, part, 0, trombone);
+  ASSERT_TRUE(written.ok());
+  BrassLine alone = *written;
+  const BrassPlanSummary before = plan_line(alone, setup().weights, &*score);
+  BrassLine around = *written;
+  const BrassPlanSummary after =
+      plan_line_around_breaths(around, *score, setup().weights, *breath);
+  EXPECT_GT(before.infeasible_moves, 0);
+  EXPECT_EQ(after.infeasible_moves, 0);
+  for (const BrassDiagnostic& d : after.diagnostics) {
+    EXPECT_NE(d.kind, BrassIssue::slide_too_slow) << d.message;
+  }
+  // The written offsets are kept: the line is the score's, the breath only shortens it as played.
+  ASSERT_EQ(around.notes.size(), written->notes.size());
+  for (std::size_t i = 0; i < around.notes.size(); ++i) {
+    EXPECT_EQ(around.notes[i].offset_s, written->notes[i].offset_s);
+  }
+  // And the motion on the line as played has the slide at every onset.
+  const BrassPlayerMotion player =
+      plan_brass_player(around, *score, setup().params, *breath, setup().weights.change);
+  EXPECT_EQ(player.motion.late_slide_moves, 0);
+  expect_fingered_at_onsets(as_played(around, player.breaths), player.motion);
+}
+
 }  // namespace
 }  // namespace tutti::brass
