@@ -45,7 +45,7 @@ glm::quat rotation_between(const glm::vec3& from, const glm::vec3& to) {
 
 void solve_two_bone_ik(const model::ModelAsset& asset, const TwoBoneChain& chain,
                        const glm::vec3& target, const glm::vec3& pole, const glm::mat4& root,
-                       model::ModelPose& pose, std::span<glm::mat4> world) {
+                       model::ModelPose& pose, std::span<glm::mat4> world, float soft_m) {
   if (chain.upper < 0 || chain.lower < 0 || chain.end < 0) return;
   const auto u = static_cast<std::size_t>(chain.upper);
   const auto l = static_cast<std::size_t>(chain.lower);
@@ -59,8 +59,12 @@ void solve_two_bone_ik(const model::ModelAsset& asset, const TwoBoneChain& chain
   const float reach = glm::length(to_target);
   if (upper_length < 1e-5f || lower_length < 1e-5f || reach < 1e-5f) return;
 
-  const float d = std::clamp(reach, std::abs(upper_length - lower_length) + 1e-4f,
-                             upper_length + lower_length - 1e-4f);
+  const float full = upper_length + lower_length;
+  float eased = reach;
+  if (soft_m > 0.0f && reach > full - soft_m) {
+    eased = full - soft_m * std::exp(-(reach - (full - soft_m)) / soft_m);
+  }
+  const float d = std::clamp(eased, std::abs(upper_length - lower_length) + 1e-4f, full - 1e-4f);
   const glm::vec3 axis = to_target / reach;
   glm::vec3 bend = pole - glm::dot(pole, axis) * axis;
   if (glm::dot(bend, bend) < 1e-10f) {

@@ -20,10 +20,13 @@ struct TwoBoneChain {
 // Rewrites pose.local[upper].rotation and pose.local[lower].rotation. `world` must hold the
 // world matrices of the current pose (compute_world_matrices); it is updated for the whole model
 // before returning. A target out of reach straightens the arm toward it. Nodes missing (-1) or
-// degenerate chains leave the pose as it is.
+// degenerate chains leave the pose as it is. `soft_m` > 0: the last soft_m of the arm's reach is
+// eased (soft IK): the end stops short of a target near or past full stretch by up to soft_m / e
+// at full stretch, and the elbow never whips straight however the target moves there (at full
+// stretch an elbow's angle changes without bound for a small move of the hand).
 void solve_two_bone_ik(const model::ModelAsset& asset, const TwoBoneChain& chain,
                        const glm::vec3& target, const glm::vec3& pole, const glm::mat4& root,
-                       model::ModelPose& pose, std::span<glm::mat4> world);
+                       model::ModelPose& pose, std::span<glm::mat4> world, float soft_m = 0.0f);
 
 // The rotation taking unit vector `from` onto unit vector `to` (shortest arc).
 glm::quat rotation_between(const glm::vec3& from, const glm::vec3& to);

@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <tutti/brass/brass_components.hpp>
+#include <tutti/brass_motion/brass_pose_system.hpp>
 #include <tutti/components/body_motion.hpp>
 #include <tutti/components/breath.hpp>
 #include <tutti/components/mouth.hpp>
@@ -11,6 +12,7 @@
 #include <tutti/components/valve.hpp>
 #include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/fingertip_reach.hpp>
+#include <tutti/spline_motion/plateau_envelope.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::brass_family {
@@ -20,6 +22,9 @@ using stage::origin;
 using stage::PlacedModel;
 
 constexpr float kPi = 3.14159265f;
+// The arms' eased last stretch (two_bone_ik.hpp): a trombonist's slide arm at the far positions
+// stops up to 6 mm shorter, and its elbow straightens smoothly, not in a whip.
+constexpr float kArmSoftReachM = 0.015f;
 
 double min_jerk(double u) {
   u = std::clamp(u, 0.0, 1.0);
@@ -57,15 +62,37 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   // hands with it, and a trombonist closes the slide.
   const float raised =
       rig.hold.has_rest ? static_cast<float>(raised_at(rig.phrases, t_s)) : 1.0f;
+  // The body is set for the slide's planned reach (plan_slide_reach: never short of the slide,
+  // eased), the hand then follows the slide itself.
+  double slide_mm = 0.0;
+  double reach_mm = 0.0;
   if (const auto* slide = world.try_get<components::Slide>(rig.instrument);
       slide != nullptr && rig.slide >= 0) {
-    horn->pose.local[static_cast<std::size_t>(rig.slide)].translation +=
-        rig.slide_axis * static_cast<float>(raised * slide->extension_mm / 1000.0);
+    slide_mm = slide->extension_mm;
+    reach_mm = slide_mm;
+    if (const auto* handle = world.try_get<brass::BrassPlayerMotionHandle>(performer);
+        handle != nullptr && handle->motion != nullptr) {
+      reach_mm = std::max(reach_mm, tutti::motion::evaluate_plateau_envelope(
+                                        handle->motion->motion.slide_reach, t_s));
+    }
   }
-
   std::vector<glm::mat4>& horn_world = rig.scratch_horn_world;
   horn_world.resize(horn_asset.nodes.size());
-  model::compute_world_matrices(horn_asset, horn->pose, rig.horn_correction, horn_world);
+  const glm::vec3 slide_closed =
+      rig.slide >= 0 ? horn->pose.local[static_cast<std::size_t>(rig.slide)].translation
+                     : glm::vec3(0.0f);
+  const auto set_slide = [&](double extension_mm) {
+    if (rig.slide >= 0) {
+      horn->pose.local[static_cast<std::size_t>(rig.slide)].translation =
+          slide_closed + rig.slide_axis * static_cast<float>(raised * extension_mm / 1000.0);
+    }
+    model::compute_world_matrices(horn_asset, horn->pose, rig.horn_correction, horn_world);
+  };
+  // The body is set for a slide a little farther out than planned, so the arm keeps its elbow
+  // bent: at full stretch the elbow's plane turns wildly for a small move of the hand.
+  constexpr double kReachSlackMm = 30.0;
+  const bool slides = rig.slide >= 0 && world.try_get<components::Slide>(rig.instrument) != nullptr;
+  set_slide(slides ? reach_mm + kReachSlackMm : 0.0);
   const glm::vec3 mouthpiece = rig.mouthpiece >= 0
                                    ? origin(horn_world[static_cast<std::size_t>(rig.mouthpiece)])
                                    : glm::vec3(0.0f);
@@ -184,7 +211,8 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
             glm::normalize(stage::rotation_of(grip_world) * glm::inverse(grip_rest.rotation));
         wrist = palm_goal - hand_rotation * (body_scale * grip_rest.translation);
       }
-      stage::solve_two_bone_ik(body_asset, arm, wrist, pole, body->root, body->pose, body_world);
+      stage::solve_two_bone_ik(body_asset, arm, wrist, pole, body->root, body->pose, body_world,
+                               kArmSoftReachM);
       const int forearm = body_asset.nodes[static_cast<std::size_t>(arm.end)].parent;
       const glm::quat parent_rotation =
           forearm >= 0 ? stage::rotation_of(body_world[static_cast<std::size_t>(forearm)])
@@ -247,6 +275,12 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
     }
     hang_instrument();
     short_by = place_hands();
+  }
+  if (slides) {
+    // The slide nearer than the body is set for: the turn and dip stay, the hands follow it.
+    set_slide(slide_mm);
+    hang_instrument();
+    place_hands();
   }
 }
 

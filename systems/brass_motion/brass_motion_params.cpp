@@ -21,6 +21,8 @@ Result<BrassMotionParams> load_brass_motion_params(const std::string& file) {
       {"valve_hold_rest_s", &p.valve_hold_rest_s, 0.0, 10.0},
       {"slide_comfortable_s", &p.slide_comfortable_s, 0.0, 2.0},
       {"slide_min_move_s", &p.slide_min_move_s, 0.001, 1.0},
+      {"slide_reach_ramp_s", &p.slide_reach_ramp_s, 0.01, 2.0},
+      {"slide_reach_bridge_s", &p.slide_reach_bridge_s, 0.0, 5.0},
       {"mouth_rest_tension", &p.mouth_rest_tension, 0.0, 1.0},
       {"mouth_low_tension", &p.mouth_low_tension, 0.0, 1.0},
       {"mouth_tension_exponent", &p.mouth_tension_exponent, 0.1, 10.0},

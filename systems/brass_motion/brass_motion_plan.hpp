@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <tutti/brass_model/instrument.hpp>
+#include <tutti/spline_motion/plateau_envelope.hpp>
 
 namespace tutti::brass {
 
@@ -48,6 +49,9 @@ struct BrassMotionPlan {
   float slide_start_mm = 0.0f;  // before the first move
   float slide_start_position = 1.0f;
   std::vector<SlideMove> slide;      // in time order, not overlapping
+  // The slide's extension (mm) the body is set for at each moment: never less than the slide's
+  // own, eased (plan_brass_motion.cpp, plan_slide_reach).
+  tutti::motion::PlateauEnvelope slide_reach;
   float rest_tension = 0.0f;         // before the first ramp
   std::vector<TensionRamp> tension;  // in time order, not overlapping
   float corner_pull_from = 0.45f;

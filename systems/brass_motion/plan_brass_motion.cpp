@@ -101,6 +101,34 @@ void plan_slide(const std::vector<Played>& played, const Instrument& instrument,
   }
 }
 
+// The slide's extension as the body sets itself for it (plateau_envelope.hpp): at least as far as
+// the slide is out at every moment (each hold from the move that brings it there to the move that
+// leaves, each move at its farther end), eased in before and out after over slide_reach_ramp_s.
+// The trombonist turns the chest and dips the slide for the far positions by this, not by the
+// slide's own extension, so a quick move between far positions does not swing the body with it.
+void plan_slide_reach(const std::vector<Played>& played, const BrassMotionParams& p,
+                      BrassMotionPlan& plan) {
+  if (!plan.has_slide || played.empty()) return;
+  // Before the first move and after the last, the slide stays out while the phrase's notes last
+  // and the instrument comes down (raised over about 2.6 s before, lowered over 1.6 s after).
+  constexpr double kBeforeFirstS = 3.0, kAfterLastS = 2.0;
+  std::vector<tutti::motion::EnvelopeNeed> needs;
+  needs.reserve(2 * plan.slide.size() + 1);
+  double held_from = played.front().note->onset_s - kBeforeFirstS;
+  double held_mm = plan.slide_start_mm;
+  for (const SlideMove& m : plan.slide) {
+    needs.push_back({held_from, m.start_s, held_mm});
+    needs.push_back({m.start_s, m.end_s, std::max<double>(m.from_mm, m.to_mm)});
+    held_from = m.end_s;
+    held_mm = m.to_mm;
+  }
+  double last_offset = held_from;
+  for (const Played& n : played) last_offset = std::max(last_offset, n.note->offset_s);
+  needs.push_back({held_from, last_offset + kAfterLastS, held_mm});
+  plan.slide_reach = tutti::motion::plan_plateau_envelope(std::move(needs), p.slide_reach_ramp_s,
+                                                          p.slide_reach_bridge_s);
+}
+
 void plan_mouth(const std::vector<Played>& played, const Instrument& instrument,
                 const BrassMotionParams& p, BrassMotionPlan& plan) {
   plan.rest_tension = static_cast<float>(p.mouth_rest_tension);
@@ -150,6 +178,7 @@ BrassMotionPlan plan_brass_motion(const BrassLine& line, const BrassMotionParams
   const std::vector<Played> played = played_notes(line);
   plan_valves(played, params, window, plan);
   plan_slide(played, instrument, params, window, plan);
+  plan_slide_reach(played, params, plan);
   plan_mouth(played, instrument, params, plan);
   return plan;
 }

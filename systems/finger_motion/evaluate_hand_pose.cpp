@@ -147,7 +147,7 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   }
   out.press_depth = depth;
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
-  const double hand_in = evaluate_reach_in(hand.reach_in, t_s);
+  const double hand_in = tutti::motion::evaluate_plateau_envelope(hand.reach_in, t_s);
   out.tip_x_mm = x;
   out.tip_y_mm = g.root_y_mm + hand_in + stroke.reach_y_mm;
   out.tip_z_mm = z + g.pad_drop_mm;
@@ -162,7 +162,8 @@ void evaluate_hand_pose(const FingerMotionPlan& plan, const motion::HandPath& pa
   const motion::HandState state = motion::evaluate(path, t_s);
   out.x_mm = state.x_mm;
   out.v_x_mm_per_s = state.v_mm_per_s;
-  out.y_mm = plan.geometry[2].root_y_mm + evaluate_reach_in(plan.hand(side).reach_in, t_s);
+  out.y_mm = plan.geometry[2].root_y_mm +
+             tutti::motion::evaluate_plateau_envelope(plan.hand(side).reach_in, t_s);
   out.z_mm = plan.geometry[2].root_z_mm;
   for (int finger = 1; finger <= 5; ++finger) {
     evaluate_finger_pose(plan, side, finger, state.x_mm, t_s,

@@ -54,7 +54,7 @@ struct StrokeTiming {
   double shape_s = 0.08;               // joints 2-3 reshape over this long before the stroke (> 0)
   double release_s = 0.05;             // key rise after the offset (> 0)
   double relax_time_constant_s = 0.2;  // exponential relax toward neutral after a release (> 0)
-  // The hand's move in toward the fallboard for black keys (hand_reach_in.hpp): its longest ease
+  // The hand's move in toward the fallboard for black keys (spline_motion/plateau_envelope.hpp): its longest ease
   // (> 0), and the dip between two needs it bridges instead of going out and back (>= 0).
   double reach_in_s = 0.15;
   double reach_in_bridge_s = 0.4;

@@ -12,7 +12,7 @@
 #include <tutti/components/hand_side.hpp>
 #include <tutti/finger_motion/finger_chain.hpp>
 #include <tutti/finger_motion/finger_motion_params.hpp>
-#include <tutti/finger_motion/hand_reach_in.hpp>
+#include <tutti/spline_motion/plateau_envelope.hpp>
 
 namespace tutti::finger_motion {
 
@@ -64,7 +64,7 @@ struct HandFingerPlan {
   std::array<std::vector<double>, 5> onsets_s{};
   // How far in toward the fallboard the hand sits beyond its rest line over time (mm), so the
   // short fingers reach the black keys they strike.
-  HandReachIn reach_in;
+  tutti::motion::PlateauEnvelope reach_in;
 };
 
 struct FingerMotionPlan {

@@ -23,7 +23,8 @@ void finger_pose_system(ecs::World& world, const ecs::FrameTime& frame) {
     hand.x_mm = state.x_mm;
     hand.v_x_mm_per_s = state.v_mm_per_s;
     hand.y_mm = motion->fingers.geometry[2].root_y_mm +
-                evaluate_reach_in(motion->fingers.hand(hand.side).reach_in, t_s);
+                tutti::motion::evaluate_plateau_envelope(
+                    motion->fingers.hand(hand.side).reach_in, t_s);
     hand.z_mm = motion->fingers.geometry[2].root_z_mm;
   });
   world.view<components::Finger>().each([&](components::Finger& finger) {

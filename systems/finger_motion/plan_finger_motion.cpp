@@ -125,11 +125,15 @@ double lands_y_mm(const FingerMotionPlan& plan, std::size_t f, const KeyContact&
   return g.root_y_mm + solve_stroke(shape, g.root_z_mm - (c.bottom_z_mm + g.pad_drop_mm)).reach_y_mm;
 }
 
-// Each contact needs the hand in far enough that the finger's pad, bent for its key and at the
-// key bottom, lands on the key: press_in behind its front edge (a black key's begins
-// black_front_y_mm in).
-HandReachIn plan_hand_reach_in(const HandFingerPlan& side, const FingerMotionPlan& plan) {
-  std::vector<ReachInNeed> needs;
+// How far the hand sits in toward the fallboard, beyond its rest line, over time. A short finger
+// (the little finger, the thumb) cannot reach a black key from where it strikes the white keys:
+// the black keys begin about 55 mm behind the white keys' front edge. Pianists move the whole
+// hand in while such a key is struck and held, and back out when it is let go. Each contact
+// needs the hand in far enough that the finger's pad, bent for its key and at the key bottom,
+// lands on the key: press_in behind its front edge (a black key's begins black_front_y_mm in).
+tutti::motion::PlateauEnvelope plan_hand_reach_in(const HandFingerPlan& side,
+                                                  const FingerMotionPlan& plan) {
+  std::vector<tutti::motion::EnvelopeNeed> needs;
   const KeyHeights& keys = plan.keys;
   for (std::size_t f = 0; f < 5; ++f) {
     for (const KeyContact& c : side.fingers[f]) {
@@ -138,7 +142,8 @@ HandReachIn plan_hand_reach_in(const HandFingerPlan& side, const FingerMotionPla
       needs.push_back({c.shape_start_s, c.release_end_s, target_y - lands_y_mm(plan, f, c)});
     }
   }
-  return plan_reach_in(std::move(needs), plan.timing.reach_in_s, plan.timing.reach_in_bridge_s);
+  return tutti::motion::plan_plateau_envelope(std::move(needs), plan.timing.reach_in_s,
+                                              plan.timing.reach_in_bridge_s);
 }
 
 // The key bed under each contact where its pad meets the key, the hand moved in: a lever's key
@@ -160,7 +165,7 @@ void settle_key_beds(HandFingerPlan& side, const FingerMotionPlan& plan,
           strokes_travel_at_rest ? std::clamp(lands_y_mm(plan, f, c), front, keys.pivot_y_mm - 1.0)
                                  : front;
       const double travel_at_front = planned * (keys.pivot_y_mm - front) / (keys.pivot_y_mm - planned_at);
-      const double hand_in = evaluate_reach_in(side.reach_in, c.onset_s);
+      const double hand_in = tutti::motion::evaluate_plateau_envelope(side.reach_in, c.onset_s);
       // Starting from the planned travel: where the hand is at its rest line that is already
       // the answer (exactly, not to the last rounding of the rounds below).
       double travel = planned;

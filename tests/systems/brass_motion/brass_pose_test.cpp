@@ -3,6 +3,7 @@
 // and the ECS system writing the components.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -19,6 +20,7 @@
 #include <tutti/fingering_planner/brass_lines.hpp>
 #include <tutti/fingering_planner/brass_planner.hpp>
 #include <tutti/music/load_score.hpp>
+#include <tutti/spline_motion/plateau_envelope.hpp>
 #include "testdata.hpp"
 
 namespace tutti::brass {
@@ -154,6 +156,36 @@ TEST(BrassPose, SlideArrivesOnTimeSmoothlyAndWithinItsSpeed) {
     previous_mm = pose.slide_mm;
     previous_v = pose.slide_speed_mm_per_s;
   }
+}
+
+// The reach the trombonist's body is set for (plan_slide_reach): never short of the slide, and it
+// eases (within a ramp's minimum-jerk speed of the farthest extension) where the slide leaps.
+TEST(BrassPose, TheBodyIsSetForTheSlidesReachAheadOfItAndSmoothly) {
+  const Instrument& trombone = instrument("trombone_tenor");
+  const BrassLine line = planned_line(trombone, {46, 53, 47, 58, 52, 62, 59, 65, 56, 60, 45, 53},
+                                      {0.5, 0.25, 0.3, 0.7});
+  const BrassMotionPlan plan = plan_brass_motion(line, setup().params, setup().weights.change);
+  ASSERT_FALSE(plan.slide_reach.values.empty());
+  double farthest = 0.0;
+  for (const SlideMove& m : plan.slide) {
+    farthest = std::max<double>(farthest, std::max(m.from_mm, m.to_mm));
+  }
+  const double ramp = setup().params.slide_reach_ramp_s;
+  const double dt = 1e-3;
+  double fastest = 0.0, slide_fastest = 0.0;
+  double previous = tutti::motion::evaluate_plateau_envelope(plan.slide_reach, 0.0);
+  double previous_slide = evaluate_brass_pose(plan, 0.0).slide_mm;
+  for (double t = dt; t < line.notes.back().offset_s + 0.5; t += dt) {
+    const double reach = tutti::motion::evaluate_plateau_envelope(plan.slide_reach, t);
+    const double slide = evaluate_brass_pose(plan, t).slide_mm;
+    ASSERT_GE(reach, slide - 1e-3) << t;  // slide_mm is a float
+    fastest = std::max(fastest, std::abs(reach - previous) / dt);
+    slide_fastest = std::max(slide_fastest, std::abs(slide - previous_slide) / dt);
+    previous = reach;
+    previous_slide = slide;
+  }
+  EXPECT_LE(fastest, 1.875 * farthest / ramp * 1.01);
+  EXPECT_LT(fastest, 0.5 * slide_fastest);
 }
 
 TEST(BrassPose, TensionRisesWithTheRegisterAndRelaxesInRests) {

@@ -111,7 +111,7 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
   out.tip_x_mm = x;
   // The hand in toward the fallboard for black keys a short finger cannot reach otherwise.
-  const double hand_in = evaluate_reach_in(hand.reach_in, t);
+  const double hand_in = tutti::motion::evaluate_plateau_envelope(hand.reach_in, t);
   out.tip_y_mm = g.root_y_mm + hand_in + reach_y;
   out.tip_z_mm = z + g.pad_drop_mm;
   out.contact_z_mm = z;

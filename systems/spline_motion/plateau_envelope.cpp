@@ -1,39 +1,43 @@
-#include <tutti/finger_motion/hand_reach_in.hpp>
+#include <tutti/spline_motion/plateau_envelope.hpp>
 
 #include <algorithm>
 #include <cstddef>
 #include <map>
 
-#include <tutti/finger_motion/finger_chain.hpp>
-
-namespace tutti::finger_motion {
+namespace tutti::motion {
 namespace {
+
+// 10u^3 - 15u^4 + 6u^5 on u clamped to [0, 1] (as finger_motion's finger_chain.hpp writes it).
+double min_jerk(double u) noexcept {
+  u = std::clamp(u, 0.0, 1.0);
+  return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
+}
 
 struct Step {
   double t_s;
-  double value_mm;
+  double value;
 };
 
 // The upper envelope of the needs as steps: a sweep over their starts and ends with the active
 // values counted in a multiset (a map of value -> count).
-std::vector<Step> envelope(std::vector<ReachInNeed>& needs) {
+std::vector<Step> envelope(std::vector<EnvelopeNeed>& needs) {
   struct Edge {
     double t_s;
-    double value_mm;
+    double value;
     bool starts;
   };
   std::vector<Edge> edges;
   edges.reserve(2 * needs.size());
-  for (const ReachInNeed& n : needs) {
-    if (!(n.in_mm > 0.0) || !(n.to_s >= n.from_s)) continue;
-    edges.push_back({n.from_s, n.in_mm, true});
-    edges.push_back({n.to_s, n.in_mm, false});
+  for (const EnvelopeNeed& n : needs) {
+    if (!(n.value > 0.0) || !(n.to_s >= n.from_s)) continue;
+    edges.push_back({n.from_s, n.value, true});
+    edges.push_back({n.to_s, n.value, false});
   }
   // At one time, ends before starts would open a gap: starts first.
   std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
     if (a.t_s != b.t_s) return a.t_s < b.t_s;
     if (a.starts != b.starts) return a.starts;
-    return a.value_mm < b.value_mm;
+    return a.value < b.value;
   });
   std::map<double, int> active;
   std::vector<Step> steps;
@@ -41,13 +45,13 @@ std::vector<Step> envelope(std::vector<ReachInNeed>& needs) {
     const double t = edges[i].t_s;
     for (; i < edges.size() && edges[i].t_s == t; ++i) {
       if (edges[i].starts) {
-        ++active[edges[i].value_mm];
-      } else if (auto it = active.find(edges[i].value_mm); it != active.end() && --it->second == 0) {
+        ++active[edges[i].value];
+      } else if (auto it = active.find(edges[i].value); it != active.end() && --it->second == 0) {
         active.erase(it);
       }
     }
     const double value = active.empty() ? 0.0 : active.rbegin()->first;
-    const double before = steps.empty() ? 0.0 : steps.back().value_mm;
+    const double before = steps.empty() ? 0.0 : steps.back().value;
     if (value != before) steps.push_back({t, value});
   }
   return steps;
@@ -59,11 +63,11 @@ void bridge_dips(std::vector<Step>& steps, double bridge_s) {
   while (changed) {
     changed = false;
     for (std::size_t i = 1; i + 1 < steps.size(); ++i) {
-      const double left = steps[i - 1].value_mm;
-      const double right = steps[i + 1].value_mm;
-      if (steps[i].value_mm < left && steps[i].value_mm < right &&
+      const double left = steps[i - 1].value;
+      const double right = steps[i + 1].value;
+      if (steps[i].value < left && steps[i].value < right &&
           steps[i + 1].t_s - steps[i].t_s < bridge_s) {
-        steps[i].value_mm = std::min(left, right);
+        steps[i].value = std::min(left, right);
         changed = true;
       }
     }
@@ -71,8 +75,8 @@ void bridge_dips(std::vector<Step>& steps, double bridge_s) {
     std::vector<Step> merged;
     merged.reserve(steps.size());
     for (const Step& s : steps) {
-      const double before = merged.empty() ? 0.0 : merged.back().value_mm;
-      if (s.value_mm != before) merged.push_back(s);
+      const double before = merged.empty() ? 0.0 : merged.back().value;
+      if (s.value != before) merged.push_back(s);
     }
     changed = changed || merged.size() != steps.size();
     steps = std::move(merged);
@@ -81,23 +85,24 @@ void bridge_dips(std::vector<Step>& steps, double bridge_s) {
 
 }  // namespace
 
-HandReachIn plan_reach_in(std::vector<ReachInNeed> needs, double ramp_s, double bridge_s) {
+PlateauEnvelope plan_plateau_envelope(std::vector<EnvelopeNeed> needs, double ramp_s,
+                                      double bridge_s) {
   std::vector<Step> steps = envelope(needs);
   bridge_dips(steps, bridge_s);
-  HandReachIn path;
+  PlateauEnvelope path;
   path.ramp_s = ramp_s;
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    if (!(steps[i].value_mm > 0.0)) continue;
+    if (!(steps[i].value > 0.0)) continue;
     // The envelope always comes back to 0 (every need ends), so a step > 0 has a next.
     const double end = i + 1 < steps.size() ? steps[i + 1].t_s : steps[i].t_s;
     path.starts_s.push_back(steps[i].t_s);
     path.ends_s.push_back(end);
-    path.values_mm.push_back(steps[i].value_mm);
+    path.values.push_back(steps[i].value);
   }
   return path;
 }
 
-double evaluate_reach_in(const HandReachIn& path, double t_s) noexcept {
+double evaluate_plateau_envelope(const PlateauEnvelope& path, double t_s) noexcept {
   const double ramp = path.ramp_s;
   // Plateaus beginning after t + ramp cannot reach t yet; going back from there, the first
   // ending before t - ramp and all earlier ones have eased out (they are in time order).
@@ -116,9 +121,9 @@ double evaluate_reach_in(const HandReachIn& path, double t_s) noexcept {
     } else if (t_s > end) {
       weight = 1.0 - min_jerk((t_s - end) / ramp);
     }
-    in = std::max(in, weight * path.values_mm[index]);
+    in = std::max(in, weight * path.values[index]);
   }
   return in;
 }
 
-}  // namespace tutti::finger_motion
+}  // namespace tutti::motion
