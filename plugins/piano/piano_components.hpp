@@ -13,6 +13,7 @@
 
 #include <tutti/ecs/entity.hpp>
 #include <tutti/finger_motion/finger_pose_system.hpp>
+#include <tutti/fingering_planner/chord_roll.hpp>
 #include <tutti/fingering_planner/plan_score.hpp>
 #include <tutti/key_action/key_simulation.hpp>
 #include <tutti/key_action/performance_report.hpp>
@@ -40,6 +41,9 @@ struct PianistPlan {
   // pins re-plan only the span around them from it.
   piano::ScorePlan base_fingering;
   std::string base_key;
+  // Chords a hand cannot span, rolled (chord_roll.hpp): applied to `score`; planned with the
+  // base fingering.
+  piano::ChordRolls rolls;
   std::vector<std::string> plan_notes;
   // With a performance style (scene pianist "style" / "sound": "keys"): what the simulated keys
   // did with each note of `score` (systems/key_action), and its summary. Empty without a style.

@@ -33,7 +33,16 @@ void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const Pia
                                                                  : components::HandSide::right;
     }
     if (i < plan.fingering.fingers.size()) note->finger = plan.fingering.fingers[i];
-    if (!sound_from_keys || !plan.played || i >= plan.played->size()) continue;
+    if (!sound_from_keys) {
+      // A rolled chord's notes are heard as struck; their sound keeps its written end (as if
+      // pedalled) though the key goes up early.
+      if (i < plan.score.notes.size()) {
+        note->onset_s = std::max(note->onset_s, plan.score.notes[i].onset_s);
+        note->offset_s = std::max(note->offset_s, note->onset_s);
+      }
+      continue;
+    }
+    if (!plan.played || i >= plan.played->size()) continue;
     const key_action::PlayedNote& p = (*plan.played)[i];
     if (p.outcome == key_action::KeyOutcome::not_played) continue;
     if (p.outcome != key_action::KeyOutcome::sounded) {

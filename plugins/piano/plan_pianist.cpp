@@ -5,6 +5,7 @@
 
 #include <tutti/finger_motion/finger_motion_params.hpp>
 #include <tutti/finger_motion/plan_finger_motion.hpp>
+#include <tutti/fingering_planner/chord_roll.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/key_action/humane_performance.hpp>
 #include <tutti/piano_performance/performance_plan.hpp>
@@ -89,6 +90,27 @@ Result<key_action::HumanePerformance> perform_in_style(
 
 }  // namespace
 
+namespace {
+
+// The fingering of `unpinned`; chords a hand cannot span with it are rolled (chord_roll.hpp)
+// and the rolled score planned again with the same fingers, so hand paths and strokes follow.
+Result<piano::ScorePlan> plan_rolling_wide_chords(const music::Score& unpinned,
+                                                   const piano::FingeringModel& model,
+                                                   piano::ChordRolls& rolls) {
+  auto planned = piano::plan_score(unpinned, model);
+  if (!planned) return planned.error();
+  rolls = piano::plan_chord_rolls(unpinned, *planned, model);
+  if (rolls.empty()) return planned;
+  music::Score rolled = unpinned;
+  piano::apply_chord_rolls(rolls, rolled);
+  for (std::size_t i = 0; i < rolled.notes.size() && i < planned->fingers.size(); ++i) {
+    rolled.notes[i].finger = planned->fingers[i];
+  }
+  return piano::plan_score(rolled, model);
+}
+
+}  // namespace
+
 Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
   const scene::Scene& scene = builder.scene();
   const scene::Pianist& pianist = *scene.pianist;
@@ -140,15 +162,24 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
     plan.plan_notes = previous->plan_notes;
     plan.played = previous->played;
     plan.performance = previous->performance;
+    plan.rolls = previous->rolls;
+    piano::apply_chord_rolls(plan.rolls, score);
   } else {
     if (previous != nullptr && previous->base_key == plan.base_key) {
       plan.base_fingering = previous->base_fingering;
+      plan.rolls = previous->rolls;
     } else {
-      auto planned = piano::plan_score(unpinned, *model);
+      auto planned = plan_rolling_wide_chords(unpinned, *model, plan.rolls);
       if (!planned) return planned.error();
       plan.base_fingering = std::move(*planned);
       builder.replanned("pianist fingering");
     }
+    if (plan.rolls.chords > 0) {
+      plan.plan_notes.push_back("pianist: " + std::to_string(plan.rolls.chords) +
+                                (plan.rolls.chords == 1 ? " chord" : " chords") +
+                                " too wide for the hand rolled");
+    }
+    piano::apply_chord_rolls(plan.rolls, score);
     plan.fingering = plan.base_fingering;
     if (!pinned_notes.empty()) {
       piano::ScoreReplanSpan span;
