@@ -189,6 +189,65 @@ void keep_chords_in_reach(const music::Score& score, const FingeringModel& model
   }
 }
 
+// A note that takes its hand across the other (a right-hand note at or below a key the left hand
+// holds or strikes meanwhile, or a left-hand note at or above one of the right hand's) goes to
+// the other hand when that hand can add it at its own outer side: the left hand's lowest or
+// highest key then, the other hand's remaining keys all beyond it, the whole within one hand's
+// reach and at most five keys. A pianist reads such a note into the other hand rather than
+// crossing through it (Chopin's op. 1 no. 4 writes G3 in the right hand's staff under the left
+// hand's D4-G4). What the other hand cannot take stays a crossing.
+void take_crossed_notes(const music::Score& score, const FingeringModel& model,
+                        HandAssignment& out) {
+  constexpr double kArriveS = 0.08;  // the hands' keys ending just before count too
+  const Keyboard& keyboard = model.keyboard;
+  auto x_of = [&](int key) {
+    return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
+  };
+  const double reach_mm =
+      model.hand.range(music::Hand::right, 5).hi_mm - model.hand.range(music::Hand::right, 1).lo_mm;
+  for (std::size_t note = 0; note < score.notes.size(); ++note) {
+    const music::Hand side = out.hand[note];
+    if (side == music::Hand::unknown || out.source[note] == HandSource::file) continue;
+    const music::Hand other = side == music::Hand::right ? music::Hand::left : music::Hand::right;
+    const music::Note& n = score.notes[note];
+    const auto during = [&](const music::Note& o) {
+      return o.offset_s > n.onset_s - kArriveS && o.onset_s < n.offset_s;
+    };
+    bool crosses = false, other_above = false, other_below = false;
+    double lo = x_of(n.pitch), hi = lo;
+    int at_onset = 1;
+    for (std::size_t i = 0; i < score.notes.size(); ++i) {
+      const music::Note& o = score.notes[i];
+      if (i == note || !during(o)) continue;
+      if (out.hand[i] == other) {
+        if (o.pitch == n.pitch) {
+          crosses = false;
+          other_above = other_below = true;  // a unison: not this rule's
+          break;
+        }
+        crosses = crosses || (side == music::Hand::right ? o.pitch >= n.pitch : o.pitch <= n.pitch);
+        (o.pitch > n.pitch ? other_above : other_below) = true;
+        lo = std::min(lo, x_of(o.pitch));
+        hi = std::max(hi, x_of(o.pitch));
+        if (o.onset_s <= n.onset_s && o.offset_s > n.onset_s) ++at_onset;
+      }
+    }
+    if (!crosses || (other_above && other_below)) continue;
+    if (hi - lo > reach_mm || at_onset > 5) continue;
+    // This hand's keys meanwhile must stay beyond the other hand's new span.
+    bool clear = true;
+    for (std::size_t i = 0; i < score.notes.size() && clear; ++i) {
+      const music::Note& o = score.notes[i];
+      if (i == note || out.hand[i] != side || !during(o)) continue;
+      const double x = x_of(o.pitch);
+      clear = other == music::Hand::left ? x > hi : x < lo;
+    }
+    if (!clear) continue;
+    out.hand[note] = other;
+    out.source[note] = HandSource::crossing;
+  }
+}
+
 // A key struck by both hands at once (a score doubles a note in both staves: Clara Schumann's
 // op. 1 no. 3 writes D3 in the right hand's staff under the left hand's D3) is one key: one hand
 // plays it, the one with more of its other keys at that moment within an octave (ties: the left
@@ -277,6 +336,7 @@ HandAssignment assign_hands(const music::Score& score, const FingeringModel& mod
   }
   if (!automatic.empty()) split_automatically(score, std::move(automatic), model, out);
   keep_chords_in_reach(score, model, out);
+  take_crossed_notes(score, model, out);
   share_unisons(score, out);
   return out;
 }

@@ -14,7 +14,9 @@
 // Then, but for hands a file states: notes struck together that one hand cannot span (wider than
 // its reach, or more than five) give their outer notes to the other hand where it is free to take
 // them without crossing (HandSource::reach). Last, a key both hands strike at once is played by
-// one hand, the one with more of its keys near it then (HandSource::unison).
+// one hand, the one with more of its keys near it then (HandSource::unison). And a note that
+// would take its hand across the other (a right-hand G3 under the left hand's held D4-G4) goes to
+// the other hand when it can add it at its own outer side (HandSource::crossing).
 
 #include <vector>
 
@@ -23,7 +25,7 @@
 
 namespace tutti::piano {
 
-enum class HandSource { file, part_name, staff, automatic, reach, unison, none };
+enum class HandSource { file, part_name, staff, automatic, reach, unison, crossing, none };
 
 struct HandAssignment {
   std::vector<music::Hand> hand;   // per Score::notes entry

@@ -36,6 +36,13 @@ struct PianoScore {
     }
     return Hand::unknown;
   }
+  std::size_t index_of(int pitch, std::int64_t tick) const {
+    for (std::size_t i = 0; i < score.notes.size(); ++i) {
+      if (score.notes[i].pitch == pitch && score.notes[i].onset_ticks == tick) return i;
+    }
+    ADD_FAILURE() << "no note " << pitch << " at " << tick;
+    return 0;
+  }
 };
 
 TEST(HandAssignment, AChordOneHandCannotSpanGivesItsLowNoteToTheFreeLeftHand) {
@@ -79,13 +86,51 @@ TEST(HandAssignment, ABusyOrCrossingOtherHandTakesNothing) {
     EXPECT_EQ(s.hand_of(a, 62, 0), Hand::right);
   }
   {
-    PianoScore s;  // the left hand plays above D4 meanwhile: taking it would cross the hands
+    PianoScore s;  // the left hand plays A3 and F4 meanwhile: D4 would land between its keys
+    s.add(62, 0, 480, 1);
+    s.add(83, 0, 480, 1);
+    s.add(57, 120, 240, 2);
+    s.add(65, 120, 240, 2);
+    music::finalize_score(s.score);
+    const HandAssignment a = assign_hands(s.score, test::model("default"));
+    EXPECT_EQ(s.hand_of(a, 62, 0), Hand::right);
+  }
+}
+
+// A right-hand note under the left hand's keys goes to the left hand as its lowest key (Chopin's
+// op. 1 no. 4: G3 in the right hand's staff under the left hand's held D4-G4); with D4 and B5 at
+// once, D4 goes to a left hand that plays F4 meanwhile, below it. A note the other hand cannot
+// span with its keys (C#3 under a left hand on C#4-G4) stays where it is.
+TEST(HandAssignment, ANoteUnderTheOtherHandsKeysGoesToItAtItsOuterSide) {
+  {
+    PianoScore s;
+    s.add(62, 0, 960, 2);
+    s.add(67, 0, 960, 2);
+    s.add(77, 0, 480, 1);
+    s.add(55, 480, 960, 1);
+    music::finalize_score(s.score);
+    const HandAssignment a = assign_hands(s.score, test::model("default"));
+    EXPECT_EQ(s.hand_of(a, 55, 480), Hand::left);
+    EXPECT_EQ(a.source[s.index_of(55, 480)], HandSource::crossing);
+    EXPECT_EQ(s.hand_of(a, 77, 0), Hand::right);
+  }
+  {
+    PianoScore s;
     s.add(62, 0, 480, 1);
     s.add(83, 0, 480, 1);
     s.add(65, 120, 240, 2);
     music::finalize_score(s.score);
     const HandAssignment a = assign_hands(s.score, test::model("default"));
-    EXPECT_EQ(s.hand_of(a, 62, 0), Hand::right);
+    EXPECT_EQ(s.hand_of(a, 62, 0), Hand::left);
+    EXPECT_EQ(s.hand_of(a, 83, 0), Hand::right);
+  }
+  {
+    PianoScore s;
+    for (int key : {61, 64, 67}) s.add(key, 0, 960, 2);
+    s.add(49, 480, 960, 1);
+    music::finalize_score(s.score);
+    const HandAssignment a = assign_hands(s.score, test::model("default"));
+    EXPECT_EQ(s.hand_of(a, 49, 480), Hand::right);
   }
 }
 
