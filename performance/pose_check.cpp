@@ -252,6 +252,30 @@ class Checker {
                  : asset.nodes[deepest_node].name + " in the " + deepest_arm->name);
   }
 
+  // A stand model's desk panel in the desk node's frame (node -1: none), read once per model.
+  struct DeskPanel {
+    int node = -1;
+    glm::vec3 lo{0.0f}, hi{0.0f};
+  };
+  const DeskPanel& desk_panel(const model::ModelAsset& asset) {
+    auto [it, added] = desk_panels_.try_emplace(&asset);
+    if (!added) return it->second;
+    const int desk = asset.find_node("desk");
+    if (desk < 0 || asset.nodes[static_cast<std::size_t>(desk)].mesh < 0) return it->second;
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    const int mesh = asset.nodes[static_cast<std::size_t>(desk)].mesh;
+    for (const model::Primitive& primitive : asset.meshes[static_cast<std::size_t>(mesh)].primitives) {
+      for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
+        const glm::vec3& p = asset.vertices[primitive.first_vertex + v].position;
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+    }
+    hi.z = std::min(hi.z, 0.0f);
+    if (lo.x < hi.x && lo.y < hi.y && lo.z < hi.z) it->second = {desk, lo, hi};
+    return it->second;
+  }
+
   // How far the instrument passes through its music stand's desk (a slide dipped too far goes
   // through the music): any edge of the instrument's triangles crossing the desk's panel, measured
   // inward from the panel's nearest side (0 = clear). The panel is the desk mesh's outline with
@@ -259,24 +283,11 @@ class Checker {
   // (content/generator/props.hpp); the ledge in front of it is left out.
   void instrument_clear_of_desk(const std::string& who, const stage::PlacedModel& horn,
                                 const stage::PlacedModel& stand) {
-    const model::ModelAsset& stand_asset = *stand.asset;
-    const int desk = stand_asset.find_node("desk");
-    if (desk < 0) return;
-    const model::Node& desk_node = stand_asset.nodes[static_cast<std::size_t>(desk)];
-    if (desk_node.mesh < 0) return;
-    glm::vec3 lo(1e9f), hi(-1e9f);
-    for (const model::Primitive& primitive :
-         stand_asset.meshes[static_cast<std::size_t>(desk_node.mesh)].primitives) {
-      for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
-        const glm::vec3& p = stand_asset.vertices[primitive.first_vertex + v].position;
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-      }
-    }
-    hi.z = std::min(hi.z, 0.0f);
-    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) return;
+    const DeskPanel& panel = desk_panel(*stand.asset);
+    if (panel.node < 0) return;
+    const glm::vec3 lo = panel.lo, hi = panel.hi;
     world_of(stand, stand_world_);
-    const glm::mat4 into_desk = glm::inverse(stand_world_[static_cast<std::size_t>(desk)]);
+    const glm::mat4 into_desk = glm::inverse(stand_world_[static_cast<std::size_t>(panel.node)]);
     double depth = 0.0;
     std::size_t deepest_node = 0;
     const model::ModelAsset& asset = *horn.asset;
@@ -720,6 +731,7 @@ class Checker {
   std::map<const stage::PlacedModel*, std::vector<glm::quat>> last_rotations_;
   std::array<std::vector<HandCapsule>, 2> hand_capsules_;  // the pianist's right, left
   std::map<int, KeyOutline> outlines_;
+  std::map<const model::ModelAsset*, DeskPanel> desk_panels_;
 };
 
 }  // namespace

@@ -66,8 +66,8 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   // eased), the hand then follows the slide itself.
   double slide_mm = 0.0;
   double reach_mm = 0.0;
-  if (const auto* slide = world.try_get<components::Slide>(rig.instrument);
-      slide != nullptr && rig.slide >= 0) {
+  const auto* slide = rig.slide >= 0 ? world.try_get<components::Slide>(rig.instrument) : nullptr;
+  if (slide != nullptr) {
     slide_mm = slide->extension_mm;
     reach_mm = slide_mm;
     if (const auto* handle = world.try_get<brass::BrassPlayerMotionHandle>(performer);
@@ -91,8 +91,7 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   // The body is set for a slide a little farther out than planned, so the arm keeps its elbow
   // bent: at full stretch the elbow's plane turns wildly for a small move of the hand.
   constexpr double kReachSlackMm = 30.0;
-  const bool slides = rig.slide >= 0 && world.try_get<components::Slide>(rig.instrument) != nullptr;
-  set_slide(slides ? reach_mm + kReachSlackMm : 0.0);
+  set_slide(slide != nullptr ? reach_mm + kReachSlackMm : 0.0);
   const glm::vec3 mouthpiece = rig.mouthpiece >= 0
                                    ? origin(horn_world[static_cast<std::size_t>(rig.mouthpiece)])
                                    : glm::vec3(0.0f);
@@ -276,7 +275,7 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
     hang_instrument();
     short_by = place_hands();
   }
-  if (slides) {
+  if (slide != nullptr) {
     // The slide nearer than the body is set for: the turn and dip stay, the hands follow it.
     set_slide(slide_mm);
     hang_instrument();

@@ -88,10 +88,6 @@ Result<key_action::HumanePerformance> perform_in_style(
   return key_action::perform(in);
 }
 
-}  // namespace
-
-namespace {
-
 // The fingering of `unpinned`; chords a hand cannot span with it are rolled (chord_roll.hpp)
 // and the rolled score planned again with the same fingers, so hand paths and strokes follow.
 Result<piano::ScorePlan> plan_rolling_wide_chords(const music::Score& unpinned,

@@ -383,6 +383,22 @@ TEST(PoseCheck, ATromboneLeftElbowOutPutsTheTubeThroughTheSleeve) {
   EXPECT_FALSE(sleeve.within_limit());
 }
 
+// The trombonist's stand straight ahead at 0.75 m, where the trumpeters' stands are: the slide
+// goes through its desk as the trombone comes up (about 170 mm in), and the check says so.
+TEST(PoseCheck, ATromboneStandStraightAheadPutsTheSlideThroughItsDesk) {
+  test::ScratchDir dir;
+  const PoseReport report =
+      check("quartet.json",
+            with_hold(dir, "trombone", "\"music_stand\": {\"forward_m\": 0.9, \"left_m\": 0.35}",
+                      "\"music_stand\": {\"forward_m\": 0.75, \"left_m\": 0.0}"),
+            -2.5, 0.0);
+  const PoseMeasure& desk =
+      get(report, "Trombone 1: instrument through the music stand's desk (depth; 0 = clear)");
+  EXPECT_GT(desk.worst(), 50.0);
+  EXPECT_FALSE(desk.within_limit());
+  EXPECT_EQ(desk.worst_of, "slide");
+}
+
 TEST(PoseCheck, AnEmptyRangeIsAnError) {
   auto scene = scene::load_scene(kSource / "content" / "scenes" / "quartet.json");
   ASSERT_TRUE(scene);

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <vector>
 
@@ -186,6 +188,33 @@ TEST(BrassPose, TheBodyIsSetForTheSlidesReachAheadOfItAndSmoothly) {
   }
   EXPECT_LE(fastest, 1.875 * farthest / ramp * 1.01);
   EXPECT_LT(fastest, 0.5 * slide_fastest);
+}
+
+// content/brass/motion.json: a bad value or an unknown key is refused naming the file and the
+// key, never read as garbage (the slide-reach ease included).
+TEST(BrassMotionParams, BrokenFilesAreOneLineErrors) {
+  const std::filesystem::path dir = test::unique_temp_path("motion");
+  std::filesystem::create_directories(dir);
+  const struct {
+    const char* text;
+    const char* expected;
+  } cases[] = {
+      {R"({"slide_reach_ramp_s": 0})", "slide_reach_ramp_s"},
+      {R"({"slide_reach_bridge_s": "long"})", "slide_reach_bridge_s"},
+      {R"({"slide_reach": 1})", "slide_reach"},
+      {R"({"valve_lead_s": )", "motion.json"},
+  };
+  for (const auto& c : cases) {
+    const std::filesystem::path file = dir / "motion.json";
+    std::ofstream(file) << c.text;
+    auto params = load_brass_motion_params(file.string());
+    ASSERT_FALSE(params) << c.text;
+    const std::string& message = params.error().message;
+    EXPECT_NE(message.find("motion.json"), std::string::npos) << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(BrassPose, TensionRisesWithTheRegisterAndRelaxesInRests) {

@@ -3,6 +3,8 @@
 // right-hand staff); when the other hand is busy, or the file states the hands, nothing moves.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include <tutti/fingering_planner/hand_assignment.hpp>
 #include <tutti/fingering_planner/plan_score.hpp>
 #include <tutti/music/load_score.hpp>
@@ -102,35 +104,35 @@ TEST(HandAssignment, ABusyOrCrossingOtherHandTakesNothing) {
 // once, D4 goes to a left hand that plays F4 meanwhile, below it. A note the other hand cannot
 // span with its keys (C#3 under a left hand on C#4-G4) stays where it is.
 TEST(HandAssignment, ANoteUnderTheOtherHandsKeysGoesToItAtItsOuterSide) {
-  {
+  struct Added {
+    int pitch;
+    std::int64_t tick, length;
+    int staff;
+  };
+  const struct {
+    std::vector<Added> notes;
+    int pitch;  // the note asked about, at `tick`
+    std::int64_t tick;
+    Hand expected;
+  } cases[] = {
+      {{{62, 0, 960, 2}, {67, 0, 960, 2}, {77, 0, 480, 1}, {55, 480, 960, 1}}, 55, 480, Hand::left},
+      {{{62, 0, 480, 1}, {83, 0, 480, 1}, {65, 120, 240, 2}}, 62, 0, Hand::left},
+      {{{61, 0, 960, 2}, {64, 0, 960, 2}, {67, 0, 960, 2}, {49, 480, 960, 1}}, 49, 480, Hand::right},
+  };
+  for (const auto& c : cases) {
     PianoScore s;
-    s.add(62, 0, 960, 2);
-    s.add(67, 0, 960, 2);
-    s.add(77, 0, 480, 1);
-    s.add(55, 480, 960, 1);
+    for (const Added& n : c.notes) s.add(n.pitch, n.tick, n.length, n.staff);
     music::finalize_score(s.score);
     const HandAssignment a = assign_hands(s.score, test::model("default"));
-    EXPECT_EQ(s.hand_of(a, 55, 480), Hand::left);
-    EXPECT_EQ(a.source[s.index_of(55, 480)], HandSource::crossing);
-    EXPECT_EQ(s.hand_of(a, 77, 0), Hand::right);
-  }
-  {
-    PianoScore s;
-    s.add(62, 0, 480, 1);
-    s.add(83, 0, 480, 1);
-    s.add(65, 120, 240, 2);
-    music::finalize_score(s.score);
-    const HandAssignment a = assign_hands(s.score, test::model("default"));
-    EXPECT_EQ(s.hand_of(a, 62, 0), Hand::left);
-    EXPECT_EQ(s.hand_of(a, 83, 0), Hand::right);
-  }
-  {
-    PianoScore s;
-    for (int key : {61, 64, 67}) s.add(key, 0, 960, 2);
-    s.add(49, 480, 960, 1);
-    music::finalize_score(s.score);
-    const HandAssignment a = assign_hands(s.score, test::model("default"));
-    EXPECT_EQ(s.hand_of(a, 49, 480), Hand::right);
+    EXPECT_EQ(s.hand_of(a, c.pitch, c.tick), c.expected) << c.pitch;
+    if (c.expected == Hand::left) {
+      EXPECT_EQ(a.source[s.index_of(c.pitch, c.tick)], HandSource::crossing) << c.pitch;
+    }
+    for (const Added& n : c.notes) {  // the right hand's other keys stay with it
+      if (n.staff == 1 && n.pitch != c.pitch) {
+        EXPECT_EQ(s.hand_of(a, n.pitch, n.tick), Hand::right) << n.pitch;
+      }
+    }
   }
 }
 
