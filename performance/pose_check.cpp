@@ -43,6 +43,21 @@ constexpr float kTorsoRadiusM = 0.10f;
 constexpr float kUpperArmRadiusM = 0.045f;
 constexpr float kForearmRadiusM = 0.037f;
 constexpr float kSleeveShortOfWristM = 0.03f;
+// How fast a joint may turn, from one sampled frame to the next (deg/s; at check-pose's default
+// 30 frames a second, the mean over 33 ms). Outside strokes, 1000: issue 29's figure, above what
+// a player's sway, breathing, cues and hand shifts need (the pianist's arms reach 509 on
+// third-party music, a brass player's 176) and below a one-frame snap (a 43 deg turn in one frame
+// is 1290). A finger striking a key or pressing a valve moves faster: 2500 (the pianist's little
+// finger reaches 2176 in the octaves of pianoplayer's test_octaves.xml). The slide arm moving
+// the slide, a stroke as quick as the slide's top speed (4 m/s,
+// content/instruments/trombone_tenor.json), bends the elbow at up to 1620: 2000.
+constexpr double kBodyJointSpeedLimitDegPerS = 1000.0;
+constexpr double kFingerJointSpeedLimitDegPerS = 2500.0;
+constexpr double kSlideArmJointSpeedLimitDegPerS = 2000.0;
+
+// A model's finger joints: [one hand, the other][thumb .. little][joint from the knuckle out],
+// -1 where it has none (stage::BodyNodes::fingers).
+using FingerNodes = std::array<std::array<std::array<int, 3>, 5>, 2>;
 
 glm::vec3 origin(const glm::mat4& m) { return glm::vec3(m[3]); }
 
@@ -140,21 +155,53 @@ class Checker {
     dt_s_ = dt_s;
   }
 
-  // The fastest-turning joint of a posed model since the last frame (deg/s), by its local
-  // rotation: a one-frame snap of an arm or a finger shows here as an angular speed no player has.
-  void joint_speeds(const std::string& who, const stage::PlacedModel& placed) {
+  // The fastest-turning joints of a posed model since the last frame (deg/s), by their local
+  // rotations: a one-frame snap of an arm or a finger shows here as an angular speed no player
+  // has. Strokes are measured apart, as they are quicker than any other motion: the finger joints
+  // (`fingers`, -1 where a model has none), which strike keys and press valves, and the slide arm
+  // (`slide_arm`, when given: while the slide moves).
+  void joint_speeds(const std::string& who, const stage::PlacedModel& placed,
+                    const FingerNodes& fingers, const stage::TwoBoneChain* slide_arm = nullptr) {
     std::vector<glm::quat>& last = last_rotations_[&placed];
     const std::vector<model::NodeTransform>& now = placed.pose.local;
-    double fastest = 0.0;
-    std::size_t fastest_node = 0;
     if (last.size() == now.size()) {
+      enum Kind : std::uint8_t { kBody, kFinger, kSlideArm, kKinds };
+      joint_kind_.assign(now.size(), kBody);
+      const auto mark = [&](int node, Kind kind) {
+        if (node >= 0 && static_cast<std::size_t>(node) < now.size()) {
+          joint_kind_[static_cast<std::size_t>(node)] = kind;
+        }
+      };
+      for (const auto& hand : fingers) {
+        for (const auto& finger : hand) {
+          for (const int node : finger) mark(node, kFinger);
+        }
+      }
+      if (slide_arm != nullptr) {
+        for (const int node : {slide_arm->upper, slide_arm->lower, slide_arm->end}) {
+          mark(node, kSlideArm);
+        }
+      }
+      std::array<double, kKinds> fastest{};
+      std::array<std::size_t, kKinds> fastest_node{};
       for (std::size_t n = 0; n < now.size(); ++n) {
         const double cos_half = std::min(1.0, static_cast<double>(std::abs(glm::dot(last[n], now[n].rotation))));
         const double degrees = 2.0 * std::acos(cos_half) * 180.0 / 3.14159265358979323846;
-        if (degrees > fastest) fastest = degrees, fastest_node = n;
+        const auto kind = static_cast<Kind>(joint_kind_[n]);
+        if (degrees > fastest[kind]) fastest[kind] = degrees, fastest_node[kind] = n;
       }
-      measure(who + ": fastest joint's angular speed", "deg/s")
-          .add(fastest / dt_s_, t_s_, fastest > 0.0 ? placed.asset->nodes[fastest_node].name : std::string());
+      static constexpr const char* kNames[kKinds] = {
+          ": fastest joint's angular speed outside strokes",
+          ": fastest finger joint's angular speed", ": slide arm's fastest joint while the slide moves"};
+      static constexpr double kLimits[kKinds] = {kBodyJointSpeedLimitDegPerS,
+                                                 kFingerJointSpeedLimitDegPerS,
+                                                 kSlideArmJointSpeedLimitDegPerS};
+      for (std::size_t kind = 0; kind < kKinds; ++kind) {
+        if (kind == kSlideArm && slide_arm == nullptr) continue;
+        measure(who + kNames[kind], "deg/s", kLimits[kind])
+            .add(fastest[kind] / dt_s_, t_s_,
+                 fastest[kind] > 0.0 ? placed.asset->nodes[fastest_node[kind]].name : std::string());
+      }
     }
     last.resize(now.size());
     for (std::size_t n = 0; n < now.size(); ++n) last[n] = now[n].rotation;
@@ -385,7 +432,15 @@ class Checker {
     const std::string who = name_of(world, performer);
     world_of(*horn, horn_world_);
     world_of(*body, body_world_);
-    joint_speeds(who, *body);
+    // The slide moves in this frame when it is moving now or has moved since the last frame.
+    bool slide_moves = false;
+    if (const auto* slide = world.try_get<components::Slide>(rig.instrument)) {
+      const auto [last, added] = last_slide_mm_.try_emplace(performer.bits(), slide->extension_mm);
+      slide_moves = slide->speed_mm_per_s != 0.0 || (!added && last->second != slide->extension_mm);
+      last->second = slide->extension_mm;
+    }
+    joint_speeds(who, *body, rig.body_nodes.fingers,
+                 slide_moves ? &rig.body_nodes.arm_right : nullptr);
     const model::ModelAsset& body_asset = *body->asset;
     const auto body_point = [&](const std::string& node) -> const glm::mat4* {
       const int n = body_asset.find_node(node);
@@ -489,7 +544,7 @@ class Checker {
         stage::posed_body(world.try_get<stage::PlacedModel>(rig.body), rig.body_retarget);
     if (body != nullptr) {
       world_of(*body, body_world_);
-      joint_speeds(who, *body);
+      joint_speeds(who, *body, rig.body_nodes.fingers);
     }
     const stage::PlacedModel* own = nullptr;
     const stage::BodyNodes* own_nodes = nullptr;
@@ -505,7 +560,12 @@ class Checker {
       const auto* hand = world.try_get<stage::PlacedModel>(rig.hand_models[side]);
       if (hand != nullptr && own == nullptr) {
         world_of(*hand, hand_world_);
-        joint_speeds(who, *hand);
+        FingerNodes fingers;
+        for (auto& hand_fingers : fingers) {
+          for (auto& finger : hand_fingers) finger.fill(-1);
+        }
+        fingers[0] = rig.finger_bones[side];
+        joint_speeds(who, *hand, fingers);
       }
       const std::size_t body_side = side == 0 ? 1 : 0;  // the rig's _r is its side 1
       // The fingertip and its last joint (-1 when the hand has none).
@@ -729,6 +789,8 @@ class Checker {
   double t_s_ = 0.0;
   double dt_s_ = 1.0 / 30.0;
   std::map<const stage::PlacedModel*, std::vector<glm::quat>> last_rotations_;
+  std::vector<std::uint8_t> joint_kind_;
+  std::map<std::uint64_t, double> last_slide_mm_;  // per performer entity
   std::array<std::vector<HandCapsule>, 2> hand_capsules_;  // the pianist's right, left
   std::map<int, KeyOutline> outlines_;
   std::map<const model::ModelAsset*, DeskPanel> desk_panels_;

@@ -159,6 +159,20 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   const glm::vec3 back = glm::vec3(facing * glm::vec4(0, 0, -1, 0));
   const glm::vec3 down(0, -1, 0);
   const float body_scale = glm::length(glm::vec3(body->root[0]));
+  // How far a valve button node is down, in world space (zero for any other node).
+  const auto* valve = world.try_get<components::Valve>(rig.instrument);
+  const auto button_travel = [&](int node, const glm::mat4& horn_frame) {
+    for (std::size_t v = 0; valve != nullptr && v < BrassRig::kMaxValves; ++v) {
+      if (rig.valves[v] != node) continue;
+      const int parent = horn_asset.nodes[static_cast<std::size_t>(node)].parent;
+      const glm::mat4 frame =
+          parent >= 0 ? horn_frame * horn_world[static_cast<std::size_t>(parent)]
+                      : horn_frame * rig.horn_correction;
+      return glm::mat3(frame) *
+             (rig.valve_axis[v] * static_cast<float>(valve->press[v] * rig.valve_travel_m[v]));
+    }
+    return glm::vec3(0.0f);
+  };
   // Places both hands; returns how far each palm stayed from its grip (0 for fingertip holds).
   const auto place_hands = [&]() -> std::array<float, 2> {
     std::array<float, 2> short_by{0.0f, 0.0f};
@@ -172,6 +186,10 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
       const glm::vec3 pole =
           weights.x * down + weights.y * (hand == 0 ? left : -left) + weights.z * back;
       stage::FingertipTargets targets;
+      // The same targets with every button up: the hand is set on these, and the fingers alone
+      // follow their buttons down (a player's hand stays still while the valves move; turning
+      // it for each press flicked the wrist at up to 2000 deg/s).
+      stage::FingertipTargets unpressed;
       bool by_fingertips = false;
       if (rig.hold.fingertips_place(hand) && arm.end >= 0) {
         for (std::size_t f = 0; f < 5; ++f) {
@@ -182,6 +200,8 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
           const glm::vec3 press = glm::normalize(glm::mat3(button) * glm::vec3(0, -1, 0));
           targets.world[f] = origin(button) - press * hold.pad_above_button_m;
           targets.has[f] = true;
+          unpressed.world[f] = targets.world[f] - button_travel(node, horn_frame);
+          unpressed.has[f] = true;
           by_fingertips = true;
         }
       }
@@ -191,9 +211,10 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
       const int rig_grip = hand == 0 ? rig.body_nodes.grip_left : rig.body_nodes.grip_right;
       if (by_fingertips) {
         const glm::vec3 up = glm::normalize(glm::mat3(horn_frame) * glm::vec3(0, 1, 0));
-        hand_rotation = stage::fingertip_hand_rotation(targets, up, hand, hold.metacarpal_lean_rad);
-        wrist = stage::fingertip_wrist(body_asset, rig.body_nodes, hand, hold.curls(), targets, hand_rotation,
-                                body_scale);
+        hand_rotation =
+            stage::fingertip_hand_rotation(unpressed, up, hand, hold.metacarpal_lean_rad);
+        wrist = stage::fingertip_wrist(body_asset, rig.body_nodes, hand, hold.curls(), unpressed,
+                                       hand_rotation, body_scale);
       } else {
         const int grip = hand == 0 ? rig.grip_left : rig.grip_right;
         if (grip < 0) continue;
