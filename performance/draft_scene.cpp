@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include <tutti/brass_model/instrument.hpp>
+#include <tutti/music/load_score.hpp>
 #include <tutti/fingering_planner/brass_lines.hpp>
 #include <tutti/music/general_midi.hpp>
 
@@ -250,6 +251,19 @@ std::string format_scene_document(const nlohmann::ordered_json& document) {
   std::string out;
   write_json(document, 0, out);
   return out + "\n";
+}
+
+Result<scene::Scene> load_scene_or_music(const std::filesystem::path& file,
+                                         const scene::LoadOptions& options,
+                                         std::vector<std::string>* notes) {
+  if (!is_music_file(file)) return scene::load_scene(file, options);
+  auto score = music::load_score(file);
+  if (!score) return score.error();
+  auto drafted = draft_scene(*score, std::filesystem::absolute(file));
+  if (!drafted) return drafted.error();
+  if (notes != nullptr) *notes = drafted->notes;
+  return scene::parse_scene(nlohmann::json::parse(drafted->document.dump()),
+                            file.filename().string(), std::filesystem::current_path(), options);
 }
 
 bool is_music_file(const std::filesystem::path& path) {

@@ -18,6 +18,7 @@
 
 #include <tutti/core/result.hpp>
 #include <tutti/music/score.hpp>
+#include <tutti/scene/load_scene.hpp>
 
 namespace tutti::performance {
 
@@ -40,6 +41,12 @@ std::string format_scene_document(const nlohmann::ordered_json& document);
 // scene's folder when both are on one tree, else absolute.
 std::filesystem::path music_reference_from(const std::filesystem::path& scene_file,
                                            const std::filesystem::path& music_file);
+
+// A scene file, or a piece of music with the scene drafted for it (`tutti render PIECE.mid`, the C
+// API's tutti_open): the drafted scene's notes (parts not played) go to `notes` when given.
+Result<scene::Scene> load_scene_or_music(const std::filesystem::path& file,
+                                         const scene::LoadOptions& options = {},
+                                         std::vector<std::string>* notes = nullptr);
 
 // True for a file name tutti reads as music (.mid, .midi, .kar, .musicxml, .xml, .mxl, .txt PIG)
 // rather than as a scene (.json).

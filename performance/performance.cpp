@@ -16,6 +16,7 @@
 #include <tutti/components/slide.hpp>
 #include <tutti/components/valve.hpp>
 #include <tutti/ensemble_variation/ensemble_variation_system.hpp>
+#include <tutti/performance/draft_scene.hpp>
 #include <tutti/performance/families.hpp>
 #include <tutti/performance/model_names.hpp>
 #include <tutti/scene/load_scene.hpp>
@@ -192,7 +193,7 @@ Result<std::unique_ptr<Performance>> Performance::open(const std::filesystem::pa
                                                        const Options& options) {
   scene::LoadOptions load_options;
   load_options.content_dir = options.content_dir;
-  auto scene = scene::load_scene(scene_file, load_options);
+  auto scene = load_scene_or_music(scene_file, load_options);
   if (!scene) return scene.error();
   return stage(*scene, options);
 }

@@ -98,7 +98,8 @@ struct Sample {
 
 class Performance {
  public:
-  // Loads the scene file and stages it.
+  // Loads the scene file and stages it; a piece of music (.mid, .musicxml, ...) is staged with
+  // the scene tutti drafts for it (draft_scene.hpp).
   static Result<std::unique_ptr<Performance>> open(const std::filesystem::path& scene_file,
                                                    const Options& options = {});
   // Stages a scene already loaded.

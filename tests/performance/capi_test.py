@@ -5,7 +5,9 @@
 
 Opens the quartet, reads its performers, models, nodes and morphs, samples poses, checks that a
 valve node goes down after its valve_down event and that the same t gives the same pose, reads
-the events, and checks the error paths (a missing scene, a bad index, a short buffer)."""
+the events, and checks the error paths (a missing scene, a bad index, a short buffer). Then the
+lasting surface: version numbers, event kinds by name, options with their struct_size, every
+failing call's message, all models' poses in one call, and a piece of music opened directly."""
 import ctypes
 import math
 import os
@@ -23,7 +25,8 @@ class Event(ctypes.Structure):
 
 
 class Options(ctypes.Structure):
-    _fields_ = [("content_dir", ctypes.c_char_p), ("asset_dir", ctypes.c_char_p),
+    _fields_ = [("struct_size", ctypes.c_uint32),
+                ("content_dir", ctypes.c_char_p), ("asset_dir", ctypes.c_char_p),
                 ("contact_step_s", ctypes.c_double)]
 
 
@@ -36,6 +39,12 @@ def load(path):
     p, i32, f64, s = ctypes.c_void_p, ctypes.c_int32, ctypes.c_double, ctypes.c_char_p
     signatures = {
         "tutti_version": (s, []),
+        "tutti_version_number": (i32, []),
+        "tutti_event_kind_count": (i32, []),
+        "tutti_event_kind_by_name": (i32, [s]),
+        "tutti_node_total": (i32, [p]),
+        "tutti_node_offset": (i32, [p, i32]),
+        "tutti_poses": (i32, [p, ctypes.POINTER(Trs), i32, ctypes.POINTER(Trs), i32]),
         "tutti_last_error": (s, []),
         "tutti_event_kind_name": (s, [i32]),
         "tutti_default_options": (None, [ctypes.POINTER(Options)]),
@@ -159,9 +168,91 @@ def main():
     check(lib.tutti_model_root(p, body, ctypes.byref(root)) == OK, "root")
     check(lib.tutti_model_root(p, 999, ctypes.byref(root)) == INVALID_ARGUMENT, "bad model")
     check(lib.tutti_sample(p, float("nan")) == INVALID_ARGUMENT, "NaN time")
+    check_lasting_surface(lib, p, scenes)
     lib.tutti_close(p)
     print(f"capi test: passed ({len(performers)} performers, {len(models)} models, "
           f"{total} events, {len(first)} values per pose)")
+
+
+def check_lasting_surface(lib, p, scenes):
+    """Version numbers, event kinds by name, struct_size, every failing call's message, the bulk
+    pose call and a music file opened directly (issue 29's C surface)."""
+    # The version: the string and the number agree.
+    major, minor, patch = (int(x) for x in lib.tutti_version().decode().split("."))
+    check(lib.tutti_version_number() == major * 10000 + minor * 100 + patch,
+          f"version number {lib.tutti_version_number()} vs {lib.tutti_version().decode()}")
+
+    # Event kinds by name, both ways; a kind or a name out of range says so.
+    count = lib.tutti_event_kind_count()
+    names = [lib.tutti_event_kind_name(k).decode() for k in range(count)]
+    check(count >= 10 and len(set(names)) == count, names)
+    check(all(lib.tutti_event_kind_by_name(n.encode()) == k for k, n in enumerate(names)), names)
+    check(lib.tutti_event_kind_name(count) is None and
+          str(count) in lib.tutti_last_error().decode(), "a kind out of range")
+    check(lib.tutti_event_kind_by_name(b"bow_change") == -1 and
+          "bow_change" in lib.tutti_last_error().decode(), "an unknown kind's name")
+
+    # Every getter that fails sets the message (a stale message would name another call).
+    lib.tutti_performer_name(p, 99)
+    check("tutti_performer_name" in lib.tutti_last_error().decode(), lib.tutti_last_error())
+    check(lib.tutti_node_name(p, 0, 1000000) is None, "node out of range")
+    message = lib.tutti_last_error().decode()
+    check("tutti_node_name" in message and "1000000" in message, message)
+    check(lib.tutti_morph_name(p, 0, -1) is None and
+          "tutti_morph_name" in lib.tutti_last_error().decode(), "morph out of range")
+    check(lib.tutti_node_parent(p, 999, 0) == -1 and
+          "model 999" in lib.tutti_last_error().decode(), "parent of a model out of range")
+    check(lib.tutti_model_count(None) == -1 and "NULL" in lib.tutti_last_error().decode(),
+          "a null performance")
+    check(lib.tutti_events(p, float("nan"), 1.0, None, 0) == -1 and
+          "NaN" in lib.tutti_last_error().decode(), "NaN event window")
+
+    # All models' poses in one call: the same transforms as model by model.
+    check(lib.tutti_sample(p, 7.25) == OK, "sample")
+    models = lib.tutti_model_count(p)
+    total = lib.tutti_node_total(p)
+    check(total == sum(lib.tutti_node_count(p, m) for m in range(models)), "node total")
+    roots = (Trs * models)()
+    nodes = (Trs * total)()
+    check(lib.tutti_poses(p, roots, models, nodes, total - 1) == INVALID_ARGUMENT and
+          str(total) in lib.tutti_last_error().decode(), "short nodes buffer")
+    check(lib.tutti_poses(p, roots, models, nodes, total) == OK, lib.tutti_last_error())
+    for m in range(models):
+        count = lib.tutti_node_count(p, m)
+        one = (Trs * count)()
+        check(lib.tutti_model_pose(p, m, one, count) == OK, "pose")
+        offset = lib.tutti_node_offset(p, m)
+        check(all(bytes(one[n]) == bytes(nodes[offset + n]) for n in range(count)),
+              f"model {m}: bulk pose differs")
+        root = Trs()
+        check(lib.tutti_model_root(p, m, ctypes.byref(root)) == OK, "root")
+        check(bytes(root) == bytes(roots[m]), f"model {m}: bulk root differs")
+    check(lib.tutti_poses(p, None, 0, nodes, total) == OK, "nodes only")
+
+    # Options: struct_size must be set; tutti_default_options sets it.
+    options = Options()
+    handle = ctypes.c_void_p()
+    status = lib.tutti_open(os.path.join(scenes, "quartet.json").encode(), ctypes.byref(options),
+                            ctypes.byref(handle))
+    check(status == INVALID_ARGUMENT and "struct_size" in lib.tutti_last_error().decode(),
+          f"options without struct_size: {status}")
+    lib.tutti_default_options(ctypes.byref(options))
+    check(options.struct_size == ctypes.sizeof(Options), f"struct_size {options.struct_size}")
+
+    # A piece of music opens as `tutti render PIECE` plays it: the scene tutti drafts for it.
+    music = os.path.join(scenes, "..", "music", "quintet.musicxml")
+    status = lib.tutti_open(music.encode(), ctypes.byref(options), ctypes.byref(handle))
+    check(status == OK, f"open quintet.musicxml: {lib.tutti_last_error().decode()}")
+    families = {lib.tutti_performer_family(handle, i).decode()
+                for i in range(lib.tutti_performer_count(handle))}
+    check(lib.tutti_performer_count(handle) >= 5 and families == {"brass"},
+          f"{lib.tutti_performer_count(handle)} performers, {families}")
+    check(lib.tutti_sample(handle, 3.0) == OK, "sample the drafted scene")
+    lib.tutti_close(handle)
+    check(lib.tutti_open(os.path.join(scenes, "no_such.mid").encode(), None,
+                         ctypes.byref(handle)) == BAD_INPUT and
+          "no_such.mid" in lib.tutti_last_error().decode(), "a missing music file")
+    lib.tutti_close(None)
 
 
 main()
