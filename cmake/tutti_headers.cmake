@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Every library is included as <tutti/<folder>/header.hpp>, in the build tree as when installed.
 # In the build tree the include root (build/include) holds a link tutti/<folder> to each library
 # folder, so the source tree keeps its layers (engine/, systems/, app/, ...) while the include

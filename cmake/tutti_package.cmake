@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # `cmake --install`: tutti as a relocatable CMake package (docs/embedding.md, "Using the installed
 # package"). Installed: the libraries below and their headers (include/tutti/<folder>/*.hpp, the
 # same paths the code includes), lib/cmake/tutti/ (tuttiConfig.cmake, tuttiConfigVersion.cmake,
@@ -130,3 +131,5 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/package/tuttiConfigVersio
 install(FILES ${PROJECT_BINARY_DIR}/package/tuttiConfig.cmake
               ${PROJECT_BINARY_DIR}/package/tuttiConfigVersion.cmake
         DESTINATION ${TUTTI_INSTALL_CMAKEDIR} COMPONENT dev)
+# The licence goes with every installation (README.md's "Licence": the dependencies' own).
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How a performer's body moves away from the instrument's stock pose at the current frame, on the
 // performer entity: sway, weight shifts, the breathing body, the lead's cues, the editor's

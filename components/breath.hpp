@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A wind player's breathing at the current frame, on the performer entity. Written every frame by
 // the brass pose system from the breath plan (Phase::evaluate); read by ensemble-variation (the

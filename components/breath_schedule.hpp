@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The breaths a wind player takes over the whole piece, as planned (immutable once planned), on
 // the performer entity: the editor's timeline draws them, a host reads them as events. Breath is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One finger of one hand: the joint angles that pose it and where its tip is. Written every frame
 // by the finger-motion system (Phase::evaluate), read by posing and rendering.

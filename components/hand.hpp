@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One of a pianist's hands. Written every frame by the finger-motion system (Phase::evaluate)
 // from the planned hand path; read by posing (skeleton) and rendering.

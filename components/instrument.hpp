@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The instrument a performer plays (an entity of its own, linked to the performer): which one,
 // by the id of its data file (content/instruments/<id>.json), and who holds it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A brass player's embouchure at the current frame, on the performer entity; drives the face's
 // morph targets. Written every frame by the brass pose system (Phase::evaluate).

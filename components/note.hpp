@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A note of the piece as an entity: what sounds, when, who plays it with which finger, and whether
 // it sounds at the current frame. The stage makes one per note of every score, as written; the

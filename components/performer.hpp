@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A musician in the scene. The seed makes every per-performer variation reproducible.
 

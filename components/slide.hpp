@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A trombone's slide, on the instrument entity, at the current frame. Written every frame by the
 // brass pose system (Phase::evaluate); read by posing (the slide node, the player's right arm).

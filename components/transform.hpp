@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where an entity is: position in millimetres and a unit quaternion, in the frame its kind
 // says.

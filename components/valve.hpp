@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The valves of a valved brass instrument (or a trombone's trigger), on the instrument entity:
 // how far each is pressed at the current frame. Written every frame by the brass pose system

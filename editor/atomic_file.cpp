@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/editor/atomic_file.hpp>
 
 #include <fcntl.h>

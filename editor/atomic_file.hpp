@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Saving without ever losing the user's file: the new contents go to a temporary file beside it,
 // are flushed to the disk (fsync), and only then replace the file by rename(2), which is atomic.

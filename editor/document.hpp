@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // An open scene file in the editor: its JSON (keys in the user's order), the Scene it parses to,
 // the undo/redo history, and saving. Every edit goes through apply(), which keeps the document

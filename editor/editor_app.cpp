@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/editor/editor_app.hpp>
 
 #include <GLFW/glfw3.h>

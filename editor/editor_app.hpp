@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The tutti-editor program: a window with the scene's 3D view (runtime::ScenePlayer), the
 // editor's panels over it (editor_ui.hpp through runtime::ImGuiLayer), the session re-planned on

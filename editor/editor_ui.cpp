@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/editor/editor_ui.hpp>
 
 #include <imgui.h>

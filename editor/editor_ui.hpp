@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The editor's panels (Dear ImGui 1.86), drawn over the 3D view: the transport, the timeline
 // (bars and beats, each performer's notes, breaths, expressions, the cues and the camera cuts),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Edits of a scene document as data: each JsonChange says what is at one JSON pointer before and
 // after, so an edit can be applied and reverted exactly (undo / redo), and kept in a history.

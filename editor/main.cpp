@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tutti-editor SCENE [--script FILE]: edit a scene's performance metadata over its 3D view.
 #include <CLI/CLI.hpp>
 #include <iostream>

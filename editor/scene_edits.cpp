@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/editor/scene_edits.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The editor's edits, each built as an Edit (json_edit.hpp) from the document as it is: set a
 // variation parameter, re-roll a seed, add / move / delete breath marks, cues, expressions and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/editor/scene_json_format.hpp>
 
 #include <algorithm>

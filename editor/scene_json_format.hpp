@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Writes a scene document the way people write them by hand: objects one key per line, short
 // arrays and small objects on one line ("position_m": [0, 1.7, 6.5]), two-space indents. The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti-editor SCENE --script FILE`: the editor driven by a list of actions, one per line, for
 // automation and tests. The actions are the UI's (each edit goes through Session::apply):

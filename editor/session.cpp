@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/editor/session.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The editor's model: the open Document and the Stage planned from it. Every edit re-plans the
 // stage (the models are shared with the previous stage, so a renderer stays valid) before it is

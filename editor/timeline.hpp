@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the editor's timeline shows, read from a planned stage: bar lines and beats from the tempo
 // map and time signatures, each performer's notes and planned breaths (marked or by the rules),

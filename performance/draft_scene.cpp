@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/performance/draft_scene.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A scene drafted from a piece of music alone (`tutti scene new`, `tutti render PIECE.mid`): the
 // piano parts go to the pianist, each brass part gets as many players as it has voices, on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/performance/families.hpp>
 
 #include <array>

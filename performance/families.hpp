@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The instrument families tutti stages, in order (brass players, then the pianist): the one place
 // that lists them. A program with families of its own passes its list to stage::build_stage.

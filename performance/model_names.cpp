@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/performance/model_names.hpp>
 
 #include <algorithm>

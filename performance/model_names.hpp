@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The names a staged scene's performers and models go by outside tutti (a host engine's nodes,
 // the clips and nodes of `tutti export`): each performer's name ("pianist (piano)" when an

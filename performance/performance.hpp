@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // tutti::performance — a scene's performance for any engine or renderer, with no Vulkan, window or
 // sound device. A host opens a scene once (it is loaded, planned and staged with the default

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/performance/pose_check.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Contacts as measured facts: the staged scene posed frame by frame and the posed skeletons read
 // back — where fingertips are against the buttons and keys they press, where the hands are against

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A user asset mapping file (`*.mapping.json`, format in scene/README.md): lets a scene use
 // the user's own glTF character, hands or instrument (e.g. a rig exported from a DCC tool) by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/scene/json_fields.hpp>
 
 #include <cmath>

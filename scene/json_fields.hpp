@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Typed field reads for the scene and mapping loaders, on top of content::JsonReader: each
 // returns the value or a one-line "FILE: /path/key: reason" error. Absent optional fields keep

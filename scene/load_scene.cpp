@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/scene/load_scene.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reading a scene file (format: scene/README.md) into a Scene, strictly: every object is
 // checked for unknown keys, every value for its type and range, every referenced file for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/scene/performance_marks.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The performance marks of a scene file (breath marks, expressions, finger pins, cues): the
 // editor's timeline edits, read as strictly as the rest of the scene. Internal to tutti_scene.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A cutscene as plain data (content/scenes/*.json, format in scene/README.md): which music,
 // who plays it where (brass performers, a pianist), the cameras and the shot list that cuts

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Blender side of scripts/blender-comparison: imports tutti's exported performance (.glb), puts
 # the scene file's camera and key light in, renders frames with one engine and prints
 # "ENGINE ms_per_frame frames" (the import and the first, warm-up frame not counted).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/stage/body_retarget.hpp>
 
 #include <algorithm>

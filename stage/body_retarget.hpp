@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A user's character posed through a stand-in (retargeting by bone directions).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // An instrument family as a plugin (Bevy's Plugin): everything about pianos, or about brass, in
 // one place. A family adds its systems to the schedule's phases and, for a scene, plans its

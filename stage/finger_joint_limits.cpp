@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/stage/finger_joint_limits.hpp>
 
 #include <algorithm>

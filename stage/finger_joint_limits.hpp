@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How far each finger joint may turn (content/generator/hand_rig.json's joint_limits_deg), and
 // the one reading of a joint's flexion and spread that the posing code clamps to and check-pose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/stage/fingertip_reach.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Hands placed by their fingertips: a trumpeter's right hand whose index, middle and ring
 // fingertips rest on three valve buttons, a pianist's five on the keys. The hand's frame comes from the buttons and the instrument's up, the wrist

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/stage/model_binding.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Binding a model to what a family needs of it: the generated asset, whose roles are its node
 // names, or a user's model through a mapping file (scene/asset_mapping.hpp: roles → the user's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The performer rig both families pose (content/generator's performer.glb, or the stand-in for a
 // user's character, body_retarget.hpp — both with tutti's conventions: identity rest rotations,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/stage/stage.hpp>
 
 #include <cstdlib>

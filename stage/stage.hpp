@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Stage: a scene made ready to play. build_stage() (build_stage.hpp) does the offline half once:
 // it loads the music, lets each instrument family (FamilyPlugin) plan its performers, spawn

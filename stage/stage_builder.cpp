@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/stage/stage_builder.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Building a stage: build_stage() loads the scene's music, makes a Note entity for every note,
 // places the floor and lets each family (FamilyPlugin) build its performers through a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/stage/two_bone_ik.hpp>
 
 #include <algorithm>

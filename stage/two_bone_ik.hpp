@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Analytic two-bone IK (shoulder → elbow → wrist) on a posed model: turns the upper and the lower
 // bone so the end of the chain reaches a world-space target, the elbow bending toward a pole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Replaces the global allocation functions of the test program that links this file with ones
 // that count calls (see allocation_counter.hpp).
 #include "allocation_counter.hpp"

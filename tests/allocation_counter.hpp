@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // For tests that prove a function never allocates: link tests/allocation_counter.cpp into the
 // test program (it replaces the global operator new/delete with counting ones) and compare

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // stb_image's implementation for the PNG round-trip tests (third-party code, warnings off; link
 // this file into a test program that needs decode_png_for_test).
 #define STB_IMAGE_IMPLEMENTATION

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A fresh folder under the system temp dir for one test, named after it (and the process, so
 // parallel ctest runs never share one); removed afterwards.

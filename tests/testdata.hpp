@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the third-party inputs are. Tests that need them call TUTTI_REQUIRE_TESTDATA() first,
 // which skips with a clear message when ../shared/testdata is not beside the checkout.

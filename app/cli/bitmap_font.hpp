@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A 3x5 pixel font for the digits 0-9: enough to write finger numbers on a plot without a font
 // library. Row r of digit d is kDigits3x5[d][r]; bit 2 is the left column.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/brass_command.hpp>
 
 #include <algorithm>

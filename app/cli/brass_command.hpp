@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti brass FILE [--part NAME|INDEX] [--voice N] [--instrument ID] [--json]`: how every brass
 // player of a score plays — per note the sounding and written pitch, valves or slide position

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/check_pose_command.hpp>
 
 #include <algorithm>

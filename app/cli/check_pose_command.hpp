@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti check-pose SCENE` — the posed skeletons measured frame by frame (performance/
 // pose_check.hpp): fingertips on the buttons and keys they press, hands on the instruments, no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A `tutti` subcommand: its name, what it does, its options (each filling a field of the
 // command's options) and how it runs. Each <name>_command.cpp describes its own

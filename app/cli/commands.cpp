@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/brass_command.hpp>
 #include <tutti/cli/check_pose_command.hpp>
 #include <tutti/cli/rig_command.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Every `tutti` subcommand, in the order `tutti --help` lists them (commands.cpp). A new
 // subcommand is a <name>_command.hpp/.cpp with its register_<name>_command, and one line there.

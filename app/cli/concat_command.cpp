@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/concat_command.hpp>
 
 #include <unistd.h>

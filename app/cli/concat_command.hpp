@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti concat SCENE SLICE.mp4... -o OUT.mp4 [--no-audio] [--soundfont F] [--assets DIR]`
 // Joins slices of one render (`tutti render SCENE --frames A:B --no-audio -o slice.mp4`, made on

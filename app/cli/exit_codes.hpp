@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The exit codes of every tutti program (README "Exit codes"):
 //   0  done

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/export_command.hpp>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti export SCENE -o performance.glb [--fps N] [--seconds A:B | --frames A:B] [--assets DIR]`
 // The scene's characters, hands, piano, instruments and props with the performance baked as glTF

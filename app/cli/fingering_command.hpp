@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti fingering IN [-o OUT] [--format F] [--mode M] [--lookahead N] [--hand-size NAME]
 //                    [--weights FILE_OR_PRESET] [--keep-fingers] [--smoothing NAME] [--plot PNG]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/fingering_output.hpp>
 
 #include <charconv>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What `tutti fingering` writes, one function per format. All outputs are deterministic (no
 // timings): the same input gives the same bytes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/fingering_report.hpp>
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The human-readable report `tutti fingering` prints: per hand notes, corridor violations
 // (against the corridors the path was planned through and against the planner's originals),

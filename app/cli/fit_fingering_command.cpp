@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/fit_fingering_command.hpp>
 
 #include <chrono>

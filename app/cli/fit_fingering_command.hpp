@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti fit-fingering FILES... -o weights.json [--start PRESET_OR_FILE] [--hand-size NAME]
 //                      [--rounds N]`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/frame_range.hpp>
 
 #include <algorithm>

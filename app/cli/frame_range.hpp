@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which frames of a render to produce: parsing "A:B" (frames or seconds) against the output's
 // frame count, and the time of each frame (t = start + k / fps: exact, never accumulated).

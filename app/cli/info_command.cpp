@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/info_command.hpp>
 
 #include <memory>

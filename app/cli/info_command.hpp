@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti info FILE [--json]`: what is in a score file.
 // `tutti info --schedule SCENE`: the frame of a staged scene — each phase of the schedule with its

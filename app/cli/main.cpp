@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The `tutti` command: parse the arguments, run the one subcommand given, return its exit code.
 // Each subcommand describes its own options (<name>_command.cpp); commands.cpp lists them.
 

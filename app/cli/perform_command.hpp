@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti perform IN [-o OUT.mid] [--style NAME|all] [--seed N] [--hand-size NAME]`
 // Plays a MIDI or MusicXML file on the simulated piano: fingering and hand paths

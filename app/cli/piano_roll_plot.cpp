@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/piano_roll_plot.hpp>
 
 #include <algorithm>

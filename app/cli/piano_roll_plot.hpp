@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti fingering --plot out.png`: the performance as a piano roll (Sekiguchi & Eiho's
 // Figure 10, readable). x = time, y = keyboard position in millimetres (high keys on top, a grey

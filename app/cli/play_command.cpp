@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/play_command.hpp>
 
 #include <dlfcn.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti play SCENE` — the scene performing live in a window: the picture on the Vulkan device
 // (lavapipe when there is no GPU), the sound through FluidSynth's audio driver (a simulated,

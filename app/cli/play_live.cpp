@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/play_live.hpp>
 
 #include <tutti/audio/sound_font.hpp>

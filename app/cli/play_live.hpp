@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti play --midi-in PORT` / `--keyboard-piano`: the scene's pianist plays what comes in
 // instead of the score. Every frame the sources are polled at the host time, the live pianist

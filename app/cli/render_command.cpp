@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/render_command.hpp>
 
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti render SCENE -o OUT.mp4|OUT.png|FOLDER/` — an offline render of a scene (the scene's
 // cameras, shot list, lights and output settings) on the Vulkan device (lavapipe when there is no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/rig_command.hpp>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti rig FILE` — what tutti recognises in a character model by itself (engine/humanoid):
 // every role with the node it chose, the missing ones, units, height, up and facing, rest pose,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/run_tool.hpp>
 
 #include <fcntl.h>

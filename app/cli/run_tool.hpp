@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Runs an external tool (ffmpeg, ffprobe) from PATH with an argument vector — fork + exec, no
 // shell, so any file name is safe — and returns what it printed on stdout. Errors name `what`

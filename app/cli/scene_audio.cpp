@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/scene_audio.hpp>
 
 #include <cmath>

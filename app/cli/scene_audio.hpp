@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The sound of a rendered range of frames: the scene's scores, as played (Stage::sounding),
 // through FluidSynth from the

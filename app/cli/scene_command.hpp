@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti scene new PIECE -o scene.json` — a scene file drafted from a MIDI or MusicXML piece
 // (performance/draft_scene.hpp): the pianist, the brass players seated by section, cameras and a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/score_summary.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What `tutti info` reports about a score, computed once and printed as text or JSON.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/size_option.hpp>
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `--size WxH` as `tutti render` (an output, even sizes from 16x16) and `tutti play` (a window,
 // from 320x240) take it: one parser, one message, "--size "T": expected WxH, ..., from AxB to

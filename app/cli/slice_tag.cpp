@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/slice_tag.hpp>
 
 #include <cstdio>

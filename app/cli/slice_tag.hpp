@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a rendered .mp4 says about itself, so `tutti concat` can check that slices rendered on
 // different machines fit together: "tutti-slice frames=A:B fps=N tempo=T size=WxH lossless=0|1",

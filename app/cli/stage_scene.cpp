@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/stage_scene.hpp>
 
 #include <tutti/performance/draft_scene.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A scene file loaded and staged (plans, ECS world, models) for a command: its errors are one
 // line naming the file (scene::load_scene's own, or "<scene>: <why it cannot be staged>"). A

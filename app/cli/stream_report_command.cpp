@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/stream_report_command.hpp>
 
 #include <cstdio>

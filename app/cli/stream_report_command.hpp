@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti-stream-report FILE...`: the streaming fingering planner against the exact one
 // (fingering_planner/streaming_report.hpp), one Markdown table row per file and lookahead, then

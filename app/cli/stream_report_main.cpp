@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tutti-stream-report: its own program (not a `tutti` subcommand) so the streaming figures can
 // be re-made without touching the main command line.
 #include <CLI/CLI.hpp>

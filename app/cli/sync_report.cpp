@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/sync_report.hpp>
 
 #include <tutti/audio/energy_rise.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How well the picture and the sound agree, measured rather than assumed. Two independent
 // sides:

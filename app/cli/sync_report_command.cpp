@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/sync_report_command.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `tutti sync-report SCENE` — renders the scene's audio, finds the note onsets in it, reads the
 // contact times off the animation and prints how far apart they are (sync_report.hpp).

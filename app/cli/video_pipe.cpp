@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/cli/video_pipe.hpp>
 
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Encodes RGBA frames to H.264 (yuv420p, MP4), with an optional AAC track from a WAV file, by
 // piping them into Debian's ffmpeg; no shell is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The `--weights` option shared by `tutti fingering` and `tutti fit-fingering`: a preset name
 // from content/piano/fingering/ ("default", "paper") or a path to a weights .json file (it

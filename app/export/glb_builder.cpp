@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/export/glb_builder.hpp>
 
 #include <algorithm>

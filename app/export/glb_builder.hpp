@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A glTF 2.0 binary (.glb) built in memory: the JSON document (nlohmann, keys sorted, so the same
 // calls give the same bytes) and one BIN buffer that accessors append to. Every buffer view is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/export/keyframe_reduction.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Keyframe reduction for baked animation: which of a channel's evenly spaced samples to keep so
 // that glTF's LINEAR interpolation between the kept ones (lerp for vectors and weights, slerp for

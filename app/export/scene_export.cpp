@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/export/scene_export.hpp>
 
 #include <algorithm>

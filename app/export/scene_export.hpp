@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A staged scene's performance as one glTF 2.0 binary: every placed model (characters, hands,
 // piano, instruments, props) with its meshes, materials, skins and morph targets, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/live/alsa_midi_source.hpp>
 
 #include <alsa/asoundlib.h>

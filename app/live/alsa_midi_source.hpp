@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Live MIDI from the ALSA sequencer: opens a client "tutti" with one input port "live in" and,
 // when asked, subscribes it to a source port. `port`:

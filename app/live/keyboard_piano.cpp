@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/live/keyboard_piano.hpp>
 
 #include <algorithm>

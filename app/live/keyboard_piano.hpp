@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The computer keyboard as a piano (the layout of most music programs' "typing keyboard"):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/live/live_hand_path.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A hand path for live notes: the hand holds still, and when a hand's keys change it moves to
 // its new place with a quintic that starts from the hand's current position, velocity and

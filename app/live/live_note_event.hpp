@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Live note input: what a MIDI keyboard (ALSA sequencer), the computer keyboard or a test script
 // sends, and the one interface `tutti play` polls every frame. Sources are polled from one

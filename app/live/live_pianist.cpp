@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/live/live_pianist.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The pianist playing what arrives live: note events are fingered by the streaming planner
 // (fingering_planner/streaming_piano.hpp: live hand split, lookahead 0 by default, decided in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/live/live_synth.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Live notes made audible: a FluidSynth synth (General MIDI piano, channel 1) on the sound
 // card through FluidSynth's audio driver, note-ons and note-offs sent the moment they are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/live/scripted_source.hpp>
 
 #include <algorithm>

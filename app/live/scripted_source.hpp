@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A LiveNoteSource that replays a list of events at their times: tests and benchmarks feed the
 // live path exactly as a MIDI device would, without hardware.

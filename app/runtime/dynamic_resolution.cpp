@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/runtime/dynamic_resolution.hpp>
 
 #include <algorithm>

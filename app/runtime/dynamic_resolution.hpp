@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // DynamicResolution: how much of the window the 3D view renders, chosen each frame from the last
 // frames' cost so an interactive view keeps its frame rate on a slow device (lavapipe on two

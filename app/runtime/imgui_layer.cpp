@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/runtime/imgui_layer.hpp>
 
 #include <backends/imgui_impl_glfw.h>

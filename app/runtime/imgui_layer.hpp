@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // ImGuiLayer: Dear ImGui (1.86, Debian's libimgui-dev) drawn over a WindowTarget's picture, for
 // the editor's panels. It owns the ImGui context, the GLFW and Vulkan backends, their

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/runtime/input_bindings.hpp>
 
 #include <GLFW/glfw3.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The keys and the mouse of `tutti play` (and the editor's viewport) as actions: a pure mapping
 // from GLFW key / button codes, so it is tested without a window and a game can rebind it.

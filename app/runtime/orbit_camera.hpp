@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // OrbitCamera: the free camera of `tutti play` and the editor. It circles a target point
 // (yaw about +Y, pitch above the horizon), zooms along the line of sight and pans the target in

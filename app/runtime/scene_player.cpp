@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/runtime/scene_player.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // ScenePlayer: a scene performing live — the staged scene (stage::Stage), its renderer for one
 // FrameTarget, the transport (sound and clock) and the camera: the scene's shot list

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/runtime/scene_sound.hpp>
 
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene's sound for live playback: the stage's scores as played (Stage::heard_scores) as one
 // SynthTimeline at a practice tempo, wind attacks compensated (as `tutti render` does), opened

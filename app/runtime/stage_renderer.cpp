@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/runtime/stage_renderer.hpp>
 
 #include <tutti/runtime/stage_view.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Draws a stage as its last Stage::run posed it: a model renderer made for the stage's models, the
 // scene's lights and background, the caller's camera. `tutti render` (offscreen) and ScenePlayer

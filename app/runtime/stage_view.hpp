@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A stage as the renderer sees it: its placed models as render instances (pointing into the
 // PlacedModel components, as the last Stage::run posed them), the shot list's or a scene camera,

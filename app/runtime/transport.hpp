@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Transport: play / pause, seek, a loop [A, B) and the practice tempo of a performance, with
 // the audio device as the master clock (audio_sync::AudioClock over an audio::LiveOutput).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/runtime/view_stats.hpp>
 
 #include <imgui.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The statistics an interactive view shows on F3 (tutti play, the editor): the last frame's time
 // and rate, the smoothed time the dynamic resolution acts on, the 3D view's size against the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // trumpet.glb and trombone.glb: a B-flat trumpet with three piston nodes and a tenor trombone
 // with a slide node, real dimensions (README.md). Held instruments: the root's origin is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Parts the generated brass instruments share (brass_assets.cpp, upright_brass.cpp): pipes
 // through points, U-bends, bells, mouthpieces, millimetre helpers. Lengths in millimetres unless

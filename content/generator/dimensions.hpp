@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The assets' real dimensions (millimetres, degrees), read strictly from
 // content/generator/dimensions.json: every key required, unknown keys and out-of-range values are

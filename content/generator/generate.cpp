@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/generator/generate.hpp>
 
 #include <sstream>

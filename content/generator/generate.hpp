@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Writing the default assets: the models from piano_asset.hpp and props.hpp serialised as glTF
 // binary (.glb). Errors are one line naming the file and the reason.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/generator/gltf_builder.hpp>
 
 #include <algorithm>

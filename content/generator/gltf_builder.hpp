@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small helpers for building a glTF 2.0 model in memory: flat-shaded boxes and cylinders,
 // smooth tubes (swept circles, surfaces of revolution, capsules, spheres), one binary buffer, one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // hand_right.glb and hand_left.glb: a palm and three segments per finger, one skinned mesh, the
 // bones posed by the piano finger-motion system's angles (README.md, "Hands"). The performer rig

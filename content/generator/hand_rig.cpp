@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/generator/hand_rig.hpp>
 
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Everything the skinned hands are built from (README.md, "Hands"): per finger its root, segment
 // lengths and rest angles from the piano motion model's data (content/piano/finger_motion.json

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // horn.glb: a double horn. The leadpipe runs from the mouthpiece forward and down to four rotary
 // valves on the player's left (casings with rotor caps, rotor_1 .. rotor_4, that turn a quarter

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tutti_content_generator OUT_DIR [--content DIR]: writes the default glTF assets (README.md).
 #include <cstdio>
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // performer.glb: the skinned performer rig (README.md, "Performer"). An adult of about 1.75 m in
 // a dark suit, standing in the A-pose, facing +Z (the audience), `_l` bones at -X; the root

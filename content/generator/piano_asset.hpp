@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // piano.glb: an upright piano whose 88 keys are separate nodes, built from the keyboard geometry
 // in content/piano/keyboard.json (tutti::piano::Keyboard). See README.md for the node names and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The stage props: music_stand.glb and chair.glb. Simple shapes with real dimensions; every
 // part is a named node (README.md lists them). Origins on the floor, +Y up, metres; the player

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/generator/stage_asset.hpp>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // stage.glb: a wooden stage platform for the performers to stand on and cast shadows onto
 // (README.md). Origin at the centre of the floor's top surface (y = 0), front edge toward +Z.

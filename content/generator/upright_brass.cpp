@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/generator/upright_brass.hpp>
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // euphonium.glb and tuba.glb: upright valved instruments, four top-action piston nodes
 // (valve_1 .. valve_4, button tops at their origins, pressed along -Y) in a row on the player's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Sampled instruments take time to speak: in Debian's General MIDI font a piano note is heard
 // about 2 ms after its note-on, a trumpet note 5-20 ms after, a trombone note 20-80 ms after: the

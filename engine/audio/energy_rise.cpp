@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio/energy_rise.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where a sound starts, read the way a plain listener reads a waveform: the steepest rise of its
 // short-time energy in decibels within a span, timed at the sample that enters the window. The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio/fluid_synth_util.hpp>
 
 #include <mutex>

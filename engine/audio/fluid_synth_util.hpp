@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the offline renderer and the live output share about driving FluidSynth: owners for its
 // objects, its log kept quiet (tutti reports its own errors; the last FluidSynth error is kept

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio/live_output.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A SynthTimeline played in real time through FluidSynth's audio driver (PulseAudio, ALSA, …,
 // whichever FluidSynth finds, or the one named), reporting what a clock needs: how many frames

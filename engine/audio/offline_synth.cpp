@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio/offline_synth.hpp>
 
 #include <fluidsynth.h>

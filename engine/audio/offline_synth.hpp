@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Renders a SynthTimeline to interleaved stereo 16-bit PCM with FluidSynth, offline: no audio
 // device, one thread, no dither, so the same timeline and sound font give the same samples.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio/onset_detection.hpp>
 
 #include <kiss_fftr.h>

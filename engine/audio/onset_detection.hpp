@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Note onsets found in audio alone, with no knowledge of the score: a spectral-flux onset
 // detector (log-magnitude spectra, the rise of each bin over the maximum of its neighbours a few

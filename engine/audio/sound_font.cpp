@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio/sound_font.hpp>
 
 #include <cstdlib>

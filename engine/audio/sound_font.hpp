@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the General MIDI sound font is: an explicit path, else $TUTTI_SOUNDFONT, else the files
 // Debian's fluid-soundfont-gm (and other GM fonts) install.

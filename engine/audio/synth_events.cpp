@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio/synth_events.hpp>
 
 #include <algorithm>

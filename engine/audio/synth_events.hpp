@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scores of a scene as one time-ordered list of synthesizer events (program changes, sustain
 // pedal, note on/off) at audio frames, each part on its own MIDI channel with its General MIDI

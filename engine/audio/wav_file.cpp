@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio/wav_file.hpp>
 
 #include <cstring>

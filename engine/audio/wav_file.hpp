@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // 16-bit PCM WAV (RIFF) files: written atomically (a crash mid-write leaves the previous file),
 // read back with every header field and chunk size checked.

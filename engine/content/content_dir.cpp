@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/content/content_dir.hpp>
 
 #include <cstdlib>

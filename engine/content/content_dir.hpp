@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the data files (content/piano/..., content/instruments/...) are, when the caller does not
 // say (the APIs take a content folder as an option): the environment variable TUTTI_CONTENT_DIR

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/content/json_reader.hpp>
 
 #include <cmath>

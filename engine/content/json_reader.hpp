@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small helpers for reading the data files under content/ (JSON) into values with one-line errors
 // that name the file and the JSON path ("hands.json: /presets/small/scale: expected a number").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // "Did you mean" for a mistyped name: the closest of the names that exist, when one is close
 // enough to be what was meant — a word it starts (`fov` for `fov_deg`, `position` for

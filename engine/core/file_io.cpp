@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/core/file_io.hpp>
 
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Whole-file reads with a size cap, so a hostile or mistaken input (a 40 GB file, /dev/zero, a
 // directory) fails with a clear message instead of exhausting memory.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Errors as values (vk-bootstrap / ACL style): a reader never throws across a module boundary.
 // An Error's message is a single line that already names the file and the reason, e.g.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // splitmix64 (Steele, Lea, Flood 2014): one step of the generator from state `x` — add the golden
 // gamma, then mix. Every seeded choice in tutti derives its bits from it, so a seed means the same

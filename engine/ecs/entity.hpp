@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // An entity is a handle, not an object: a slot index plus the generation the slot had when the
 // handle was issued. Destroying an entity bumps its slot's generation, so every copy of the old

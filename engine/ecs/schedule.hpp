@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The frame loop as data: systems are plain functions run in fixed, named phases, so the order in
 // which the engine plans, syncs, evaluates, expresses, poses and renders is visible in one place

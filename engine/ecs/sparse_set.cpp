@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/ecs/sparse_set.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Component storage as sparse sets, after EnTT's sparse_set.hpp. A paged sparse array maps an
 // entity index to a position in two packed arrays, one of entities and one of components, kept in

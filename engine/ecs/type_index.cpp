@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/ecs/type_index.hpp>
 
 #include <atomic>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A dense, process-wide number per component type, so a World finds a type's pool by indexing a
 // vector instead of hashing. Numbers are handed out on first use and differ between runs: never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Readable component names for error messages, taken from the compiler's function signature so
 // that no RTTI or registration is needed. The text is whatever g++/clang print (e.g.

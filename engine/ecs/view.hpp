@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Views: the entities that have all of a set of components, and those components.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The World owns entities and their components (EnTT's registry, Bevy's World).
 //

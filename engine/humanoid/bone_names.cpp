@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/humanoid/bone_names.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Bone names as the rigs people ship spell them, reduced to a side and a plain base name:
 //   "mixamorig:LeftForeArm" -> left, "forearm"      "Armature|rig_Hips" -> none, "hips"

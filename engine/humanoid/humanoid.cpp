@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/humanoid/humanoid.hpp>
 
 #include <algorithm>

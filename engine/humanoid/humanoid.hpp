@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A humanoid recognised in a glTF model by itself: which node plays each of tutti's character
 // roles, and the facts a retarget needs (units, height, up and facing, rest pose, finger

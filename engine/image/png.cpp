@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The only translation unit with stb_image_write's implementation, compiled with warnings off
 // (third-party code).
 #include <tutti/image/png.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // PNG output for rendered frames and plots (stb_image_write; deterministic: fixed compression
 // level, no timestamps). Written atomically: a reader never sees half a file.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reading glTF accessors without trusting the file: every accessor is checked against its buffer
 // view and buffer (offsets, stride, count, with no integer overflow) and against the component

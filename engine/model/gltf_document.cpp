@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/model/gltf_document.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Parsing a glTF file's container and JSON with tinygltf, hardened against hostile input before
 // tinygltf sees it: the .glb chunk layout is checked here (tinygltf 2.7 trusts the BIN chunk's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/model/gltf_draco.hpp>
 
 #include <draco/compression/decode.h>

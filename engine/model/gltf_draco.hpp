@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // KHR_draco_mesh_compression: each compressed primitive decoded with Debian's libdraco into new
 // buffers, and its accessors (which the file declares without data) pointed at them. Counts are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/model/gltf_extensions.hpp>
 
 #include <meshoptimizer.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // glTF as real pipelines write it, made plain glTF around tinygltf (which reads none of this):
 //

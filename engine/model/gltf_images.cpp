@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The only translation unit with stb_image's implementation, compiled with warnings off
 // (third-party code; engine/model/CMakeLists.txt).
 #include <tutti/model/gltf_images.hpp>

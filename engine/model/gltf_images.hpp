@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Decoding a glTF image's bytes (PNG and JPEG with stb_image, WebP with libwebp — Debian's
 // libstb-dev and libwebp-dev) to 8-bit RGBA, refusing what a hostile file could use to exhaust

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tinygltf::Model → ModelAsset: every reference, count and accessor range checked
 // (model_asset.hpp).
 #include <algorithm>

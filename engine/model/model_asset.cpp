@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/model/model_asset.hpp>
 
 namespace tutti::model {

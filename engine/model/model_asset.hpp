@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // ModelAsset: a glTF 2.0 model (node hierarchy, meshes, metallic-roughness materials, skins,
 // morph targets) flattened into plain arrays the renderer uploads as they are, and that the pose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Rest pose, node and joint matrices, and the CPU reference of the skinning vertex shader.
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>

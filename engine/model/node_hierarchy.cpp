@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/model/node_hierarchy.hpp>
 
 #include <cmath>

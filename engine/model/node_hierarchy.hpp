@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The node tree of a glTF file: matrices decomposed into TRS, and an order in which parents come
 // before their children. Internal to tutti_model; errors are reasons without the file name.

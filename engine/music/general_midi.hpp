@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // General MIDI level 1 program names, for reports and instrument auto-detection.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/load_score.hpp>
 
 #include <algorithm>

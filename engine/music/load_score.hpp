@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One entry point for every score format. The format is decided by the file's bytes first
 // (MIDI "MThd"/"RIFF", zip "PK" = compressed MusicXML, '<' = MusicXML, "//" = PIG text), then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Bars and beats from a score's time signatures: which bar a moment falls in (for messages), and
 // how long a beat is there (for rules stated in beats, such as where a player breathes).

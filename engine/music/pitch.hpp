@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Spelled pitch names <-> MIDI keys. Middle C is "C4" = 60 (scientific pitch notation).
 // Accepted spellings: a letter A-G (either case), any run of '#' or 'b' (also "x" for a

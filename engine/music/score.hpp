@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The score model every reader produces and every planner consumes. Plain data: readers fill it,
 // `finalize_score` sorts it and derives seconds/beats from ticks, nobody else mutates it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/tempo_map.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Ticks <-> seconds <-> beats for one score. A "beat" here is always a quarter note; metre-aware
 // beats (dotted quarters in 6/8, ...) are computed by callers from the time signatures.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/buffer_upload.hpp>
 
 #include <algorithm>

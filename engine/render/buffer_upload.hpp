@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Device-local buffers filled once through a staging buffer (static geometry), and host-visible
 // buffers the CPU rewrites every frame (matrices, weights, uniforms).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/color_mesh_pipeline.hpp>
 
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // ColorMeshPipeline: triangles with a linear-RGB colour per vertex, depth-tested (LESS, writes
 // depth), no culling, one push-constant MVP (column-major glm::mat4, Vulkan clip space: y down,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // RAII for device-owned Vulkan handles, and the few allocation helpers the renderer needs
 // (vkguide's vk_images / vk_initializers split, without a general allocator yet).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // FrameTarget: where a frame is rendered — an offscreen image ring with readback
 // (OffscreenTarget) or a window's swap chain (WindowTarget). One interface, so the renderer never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/geometry_arena.hpp>
 
 #include <glm/glm.hpp>

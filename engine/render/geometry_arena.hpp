@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GeometryArena: the vertices, indices and morph deltas of every model a renderer draws, in three
 // device-local buffers (one vertex buffer binding, one index buffer, one storage buffer), so a

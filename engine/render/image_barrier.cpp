@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/image_barrier.hpp>
 
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One synchronization2 image layout transition, for the whole of a single-mip, single-layer image
 // (every image tutti makes). Record several with record_image_barriers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/material_table.hpp>
 
 #include <algorithm>

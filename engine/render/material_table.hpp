@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // MaterialTable: every material of the models a renderer draws, on the device — its textures
 // (base colour, metallic-roughness, normal, occlusion, emissive: RGBA8 images with mip levels

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/mesh_lod.hpp>
 
 #include <meshoptimizer.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Levels of detail and bounds for every primitive of a model, built once when a renderer loads
 // it (meshoptimizer, Debian's libmeshoptimizer-dev). lavapipe shades vertices and sets up

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/model_renderer.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // ModelRenderer: draws posed glTF models (model::ModelAsset + model::ModelPose) into a
 // FrameTarget with a shadowed key light, a fill light and hemisphere ambient, metallic-roughness

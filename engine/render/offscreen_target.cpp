@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/offscreen_target.hpp>
 
 #include <cstring>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // OffscreenTarget: a ring of N frames, each a colour image (R8G8B8A8_SRGB), a depth image and a
 // host-visible readback buffer, rendered with dynamic rendering (Sascha Willems'

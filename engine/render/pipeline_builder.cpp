@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/pipeline_builder.hpp>
 
 #include <string>

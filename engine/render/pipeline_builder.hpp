@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Graphics pipelines for dynamic rendering from a short description (vkguide's PipelineBuilder):
 // the fixed-function state tutti uses everywhere (triangle lists, dynamic viewport and scissor,

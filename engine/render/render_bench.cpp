@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tutti_render_bench [--device SEL] [--frames N] [--size WxH]: times clear + one triangle +
 // readback per frame on the chosen device, first one frame at a time (render, wait, read), then
 // pipelined through the 2-frame ring (frame k is read while k+1 renders). Prints ms per frame.

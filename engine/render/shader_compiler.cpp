@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/shader_compiler.hpp>
 
 #include <glslang/Public/ResourceLimits.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GLSL -> SPIR-V at run time with the glslang library, for shader hot reload (the editor). The
 // shipped shaders are still compiled at build time by glslangValidator and embedded

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Polled change detection for shader hot reload: a set of files (a shader and everything it
 // included, CompiledShader::included_files), each remembered by modification time and size. No

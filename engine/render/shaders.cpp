@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/shaders.hpp>
 
 namespace tutti::render::shaders {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SPIR-V of the shaders in engine/render/shaders/, compiled by glslangValidator at build time and
 // embedded in the library (no file lookup at run time).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/shadow_map.hpp>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The key light's shadow map: a square depth image rendered from the light with an orthographic
 // projection fitted around a bounding sphere, then sampled with depth comparison (hardware 2x2

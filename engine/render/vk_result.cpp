@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/vk_result.hpp>
 
 namespace tutti::render {

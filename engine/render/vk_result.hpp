@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Vulkan results as tutti errors (vk-bootstrap style): a failing call becomes an Error whose
 // message names the call and the VkResult, e.g. "vkCreateDevice: VK_ERROR_INITIALIZATION_FAILED".

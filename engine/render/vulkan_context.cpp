@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/vulkan_context.hpp>
 
 #include <algorithm>

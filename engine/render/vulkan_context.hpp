@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // VulkanContext: instance, optional validation layer with a message log, physical device
 // selection, logical device, one graphics queue and a command pool (Filament's VulkanContext;

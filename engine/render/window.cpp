@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/window.hpp>
 
 #define GLFW_INCLUDE_VULKAN

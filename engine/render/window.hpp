@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Window: one GLFW window for Vulkan (no OpenGL context), with GLFW's library lifetime counted
 // (glfwInit with the first window, glfwTerminate after the last). Errors are values: without a

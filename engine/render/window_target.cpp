@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/render/window_target.hpp>
 
 #define GLFW_INCLUDE_VULKAN

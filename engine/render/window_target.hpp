@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // WindowTarget: a FrameTarget that presents to a Window through a Vulkan swap chain (Filament's
 // VulkanSwapChain; vkguide's frame loop). Owns the surface, the swap chain and its image views,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /* tutti's C API: a scene's performance for any engine or language (C#, Python with ctypes, Godot
  * GDExtension, Unreal plugins). Opaque handles, plain structs, status codes; no Vulkan, window or
  * sound device. The library is libtutti.so (CMake: tutti::c).

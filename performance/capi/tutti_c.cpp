@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tutti.h over tutti::performance: handles own a Performance and its last Sample; errors become
 // status codes and a thread-local message; nothing throws across the boundary.
 #include "tutti.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A host that is not tutti's renderer: it opens a scene with tutti::performance alone (no Vulkan),
 // samples one performer's body at a fixed frame rate and writes it as BVH motion capture, the
 // skeleton named and shaped as the model's own nodes. Blender, MotionBuilder and most engines

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The brass family's own components, on each brass player's performer entity: what was planned
 // (BrassPlan: shared by a re-plan when nothing it depends on changed) and how the plan drives the

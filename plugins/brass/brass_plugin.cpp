@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass/brass_plugin.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The brass family: each brass player of the scene (plan_brass_player.hpp) as a performer entity
 // driven by the brass-motion system (Mouth, Breath, and the Valve or Slide of their instrument

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass/hold.hpp>
 
 #include <cmath>

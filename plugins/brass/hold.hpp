@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How a player holds an instrument, read from content/instruments/holds/<model>.json: where each
 // palm rests, which fingertip works which valve, how far the fingers curl, how the instrument is

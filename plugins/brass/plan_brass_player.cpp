@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass/plan_brass_player.hpp>
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Planning one brass player of the scene: their line from the part, valves or slide positions,
 // breaths and motion (systems/fingering_planner, systems/brass_motion). A previous stage's plan is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass/pose_brass.hpp>
 
 #include <algorithm>

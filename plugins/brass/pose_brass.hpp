@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Phase::pose for the brass family: components → the models' poses. Valves go down by their
 // press × travel, the slide out by its extension; the instrument hangs from the player's lips;

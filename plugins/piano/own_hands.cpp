@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/piano/own_hands.hpp>
 
 #include <algorithm>

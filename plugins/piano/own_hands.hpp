@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Hands other than tutti's hand models playing where those play: a user's character's own hands
 // (through its stand-in, stage/body_retarget.hpp) or a user's hand models. tutti's hand models

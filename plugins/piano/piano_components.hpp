@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The piano family's own components, on the pianist's performer entity: what was planned
 // (PianistPlan: the editor pins fingers on its notes, a re-plan shares it when nothing it depends

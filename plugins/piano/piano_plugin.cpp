@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/piano/piano_plugin.hpp>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The piano family: the scene's pianist (plan_pianist.hpp), their hands and fingers as entities
 // driven by the finger-motion system, and the piano, hand models, bench and performer rig posed

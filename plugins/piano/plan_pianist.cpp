@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/piano/plan_pianist.hpp>
 
 #include <cmath>

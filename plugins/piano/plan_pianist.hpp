@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Planning the pianist: their parts of the music, the fingering (the scene's pins re-plan only
 // the span around them), the hand paths and finger motion, and with a performance style what the

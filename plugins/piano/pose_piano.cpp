@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/piano/pose_piano.hpp>
 
 #include <algorithm>

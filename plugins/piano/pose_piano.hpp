@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Phase::pose for the piano family: components → the models' poses. Each finger's key turns by
 // its press depth × the key's dip; the hand models sit at their Hand position in the piano's

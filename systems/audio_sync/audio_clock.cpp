@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio_sync/audio_clock.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The engine's clock, taken from the audio (issue 6: "the animation clock locked to the
 // synthesized audio").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/audio_sync/audio_sync_system.hpp>
 
 namespace tutti::audio_sync {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The sync phase: audio_sync_system writes the frame's time (the World's ecs::FrameTime
 // resource) from the clock a consumer chose, the World's FrameClock resource:

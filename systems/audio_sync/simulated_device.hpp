@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // An audio device that is not there: it "plays" in whole periods at its own rate (a crystal a
 // little fast or slow) and reports the position and latency a real one would. tutti play uses it

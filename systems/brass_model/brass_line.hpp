@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One player's line on a brass instrument, as the brass fingering planner leaves it: monophonic
 // notes in time order (a part's chords split into voices; overlaps trimmed), each with its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_model/brass_physics.hpp>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The acoustics the fingering charts are derived from: the open harmonic series, how much a
 // valve combination lowers it (tube lengths add, so combinations come out sharp), and where a

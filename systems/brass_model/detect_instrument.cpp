@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // detect_instrument: which known instrument a score part is written for, from its name (words
 // in several languages, plurals) and else its General MIDI program.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Derives an instrument's fingering chart from its file: every way to play each written pitch
 // (valve combination or slide position × partial) from the physics in brass_physics.hpp, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_model/fingering_names.hpp>
 
 #include <cctype>

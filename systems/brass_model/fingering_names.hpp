@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Names of valve combinations and slide fingerings, both ways: "open", "1-3", "T-2" for valves;
 // "3", "T1" for a slide (trigger names, then the position). Used by the data files (preference

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_model/instrument.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A brass instrument as data (content/instruments/<id>.json): how it is named, how it transposes,
 // its range, its mechanism (valves or a slide), its open harmonic series, and the fingering chart

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One content/instruments/<id>.json as read and checked, before the chart is derived: the
 // instrument's identity, range, mechanism and open series (already in `instrument`, whose chart

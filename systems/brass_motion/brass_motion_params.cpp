@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_motion/brass_motion_params.hpp>
 
 #include <tutti/content/content_dir.hpp>

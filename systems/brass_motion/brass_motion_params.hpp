@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Timing and shape of valve, slide and embouchure motion (content/brass/motion.json).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The planned motion of one brass player's instrument and embouchure: immutable data, built once
 // from a fingered line (plan_brass_motion.hpp), evaluated at any t (evaluate_brass_pose.hpp).

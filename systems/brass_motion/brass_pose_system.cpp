@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_motion/brass_pose_system.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The ECS side of brass motion: a brass player's performer entity carries a handle to its
 // immutable planned motion and breathing; every frame (Phase::evaluate) brass_pose_system writes

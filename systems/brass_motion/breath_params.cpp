@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_motion/breath_params.hpp>
 
 #include <nlohmann/json.hpp>

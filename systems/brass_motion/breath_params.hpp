@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How a brass player breathes: inhale timing, the air model and catch-breaths
 // (content/brass/breath.json; README.md in this folder). Loading is strict: every key is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_motion/breath_plan.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where a brass player breathes, and how much air they have, over a whole line (Horii 2018's
 // rules plus an air model). Plan once; evaluate_breath(plan, t) is pure and allocation-free.

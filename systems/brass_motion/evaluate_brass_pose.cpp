@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_motion/evaluate_brass_pose.hpp>
 
 #include <algorithm>

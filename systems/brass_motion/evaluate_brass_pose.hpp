@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The instrument and embouchure of one brass player at time t: a pure, allocation-free function
 // of the plan and t (binary searches; same t → same pose; seek anywhere).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // From a fingered line (brass fingering planner) to the motion of valves, slide and embouchure.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/brass_motion/plan_brass_player.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Everything one brass player does, planned together from a fingered line: the breaths first
 // (they may shorten a note to make room for a catch-breath), then valves, slide and embouchure

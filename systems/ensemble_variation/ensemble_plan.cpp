@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/ensemble_variation/ensemble_plan.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The ensemble's body motion, planned once per scene (Horii 2018: sway, weight shifts, breathing,
 // the lead's cue, per-player variation), then evaluated per frame as a pure function of t

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/ensemble_variation/ensemble_variation_system.hpp>
 
 #include <tutti/components/body_motion.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The ECS side of ensemble variation: every performer entity in the plan carries an
 // EnsembleMotionHandle (the shared, immutable plan and its index in it) and a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The body motion of one planned performer at time t: a pure, allocation-free function of the
 // plan and t (seek anywhere, any order).

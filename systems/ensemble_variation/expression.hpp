@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The editor's expressions (issue 7): a span of time in which a player is shown working hard
 // (strain) or at ease (relaxed), on top of the planned motion. plan_ensemble cleans the spans

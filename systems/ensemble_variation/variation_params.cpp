@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/ensemble_variation/variation_params.hpp>
 
 #include <tutti/core/splitmix64.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A performer's variation parameters, each in [0, 1]: drawn from the performer's seed (each
 // field its own splitmix64 stream, so adding a field later leaves the others as they were), then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/finger_motion/evaluate_hand_pose.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Evaluation (runtime): the pose of a hand's five fingers at time t from a FingerMotionPlan.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Closed-form geometry of one finger, header-only and allocation-free (used by evaluate).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/finger_motion/finger_motion_params.hpp>
 
 #include <utility>

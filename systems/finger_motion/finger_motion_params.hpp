@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Finger geometry and key-stroke timing, from content/piano/finger_motion.json (medium hand; the
 // planner scales lengths by the hands.json preset). Strictly checked: unknown keys, missing

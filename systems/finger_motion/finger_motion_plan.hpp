@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The planned finger motion of one pianist: per hand, per finger, the sorted key contacts with
 // every timing decision already made (when the finger leaves for the key, reshapes, strikes,

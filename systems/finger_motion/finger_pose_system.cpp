@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/finger_motion/finger_pose_system.hpp>
 
 #include <tutti/components/finger.hpp>

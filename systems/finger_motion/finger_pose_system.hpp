@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The ECS side of finger motion: a pianist entity carries a handle to its immutable planned
 // motion; every frame (Phase::evaluate) finger_pose_system writes each Hand and Finger component

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The pose of one hand at one time: what evaluate_hand_pose writes into a caller-owned struct.
 // Angles radians, positions millimetres in the keyboard frame (x along the keys, y into the keys,

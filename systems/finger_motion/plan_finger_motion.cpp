@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/finger_motion/plan_finger_motion.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Planning (offline, allocates): Score + fingering + hand paths -> FingerMotionPlan.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A score's brass parts as players' lines. A part may hold several players ("2 Horns in E",
 // chords in a trumpet staff): voice 0 is the top note of every chord, voice 1 the next one down

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which valves / slide position play every note of a brass player's line: the cheapest fingering
 // for the whole line at once (dynamic programming over the notes, a state per fingering of the

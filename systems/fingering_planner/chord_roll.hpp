@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Chords one hand cannot span with the fingers it was given (a tenth for a medium hand: no
 // reference point of the hand puts every finger of the chord on its key, hand_model.hpp) are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The weights of the fingering cost, loaded from content/piano/fingering/<preset>.json.
 // "paper" reproduces Sekiguchi & Eiho (1999) exactly; "default" adds natural spacing, crossing

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/fingering_planner/event_dp.hpp>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Internal to the planners: the exact planner's dynamic programme over a contiguous range of one
 // hand's events, optionally entered from and left to fixed candidates (the unchanged neighbours

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/fingering_planner/exact_planner.hpp>
 
 #include <vector>

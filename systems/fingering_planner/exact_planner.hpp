@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The globally optimal fingering of one hand's notes: dynamic programming over events (notes
 // starting together), the state being the fingers of every key sounding at the event (held keys

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/fingering_planner/fingering_model.hpp>
 
 namespace tutti::piano {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Everything the planners need, loaded once: keyboard geometry, hand reach, cost weights.
 // Files: <content>/piano/keyboard.json, <content>/piano/hands.json,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/fingering_planner/hand_assignment.hpp>
 
 #include <algorithm>

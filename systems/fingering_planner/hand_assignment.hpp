@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which hand plays each note of a Score. In order of precedence, per part:
 //  1. Note::hand when the file states it (PIG channel 0 = right, 1 = left);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Internal to the planners: one hand's notes turned into events (notes starting together) with
 // slots (the keys sounding at the event: struck now or still held) and every admissible finger

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/fingering_planner/live_hand_split.hpp>
 
 #include <algorithm>

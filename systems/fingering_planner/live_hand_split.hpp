@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which hand plays a note that arrives live, decided at arrival (no lookahead, no undo): the
 // hand whose last struck key is nearest, unless that hand cannot take it — it already holds

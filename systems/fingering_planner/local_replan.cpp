@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/fingering_planner/local_replan.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Re-planning one hand after an edit (a finger pinned or unpinned, in the editor or a file)
 // without disturbing the rest of the piece: only a window of events around the edited notes is

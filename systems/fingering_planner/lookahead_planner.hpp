@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The paper's search (Sekiguchi & Eiho 1999): fingering is decided event by event; at each event
 // every fingering sequence of the next `lookahead` events (this one included) is evaluated from

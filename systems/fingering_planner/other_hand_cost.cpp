@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/fingering_planner/other_hand_cost.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The other hand's room: a hand's fingering is priced by how close it puts the hand to where the
 // other hand is at the same time. Two hands on neighbouring keys need about a hand's width

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Fingering for a whole Score: hands assigned (hand_assignment.hpp), each hand planned
 // (exact DP by default, or the paper's lookahead search), results mapped back to Score::notes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Both hands of a pianist, streaming: each arriving note is given a hand at arrival (the
 // caller's, or LiveHandSplit's) and then a finger by that hand's StreamingHandPlanner. A thin

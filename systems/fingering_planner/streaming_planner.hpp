@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The streaming fingering planner: notes are pushed one at a time as they arrive (live MIDI, or a
 // score fed in onset order) and each event (notes starting together) is given its fingers as soon

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/fingering_planner/streaming_report.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How close the streaming planner comes to the exact one on a whole score: the score's notes
 // are fed in onset order (offsets known, no deadline: only the lookahead limits what each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The cost model (Sekiguchi & Eiho 1999 plus the optional terms of CostWeights), on one event's
 // fingering and between two consecutive events of one hand. Pure functions; the planners call

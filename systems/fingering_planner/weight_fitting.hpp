@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Fitting the cost weights to annotated fingerings (Note::finger marks), and saving weights.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/key_action/humane_performance.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A pianist's performance in a style, from the fingering and the hands' paths: strokes
 // (note_strokes.hpp), the finger motion they make (finger_motion, with each contact's key travel

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/key_action/key_action_params.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The piano key as a lever, from content/piano/key_action.json: each key pivots on the balance
 // rail (pivot_y_mm into the keys) and is stopped by the key bed at the angle that gives

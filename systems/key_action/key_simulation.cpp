@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/key_action/key_simulation.hpp>
 
 #include <algorithm>

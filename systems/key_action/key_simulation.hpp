@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Sound from motion: every key's angle follows the fingertips that press it, and the notes are
 // what the keys do. Offline, over the planned motion (finger_motion::evaluate_finger_pose), at a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // From a style to strokes: how each note is struck (finger_motion::NoteStroke), offline.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/key_action/performance_report.hpp>
 
 #include <algorithm>

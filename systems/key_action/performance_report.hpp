@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a style made of a piece: how far the sounded onsets are from the written ones, how the
 // velocities spread, how many notes did not sound and why.

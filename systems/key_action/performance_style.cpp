@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/key_action/performance_style.hpp>
 
 #include <nlohmann/json.hpp>

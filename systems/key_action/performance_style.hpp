@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How a pianist's fingers strike, as data (content/piano/styles.json). The player means every
 // note to sound at its written time and loudness; a style says how fast and how faithfully the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/note_sounding/note_sounding_system.hpp>
 
 #include <tutti/components/note.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which notes sound at the frame time: note_sounding_system sets components::Note::sounding =
 // (onset_s <= t < offset_s and not silent) on every Note entity, in Phase::evaluate.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // default_content_dir moved to engine/content; the piano code keeps using it under its own name.
 

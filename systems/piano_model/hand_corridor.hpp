@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where one hand's reference point (the resting middle finger) may be while keys are held: the
 // fingering planner produces a sequence of corridors, spline-motion threads the hand's path

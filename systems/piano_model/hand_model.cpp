@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/piano_model/hand_model.hpp>
 
 #include <nlohmann/json.hpp>

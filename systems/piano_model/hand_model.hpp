@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which keys each finger reaches, relative to the hand's reference point (the resting middle
 // finger), after Sekiguchi & Eiho (1999). Finger f on a key at x requires the reference point in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The JSON helpers moved to engine/content (shared with the instrument files); the piano code
 // keeps using them under its own namespace.

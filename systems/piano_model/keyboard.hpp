@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The 88-key piano keyboard's geometry: the x position (millimetres, along the keyboard, 0 at
 // the left edge of the lowest key) of every key's centre line, and which keys are black.

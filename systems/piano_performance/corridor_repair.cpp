@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/piano_performance/corridor_repair.hpp>
 
 #include <algorithm>

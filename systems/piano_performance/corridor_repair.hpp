@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Makes the fingering planner's corridors acceptable to spline_motion::plan_hand_path without
 // failing the run. The planner may ask for the impossible in two ways this file repairs:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/piano_performance/performance_plan.hpp>
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A whole piano performance, offline: the fingering planner's fingers and corridors for each
 // hand, then each hand's smooth path through its corridors (spline_motion), with a report of

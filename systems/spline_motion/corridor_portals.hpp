@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Input validation and the reduction of corridors to "portals".
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The planned hand path: a piecewise polynomial x(t) (millimetres over seconds) and its pure,
 // allocation-free evaluation.

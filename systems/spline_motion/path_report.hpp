@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Checking a planned path against corridors: how often and how far it leaves them, and how
 // fast it moves. Offline (for tests, tools and logs); O(n log n) for n corridors.

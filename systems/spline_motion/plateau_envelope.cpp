@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/spline_motion/plateau_envelope.hpp>
 
 #include <algorithm>

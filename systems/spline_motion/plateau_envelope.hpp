@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A smooth path that is always at least as high as every span of need, never higher than the
 // highest need, and never faster than one ease. Used wherever a body part must be "at least this

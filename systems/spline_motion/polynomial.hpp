@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A polynomial of degree <= 5 in local time dt = t - t0 (seconds), value in millimetres: the
 // piece of a hand path between two knots. Header-only, allocation-free.

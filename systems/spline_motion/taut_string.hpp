@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The taut string: the shortest path x(t) through a sequence of hand corridors (Sekiguchi &
 // Eiho 1999's "straight as possible" hand path), computed in linear time.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti brass`: real pieces in, per-note fingerings, breaths and range reports out; bad input is
 // one error line and exit code 2.
 #include <tutti/cli/brass_command.hpp>

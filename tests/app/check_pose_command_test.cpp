@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti check-pose`: the bundled quartet's figures as JSON, --check's exit code, and bad input
 // as one error line with exit code 2.
 #include <tutti/cli/check_pose_command.hpp>

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Every pose limit on music nobody tuned for: `tutti check-pose --seconds all --json` on every
 third-party piece (../shared/testdata's MIDI and MusicXML, and tests/data/pieces/), whole pieces.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Runs a `tutti` subcommand in-process (its run_* function) and keeps its exit code and what it
 // printed, for the command tests.

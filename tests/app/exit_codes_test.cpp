@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The `tutti` command line as a user meets it: a mistyped command or option names the closest
 // one, and the exit code says whose problem it is — 2 bad input, 3 a missing environment (see
 // render_command_test and play_command_test), 1 tutti's own fault.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti export`: a .glb of the scene with one clip per performer plus the whole scene; the range
 // options; one-line errors for bad input, and a failed export never touches an existing file.
 #include <tutti/cli/export_command.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti fingering`: every output format, pins, round trips, determinism, errors, the plot.
 #include <tutti/cli/fingering_command.hpp>
 

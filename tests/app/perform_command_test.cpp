@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti perform`: the notes as the simulated keys sounded them, written as MIDI; a report per
 // style; deterministic; one-line errors for bad input.
 #include <tutti/cli/perform_command.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti play` with live input, as a process: what cannot work fails with one line before any
 // window opens — no ALSA sequencer on this machine (or no such port), a scene without a pianist.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti render` in-process on the real Vulkan device (lavapipe on CI): stills and PNG-folder
 // slices of the shipped piano scene are deterministic, a slice has exactly the full render's
 // pixels, and bad options give one-line errors.

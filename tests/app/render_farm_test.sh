@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # A render split with an existing job runner (GNU parallel, as docs/render_farm.md shows), joined
 # by `tutti concat`, equals a single render frame for frame and sample for sample; slices that do
 # not fit together are one-line errors.

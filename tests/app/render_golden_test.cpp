@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Golden images: the piano close-up, the brass-quartet wide shot and a textured character (a
 // Blender-made fixture with a PNG checker on its base colour, tests/data/characters/) rendered by
 // `tutti render --still` on lavapipe, compared with the PNGs committed in tests/data/golden/. Tolerance: a

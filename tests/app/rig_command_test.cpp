@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti rig`: the generated performer recognised without a mapping (every role, metres, 1.75 m,
 // facing +Z); the same figure packed by gltfpack; --mapping writes a file the scene loader
 // accepts; a file that is not a humanoid, or not a model, and a broken rig (no skin, a loop in the

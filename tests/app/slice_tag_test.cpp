@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The tag a rendered .mp4 carries so `tutti concat` can check its slices fit together.
 #include <tutti/cli/slice_tag.hpp>
 

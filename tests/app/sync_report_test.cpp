@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti sync-report` (app/sync_report*.hpp): the animation's contact times against the onsets
 // found in the rendered audio, on the shipped demo scenes; a deliberately delayed sound track is
 // caught; bad options are one-line errors.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Runs the real `tutti` process on every third-party file and on hostile inputs made here:
 # each run must end within the time limit with exit 0 (and a report) or exit 2 (and exactly one
 # "error: FILE: ..." line) -- never a crash, a hang or another code.

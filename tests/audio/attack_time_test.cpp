@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Attack compensation (audio/attack_time.hpp) with Debian's General MIDI font: attacks measured
 // per instrument (a trombone speaks later than a trumpet, a trumpet later than a piano), a line
 // with a slur and a rest heard on its score times once compensated, and the limits kept.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Where a sound starts by its energy (audio/energy_rise.hpp): a tone out of silence, a tone
 // entering over a sustained bass note (whose ripple is not a rise), and a span with no rise.
 #include <tutti/audio/energy_rise.hpp>

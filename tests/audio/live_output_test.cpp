@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Live output (audio/live_output.hpp): the simulated device's position, the audio pulled as the
 // driver would pull it equal to the offline render, seeking, an AudioClock following it, and a
 // real device when this machine has one (else the clear error without the simulated fallback).

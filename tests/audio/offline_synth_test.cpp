@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // FluidSynth offline rendering (audio/offline_synth.hpp) with Debian's General MIDI sound font:
 // a note sounds from its frame on and not before, the same timeline gives the same samples, and
 // a missing or broken sound font is a clear error.

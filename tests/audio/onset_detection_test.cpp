@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The onset detector (audio/onset_detection.hpp) on sounds whose onsets are known by
 // construction: synthetic tone bursts (instant and ramped attacks, chords, vibrato) and single
 // FluidSynth notes of the GM programs the demos use, placed at known frames.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scores -> synthesizer events (audio/synth_events.hpp) on the project's quartet and third-party
 // MIDI files: channels, programs, block-aligned frames, tempo factor, start time, pedal.
 #include <tutti/audio/synth_events.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // WAV writing and reading (audio/wav_file.hpp): round trip, and hostile or truncated files.
 #include <tutti/audio/wav_file.hpp>
 

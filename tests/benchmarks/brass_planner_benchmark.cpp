@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Brass planning throughput: a long trumpet line and a long trombone line (slide timing), one
 // core, notes per second.
 #include <benchmark/benchmark.h>

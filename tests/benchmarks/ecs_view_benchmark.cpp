@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // View iteration and entity creation at orchestra-plus scale (1,000,000 entities). Items are
 // entities visited (views) or created (creation).
 

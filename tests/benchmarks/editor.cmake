@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # editor: the cost of an edit (re-plan + undo).
 add_executable(editor_replan_benchmark editor_replan_benchmark.cpp)
 target_link_libraries(editor_replan_benchmark PRIVATE tutti::editor_core tutti_warnings

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What an edit costs in the editor: Session::apply re-plans what the edit touches (the
 // players whose inputs changed, the ensemble; for a pin the span around it) before accepting it.
 // Each iteration applies an edit and undoes it, so the document stays the same.

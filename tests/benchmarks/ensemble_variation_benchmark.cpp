@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ensemble body motion (systems/ensemble_variation) for a 10-minute part at 120 BPM in 4/4 with a
 // breath every 4 bars: planning one player, and evaluate_body_motion at random times (the cost a
 // frame pays per player).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # export: baking and writing a staged scene as glTF (tutti export), and the keyframe reduction.
 add_executable(export_benchmark ${CMAKE_CURRENT_LIST_DIR}/export_benchmark.cpp)
 target_link_libraries(export_benchmark PRIVATE tutti::export tutti::performance tutti::scene tutti_warnings

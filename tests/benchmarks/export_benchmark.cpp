@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What `tutti export` costs: posing the stage at every frame, reducing the keys and writing the
 // .glb, for ten seconds of each demo scene at 30 fps; and the reduction alone on a long smooth
 // channel. Counters: exported frames per second of export time, output bytes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // evaluate_hand_pose cost per call (one hand, five fingers) at 60 fps sequential t and random t.
 // Plan: 2000 right-hand notes (about 6 minutes), notes spread over all fingers.
 

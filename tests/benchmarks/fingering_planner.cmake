@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Exact fingering planner throughput (notes per second, one core).
 add_executable(fingering_planner_benchmark fingering_planner_benchmark.cpp)
 target_link_libraries(fingering_planner_benchmark PRIVATE tutti::fingering_planner tutti_warnings

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Exact planner throughput: a long single-line melody, and two-hand chordal music.
 #include <benchmark/benchmark.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hand path planning (taut string + smoothing) and evaluation at scale. Items are corridors
 // (planning) or evaluate() calls.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What "sound from motion" costs after the fingering and hand paths are planned: a style's
 // strokes, the finger motion they make, and the key simulation that finds every note's
 // escapement, velocity and release (systems/key_action), per style, on the piano demo and on a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Live input: the streaming planner per pushed note (lookahead 0, 3, 6) and the live pianist's
 # update per note (fingering + contacts + a new motion).
 add_executable(live_input_benchmark live_input_benchmark.cpp)

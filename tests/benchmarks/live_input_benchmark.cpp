@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Live input costs: the streaming planner per pushed note on the piano demo's notes (both hands,
 // in arrival order; the decisions included) for lookahead 0, 3, 6, and the live pianist's
 // update per note-on (planner, contacts, hand paths, a new PianistMotion).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // detect_onsets on 10 s of 48 kHz stereo: four voices changing note every 0.4 s with a 6 Hz
 // tremolo, like the quartet's texture (no sound font needed).
 #include <benchmark/benchmark.h>

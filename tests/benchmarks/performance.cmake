@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # performance: sample(t) per frame and opening a scene (tutti::performance, docs/embedding.md).
 add_executable(performance_benchmark ${CMAKE_CURRENT_LIST_DIR}/performance_benchmark.cpp)
 target_link_libraries(performance_benchmark PRIVATE tutti::performance tutti_warnings

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a host pays for tutti::performance: sample(t) — the whole frame (sync, evaluate, express,
 // pose) and every model's node transforms and morph weights copied out — per 60 fps frame of
 // each demo scene, over the first 10 s; and opening a scene (load, plan, stage, find the events).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # ms per frame of the demo scenes at 1280x720 (README figures): pose, render, render + encode.
 add_executable(scene_render_benchmark scene_render_benchmark.cpp)
 target_link_libraries(scene_render_benchmark PRIVATE tutti::app tutti::stage tutti::render

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Milliseconds per frame of the two demo scenes at 1280x720, 1x and 4x MSAA, on the Vulkan device
 // (lavapipe on a machine without a GPU): posing only, posing + rendering + readback, and all of
 // that + H.264 encoding through ffmpeg (what `tutti render -o OUT.mp4` does per frame). Frames

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // components/body_motion.hpp compiles on its own; a default BodyMotion is the stock pose.
 #include <tutti/components/body_motion.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Includes only its header first: it must compile on its own.
 #include <tutti/components/hand_side.hpp>
 

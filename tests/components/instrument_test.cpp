@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/components/instrument.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/components/mouth.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/components/note.hpp>
 
 #include <gtest/gtest.h>

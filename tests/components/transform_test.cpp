@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/components/transform.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/components/valve.hpp>
 
 #include <gtest/gtest.h>

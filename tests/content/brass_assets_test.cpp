@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/generator/brass_assets.hpp>
 
 #include <gtest/gtest.h>

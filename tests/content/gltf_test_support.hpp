@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared by the content generator tests: generate into a temporary folder, load a .glb back
 // with tinygltf, find nodes and meshes by name, check a model's buffers and accessors.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/generator/hand_asset.hpp>
 
 #include <gtest/gtest.h>

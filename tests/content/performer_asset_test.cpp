@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/generator/performer_asset.hpp>
 
 #include <gtest/gtest.h>

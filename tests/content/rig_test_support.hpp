@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared by the skinned-asset tests: node matrices from a loaded glTF, typed accessor reads, and
 // the checks every skin must pass (joint and matrix counts, IBM x bind pose = identity, weights).

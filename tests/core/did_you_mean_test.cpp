@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/core/did_you_mean.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/ecs/entity.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/ecs/view.hpp>
 
 #include <gmock/gmock.h>

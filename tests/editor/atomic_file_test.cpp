@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Saving never loses the user's file: the contents are either the old or the new ones, even when
 // the saving process is killed at a random moment, and the previous version is kept as .bak.
 #include <tutti/editor/atomic_file.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A scene open in the editor: edits keep it valid, undo/redo restore it exactly, saving is
 // atomic with a backup, and unsaved work survives in the autosave side file.
 #include <tutti/editor/document.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tutti-editor itself, under Xvfb: a script edits, saves and quits; the saved scene reopens with
 // every edit, and `tutti render --still` shows the change. Killing the editor in the middle of a
 // save leaves the previous file intact.

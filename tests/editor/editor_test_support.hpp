@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared by the editor tests: a scratch folder per test with copies of the shipped scenes (their
 // music paths point back into content/, so the copies load the real music).

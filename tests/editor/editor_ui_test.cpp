@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The editor's panels driven headless: a bare ImGui context (no window, no renderer), the mouse
 // moved and clicked through ImGuiIO for a few frames, and the model checked afterwards.
 #include <tutti/editor/editor_ui.hpp>

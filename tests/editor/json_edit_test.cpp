@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/editor/json_edit.hpp>
 
 #include <gtest/gtest.h>

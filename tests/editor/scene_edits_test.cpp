@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The editor's edits build the scene the loader reads: breath marks, cues, expressions, cuts,
 // pins, variation and seeds, each undone exactly.
 #include <tutti/editor/scene_edits.hpp>

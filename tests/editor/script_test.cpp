@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The editor's --script actions, run against a session with a host that records the transport.
 #include <tutti/editor/script.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The editor's model: each edit re-plans the stage before it is accepted, the timeline follows,
 // and the models are shared so a renderer survives the re-plan.
 #include <tutti/editor/session.hpp>

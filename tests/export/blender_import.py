@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Imports a .glb into an empty Blender scene (run headless: blender -b --factory-startup
 # --python blender_import.py -- FILE.glb FPS OUT.json) and writes what Blender made of it: the
 # actions with their frame ranges, the NLA tracks, armatures with their bones, meshes and shape

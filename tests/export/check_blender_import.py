@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Compares what Blender imported (blender_import.py's JSON) with what tutti exported (tutti
 export --json): every clip became actions named after it, each spanning the exported frames;
 there are armatures and shape keys. Prints a summary; exit 1 with the reasons on a mismatch."""

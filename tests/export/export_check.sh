@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # `tutti export` of a shipped scene, checked by real clients:
 #   1. the Khronos glTF validator (npm gltf-validator) reports zero errors;
 #   2. headless Blender imports it with one action set per clip (each performer, the whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Keyframe reduction: what is dropped is reproduced by glTF's interpolation between what is kept,
 // within the tolerance; straight lines and constants collapse; the span cap holds.
 #include <tutti/export/keyframe_reduction.hpp>

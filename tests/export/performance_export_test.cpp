@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tutti's glTF export, read back independently of the exporter: the file's own animation
 // (glTF's LINEAR interpolation between the kept keys) put every node of the demo scenes where
 // the stage put it at every exported frame, within half a millimetre; the clips are the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # `tutti export` of a scene whose player is a textured character (the Blender fixture
 # rigify_a_textured.glb, tests/data/characters/make_fixtures.py): the Khronos validator reports
 # zero errors and zero warnings, and the file carries the character's PNG, its texture, sampler

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Any bytes as .glb or .gltf: the loader returns a model or a one-line error naming the file.
 // Accepted models are posed (rest pose, world and joint matrices, every vertex deformed) so the
 // indices the loader promised to have checked are exercised too.

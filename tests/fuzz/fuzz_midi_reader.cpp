@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Any bytes: the reader returns a score or an error, never crashes or hangs. A score it accepts
 // must be sane and must survive a write/read round trip.
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Any bytes: the reader returns a score or an error, never crashes or hangs.
 #include <cstdint>
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Any text: the reader returns a score or an error; accepted scores round-trip through the writer.
 #include <cstdint>
 #include <cstdlib>

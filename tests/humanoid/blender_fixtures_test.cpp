@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Characters made by third-party tools (tests/data/characters/make_fixtures.py, run here with
 // Debian's Blender): Rigify's human meta-rig skinned and exported by Blender's glTF exporter,
 // under the Rigify, Mixamo (namespaced, plain, prefixed) and Unreal names, in metres and in

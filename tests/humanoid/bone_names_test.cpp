@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bone names from the rigs people ship, reduced to a side and a base (engine/humanoid).
 #include <tutti/humanoid/bone_names.hpp>
 

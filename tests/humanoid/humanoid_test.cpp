@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Humanoids recognised by themselves (engine/humanoid): one skeleton, spelled the way each
 // convention spells it (Mixamo with and without a namespace, Unreal with twist bones and
 // metacarpals, Rigify's metarig with palm bones and a spine chain, Blender .L/.R, Unity-like,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/image/png.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The ALSA sequencer input fails cleanly: one line, no crash, when there is no sequencer (this
 // build machine) or the port does not exist.
 #include <tutti/live/alsa_midi_source.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The computer keyboard as a piano: the layout, octave keys, releases after an octave change.
 #include <tutti/live/keyboard_piano.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pianist playing live input: scripted events through the same source interface as MIDI,
 // a 60 fps frame loop, and the latency from each event to its key contact (press depth 1 in the
 // evaluated pose), which must stay within one frame; the pose at t must depend only on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scripted events arrive at their times, in order, each once.
 #include <tutti/live/scripted_source.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Builds small glTF files in memory for the model tests: the JSON is a plain nlohmann::json the
 // test may edit (to make it hostile), the binary data one buffer. Output as .gltf text (the

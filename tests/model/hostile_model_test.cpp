@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hostile and broken files: each is one line "NAME: reason", never a crash, hang or huge
 // allocation (the asan build runs these under AddressSanitizer + UBSan).
 #include <gtest/gtest.h>

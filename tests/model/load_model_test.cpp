@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Loading valid glTF files: both containers, external and embedded buffers, index types,
 // generated indices and normals, skin attributes, strided accessors, node order, matrices,
 // materials, scenes, and the generated piano asset.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Posing: rest pose, world matrices, joint matrices, and deform_vertex against hand-computed
 // skinning and morph maths.
 #include <gtest/gtest.h>

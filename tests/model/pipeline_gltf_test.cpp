@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // glTF as real pipelines write it (engine/model/gltf_extensions.hpp): gltfpack's quantized and
 // meshopt-compressed output of the project's own models loads to the same shapes; sparse
 // accessors, eight weights per vertex and quantized attributes read as the spec says; required

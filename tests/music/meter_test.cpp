@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bars and beat lengths from time signatures.
 #include <tutti/music/meter.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/score.hpp>
 
 #include <gtest/gtest.h>

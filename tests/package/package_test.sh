@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The installed package, used as a game would (docs/embedding.md, "Using the installed package"):
 # installs the build into a fresh prefix, checks what was installed, builds the consumer project
 # (tests/package/consumer) against it and runs it on a scene from the installed share/ folder

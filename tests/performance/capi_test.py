@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The C API (tutti.h) from Python with ctypes, as a host in another language uses it.
 
     capi_test.py LIBTUTTI_SO SCENES_DIR

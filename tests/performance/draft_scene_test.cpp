@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A scene drafted from third-party music alone: which parts are played by whom, where the players
 // sit, that the cameras look at them and the cuts follow who plays, and that the document loads
 // as a scene with every part found.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tutti::performance: a host opens a scene and samples any time t — every model's node transforms
 // under its own node names, morph weights, and each performer's events around t — the same at
 // the same t whatever came before, and agreeing with what the stage shows.

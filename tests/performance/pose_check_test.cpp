@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Contacts as measured facts (performance/pose_check.hpp) on the bundled scenes: trumpeters'
 // fingertips on the buttons they press, left palms on the casings, no hand in a head or torso,
 // fingers inside their joint limits, pianists' pads on the key tops at key bottom and no key left

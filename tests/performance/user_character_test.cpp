@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Users' characters without mapping files: Blender-made rigs (tests/data/characters/
 // make_fixtures.py) named the Unreal way in centimetres and as VRM 1.0 play a trumpet and a
 // trombone when the scene names the model file itself; heads and torsos stay clear of the hands.

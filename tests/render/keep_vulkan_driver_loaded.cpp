@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // LeakSanitizer names a leak's module only while that module is still loaded. The Vulkan loader
 // unloads the driver at vkDestroyInstance, so lavapipe's small per-instance leaks would be
 // reported at exit from "<unknown module>" and no suppression could match them

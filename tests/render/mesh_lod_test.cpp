@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Detail levels and bounds (render/mesh_lod.hpp) on the generated performer and trumpet, checked
 // against the files' own triangles and the CPU skinning reference (model::deform_vertex).
 #include <tutti/render/mesh_lod.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ModelRenderer on the real device (lavapipe on CI), validation on: lighting and shadows, MSAA,
 // skinning and morph targets, each checked on pixels of models built in the test.
 #include <tutti/render/model_renderer.hpp>

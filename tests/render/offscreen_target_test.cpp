@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Renders into an offscreen target on the real device (lavapipe on CI) with validation on, reads
 // the pixels back and checks them.
 #include <tutti/render/offscreen_target.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A validated Vulkan context per test. No Vulkan device at all → the test prints
 // "SKIPPED: no Vulkan device" and is skipped (CI installs lavapipe, so there it runs). Any

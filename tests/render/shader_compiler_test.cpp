@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Runtime GLSL -> SPIR-V (render/shader_compiler.hpp) and the polled file watcher
 // (render/shader_watcher.hpp). Only the last tests need a Vulkan device.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // WindowTarget smoke test: a real window on an X server (ctest runs this program under
 // `xvfb-run`, a virtual one). Without a display the window tests print "SKIPPED: no display" and
 // skip; without a Vulkan device, "SKIPPED: no Vulkan device". Validation (with synchronization

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "x11_window_pixels.hpp"
 
 #include <GLFW/glfw3.h>

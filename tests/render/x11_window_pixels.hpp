@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reads back what the X server shows in a GLFW window (XGetImage), so a test can check that
 // presented frames arrived on screen. In its own file: Xlib's macros (Status, None, Bool) must

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The 3D view's scale chosen from the last frames' cost: it settles where the frame time meets
 // the target, does not hunt once there, and stays within its bounds when the target cannot be met.
 #include <tutti/runtime/dynamic_resolution.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ImGuiLayer under a real window (ctest runs this program under `xvfb-run`): an ImGui window
 // drawn in WindowTarget's overlay pass over a cleared, multisampled 3D pass, captured. Validation
 // with synchronization validation is on; any message fails. Without a display or a Vulkan

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/runtime/orbit_camera.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `tutti play` as a process: bad options and missing files fail with one line before any window
 // opens; under a display (ctest runs this program under `xvfb-run`) 20 frames of the piano scene
 // play on the simulated audio device, validated, and the last frame is written as a PNG (kept

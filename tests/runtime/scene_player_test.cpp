@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ScenePlayer on the piano scene, headless (an OffscreenTarget), silent (the transport on the
 // host clock): camera modes through the key bindings, the transport through them, and a drawn
 // frame. Skipped without a Vulkan device.

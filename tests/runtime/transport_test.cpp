@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Transport over the simulated audio device (LiveOutput with driver "simulated"), whose
 // position is a function of the host time passed in: every case is deterministic.
 #include <tutti/runtime/transport.hpp>

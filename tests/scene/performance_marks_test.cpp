@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The editor's performance marks in a scene file: breath marks, expressions, finger pins, cues.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pianist's performance style and where the piano's sound comes from, in a scene file.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/scene/scene.hpp>
 
 #include <gtest/gtest.h>

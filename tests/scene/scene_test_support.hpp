@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared by the scene tests: paths into the source tree and a scratch folder per test.
 

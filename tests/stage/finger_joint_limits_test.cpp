@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Finger joint limits: read from hand_rig.json (bad files named), read off a posed joint the way
 // check-pose measures it, and a knuckle turned past them brought back to them, no further.
 #include <tutti/stage/finger_joint_limits.hpp>

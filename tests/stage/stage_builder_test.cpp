@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Families plug into the stage through FamilyPlugin alone: a family of the test's own adds a
 // system, a performer and a model, and claims its notes; the stage's own frame systems (the
 // clock, the notes' sounding) run for every family.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The stage: the shipped scenes build; the pose at t is a pure function of t; pressed keys and
 // valves move their nodes; a user's own instrument model, through a mapping file with other node
 // names and centimetre units, moves exactly like the generated one.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Two-bone IK on a bare arm (shoulder, elbow, wrist; 0.3 m and 0.25 m bones hanging down): the
 // wrist reaches targets within reach, and with a soft reach the elbow straightens smoothly as a
 // target moves out past full stretch, instead of whipping straight.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Embedding tutti in a game loop (docs/embedding.md): load a scene, stage it, and every frame
 // pose it at the time *your* clock says and draw it into *your* frame. Headless here (an
 // OffscreenTarget, so it runs as a test without a display); a game passes its WindowTarget or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A bounds-checked, forward-only view of a byte range inside a file. Every read either succeeds
 // or reports failure without moving, so a parser can never step past the bytes it was given, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/midi/midi_reader.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Standard MIDI File reader: formats 0, 1 and 2, PPQ and SMPTE divisions, running status
 // (including across meta and sysex events, as real files do), sysex F0/F7, every meta event,

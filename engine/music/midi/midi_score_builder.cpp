@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/midi/midi_score_builder.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 3 of reading a Standard MIDI File: turn the decoded events of every track into the Score
 // model. What the events mean:

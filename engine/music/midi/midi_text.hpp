@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Text carried by MIDI meta events (track names, lyrics, markers, ...). The SMF specification
 // leaves the encoding open: modern files use UTF-8, older ones Latin-1 (or a local code page).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/midi/midi_writer.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Standard MIDI File writer: format 1, the score's own PPQ (SMPTE scores, and PPQ beyond the 15
 // bits a header holds, are written as PPQ 480 at their tempo map), a conductor track (tempo, time

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Sustain pedal spans as MIDI can express them: per part, no two spans overlap (a second
 // "pedal down" while the pedal is down means nothing) and none is empty. Spans that merely touch

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 1 of reading a Standard MIDI File: find the header and the track chunks. Nothing inside a
 // track is looked at here; every chunk length is checked against the bytes actually present

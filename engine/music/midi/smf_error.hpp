@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One spelling for every MIDI reader error, so users (and tests) can rely on the shape:
 //   "<file>: at byte <offset>: <reason>"                 (file structure)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/midi/smf_events.hpp>
 
 #include <tutti/music/midi/byte_cursor.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 2 of reading a Standard MIDI File: decode one MTrk chunk into timed events. Only syntax is
 // handled here (delta times, running status, event lengths); what the events mean is up to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/midi/smf_track_encoder.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Builds the bytes of Standard MIDI File chunks. The writer adds events in any order with a tick
 // and a rank (which of several events at one tick comes first); encode() sorts them, writes delta

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/fingering_text.hpp>
 
 #include <tutti/music/musicxml/xml_text_values.hpp>

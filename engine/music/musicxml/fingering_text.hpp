@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The text of a <fingering> mark as piano fingers. Editions write a plain finger ("3"), a
 // substitution while the key is held ("3-1", "3 1", "3–1", "31") or non-numeric marks (guitar

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/grace_placement.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where grace notes sound. MusicXML gives them no duration, so the reader decides:
 //

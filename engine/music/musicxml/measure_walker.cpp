@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/measure_walker.hpp>
 
 #include <algorithm>

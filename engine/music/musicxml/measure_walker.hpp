@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The walk through one part's measures. It keeps MusicXML's time cursor (<divisions>,
 // <duration>, <chord/>, <backup>, <forward>) in ticks and collects what sounds: notes (pitch,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/musicxml_document.hpp>
 
 #include <algorithm>

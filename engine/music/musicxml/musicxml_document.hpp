@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // From input bytes to a parsed MusicXML document, shared by the reader and the fingering writer
 // so both agree on what the document is and how its <note> elements are numbered.

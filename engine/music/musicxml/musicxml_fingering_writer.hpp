@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Adds fingering marks to an existing MusicXML document without disturbing anything else: for
 // every note of `fingered` with a finger and a source_index, the matching <note> element gets

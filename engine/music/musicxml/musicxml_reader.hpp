@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // MusicXML reader: partwise and timewise scores, uncompressed .xml/.musicxml and compressed
 // .mxl (a zip with META-INF/container.xml naming the root file; told apart by the zip

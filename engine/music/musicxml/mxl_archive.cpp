@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/mxl_archive.hpp>
 
 #include <zip.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The compressed MusicXML container (.mxl): a zip whose META-INF/container.xml names the score
 // ("rootfile full-path"). Only that one file is inflated, and never past a size cap, so a zip

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/notation_values.hpp>
 
 #include <algorithm>

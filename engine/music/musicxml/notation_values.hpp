@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What MusicXML's marks mean in numbers: dynamics as MIDI velocities, metronome marks as
 // tempo, <time> as a signature, written keys of transposing parts as concert keys.

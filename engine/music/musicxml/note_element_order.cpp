@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/note_element_order.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Inserting elements into an existing MusicXML element where the schema wants them, with the
 // surrounding indentation copied so a pretty-printed file stays pretty.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The parts of a MusicXML score: what <part-list> says about each (name, MIDI program and
 // channel, percussion keys) and which elements hold its measures. Partwise and timewise scores

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Writes an edited element back as text, reusing the original spelling wherever the element
 // came from the source: every original start tag is copied byte for byte (quotes, attribute

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/tick_resolution.hpp>
 
 #include <cmath>

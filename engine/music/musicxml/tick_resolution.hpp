@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One tick resolution for the whole score. MusicXML measures time in <divisions> per quarter
 // note, which may differ between parts and change mid-part; every value is scaled to a common

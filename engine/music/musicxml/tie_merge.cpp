@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/tie_merge.hpp>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Tied notes become one sounding note: a chain start -> (continue ->)* stop keeps the first
 // note's identity (source_index, finger, velocity) and takes the last note's offset.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/xml_source_range.hpp>
 
 #include <cstring>

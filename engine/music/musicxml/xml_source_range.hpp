@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where an element of a parsed document sits in the text it was parsed from, so an edited
 // element can be spliced back into the original bytes and everything around it stays exactly

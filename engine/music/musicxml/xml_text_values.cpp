@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/xml_text_values.hpp>
 
 #include <charconv>

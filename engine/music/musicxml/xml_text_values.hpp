@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reading numbers out of MusicXML element text. MusicXML numbers are xs:decimal / xs:integer
 // with optional surrounding whitespace; anything else is reported by the caller, never thrown.

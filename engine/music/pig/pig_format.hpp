@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // PIG fingering text format (plain text used by piano-fingering research): a header line that
 // starts with "//", then one note per line, tab separated:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 450
 // Writes linear colour; the sRGB attachment encodes it.
 layout(location = 0) in vec3 in_color;

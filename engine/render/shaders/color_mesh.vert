@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 450
 // Coloured mesh: object-space position and linear RGB colour per vertex, one MVP push constant.
 layout(location = 0) in vec3 in_position;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Morph targets, then skinning (glTF order): the world-space position and normal of this vertex.
 
 void deform(vec3 position, vec3 normal, uvec4 joints, vec4 weights, out vec3 world_position,

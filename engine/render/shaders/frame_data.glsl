@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What every lit and shadow shader sees: the frame's uniforms, the per-frame matrices and morph
 // weights, the model geometry's morph deltas, and the per-draw push constants. Must match
 // render/model_renderer.cpp (FrameUniforms, DrawConstants).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Metallic-roughness shading: a shadowed key light, a fill light, hemisphere ambient with a

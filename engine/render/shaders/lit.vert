@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Lit meshes: morph targets, GPU skinning, world position, normal and UVs for lit.frag.

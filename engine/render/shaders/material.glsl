@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A material's textures and their use (set 1): must match render/material_table.cpp
 // (MaterialUniforms, the binding order). Slots: 0 base colour (sRGB), 1 metallic-roughness
 // (G roughness, B metallic), 2 normal (tangent space), 3 occlusion (R), 4 emissive (sRGB).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Depth from the key light: the same deformation as lit.vert, so shadows move with the bodies.

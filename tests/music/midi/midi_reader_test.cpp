@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Byte-level tests of the MIDI reader: every file is built here, byte by byte, so each test
 // shows exactly the input it is about.
 

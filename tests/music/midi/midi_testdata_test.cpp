@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The reader against third-party files (../shared/testdata/midi), checked against an independent
 // reading by the python library mido, recorded in tests/data/midi/mido_expected.json by
 // tests/data/midi/make_expected_mido.py (the test never runs python).

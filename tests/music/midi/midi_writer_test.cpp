@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Writer tests: the bytes it produces, and round trips (write -> read) of hand-made scores.
 
 #include <tutti/music/midi/midi_writer.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What "the same music" means for a MIDI round trip (read -> write -> read): the same notes
 // (key, ticks, velocities, channel, part), tempo map, time and key signatures, pedals, parts

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Hand-made Standard MIDI Files for tests: every byte is spelled out in the test, these helpers
 // only add the chunk headers and lengths so a test reads like the file it builds.

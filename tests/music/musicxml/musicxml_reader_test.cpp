@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/musicxml_reader.hpp>
 
 #include <gtest/gtest.h>

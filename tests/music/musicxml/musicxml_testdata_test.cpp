@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The reader against third-party files: the Unofficial MusicXML Test Suite (one feature per
 // file), music21's Bach chorales and Clara Schumann polonaises, and pianoplayer's piano scores.
 // Expected values were worked out from the XML by hand (and a separate xml.etree script).

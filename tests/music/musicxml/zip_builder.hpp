@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A minimal zip writer for tests: "stored" (uncompressed) entries, enough to build .mxl
 // containers with chosen contents without a zip library in the test.

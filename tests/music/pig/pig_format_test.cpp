@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/music/pig/pig_format.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hold files (content/instruments/holds/): the bundled ones read, and a broken one is refused
 // with one line naming the file and the JSON path.
 #include <tutti/brass/hold.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The audio clock (audio_sync/audio_clock.hpp) against a simulated device: it never goes
 // backward, stays within a frame of what is heard for 10 simulated minutes with a device 0.1 %
 // fast (and slow), learns the device's rate, and seeks, pauses and loops.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sync phase's system: the frame's time from the clock the consumer chose.
 #include <tutti/audio_sync/audio_sync_system.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared by the brass_model tests: the shipped instruments, loaded once.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The acoustics behind the charts: the harmonic series' tuning, how valve combinations add tube
 // (and come out sharp), a double horn's side switch, and where a slide must be.
 #include <tutti/brass_model/brass_physics.hpp>

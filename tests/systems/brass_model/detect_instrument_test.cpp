@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // detect_instrument: part names in several languages, plurals, keys and transpositions, GM
 // programs; the real parts of the Bach chorales with trumpets and of Beethoven's 7th.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The derived charts against standard fingering charts: the source's table (Horii 2018), the
 // full primary charts of the B♭ trumpet and the tenor trombone, the F attachment, the double
 // horn's sides, the 4-valve euphonium and tuba; alternates and their order; invariants.

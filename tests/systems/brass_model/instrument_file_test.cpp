@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Loading content/instruments: every shipped file loads; a broken file gives one line naming
 // the file and the JSON path; overrides and optional parts of the format work.
 #include <tutti/brass_model/instrument_file.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // evaluate_brass_pose and evaluate_breath never allocate: this program replaces the global
 // operator new with a counting one and evaluates many frames after planning.
 #include <gtest/gtest.h>

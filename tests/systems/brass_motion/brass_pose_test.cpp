@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Valve, slide and embouchure motion: valves down at every onset, the slide at its position at
 // every onset and never faster than the instrument allows, tension by register, pure evaluation,
 // and the ECS system writing the components.

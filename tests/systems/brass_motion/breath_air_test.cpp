@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The air model: drain by loudness and register, strain, catch-breaths, determinism, and the
 // continuity of evaluate_breath.
 #include <gtest/gtest.h>

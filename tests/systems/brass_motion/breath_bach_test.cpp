@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The breath plan of real trumpet parts: the Bach chorales with trumpets in
 // ../shared/testdata/musicxml/music21. Lines are built here from the score (top note of each
 // chord, ends cut at the next onset); instrument ranges come from the line itself.

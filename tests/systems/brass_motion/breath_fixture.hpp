@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Hand-made scores and lines for the breath tests: a tempo, a meter, notes placed in quarter
 // notes and timed through the score's own tempo map.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The editor's breath marks (BreathMarks): an add mark makes a breath at a note boundary the
 // rules leave alone (a catch-breath in legato, a breath in a short rest), a remove mark takes
 // every breath away from its boundary, marks that refer to no note are ignored and counted, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Horii's breath rules, measured in beats of the meter and converted to seconds through the
 // tempo map: two tempi, tempo changes inside a rest, 6/8, the first entrance, unplayable notes.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // evaluate_body_motion never allocates, with many cues and expression spans: this program counts
 // allocations (allocation_counter.hpp) and evaluates many frames after planning.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The ensemble's body motion (ensemble_variation/ensemble_plan.hpp, evaluate_body_motion.hpp)
 // on a 4/4 score at 120 BPM (a beat is 0.5 s) with hand-made breath plans: cue timing, breath
 // motion on the breath plan's times, weight shifts on bar lines and phrase boundaries, seeds that

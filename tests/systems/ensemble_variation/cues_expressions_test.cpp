@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The editor's cues (EnsembleOptions::cues_s) and expressions (ExpressionSpan) on the 4/4 score
 // at 120 BPM of ensemble_fixture.hpp: automatic = one cue at the first entrance, an explicit list
 // gives exactly its cues (none for an empty list), expressions change the body inside their

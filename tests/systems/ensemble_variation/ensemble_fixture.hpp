@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Hand-made inputs for the ensemble tests: a 4/4 score at 120 BPM (a beat is 0.5 s), breath
 // plans from (prepare, start, end) triples, and a player on stage from 2 s to 30 s.

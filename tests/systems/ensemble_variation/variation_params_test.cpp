@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Variation parameters from seeds (ensemble_variation/variation_params.hpp).
 #include <tutti/ensemble_variation/variation_params.hpp>
 

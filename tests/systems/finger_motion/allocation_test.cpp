@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // evaluate_hand_pose never allocates: this program counts allocations (allocation_counter.hpp) and
 // evaluates many frames after planning.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // evaluate_finger_pose reads values plan_finger_motion precomputed (reciprocals of the contact's
 // spans, the release decay scale, the contiguous onsets), skips the relaxation once the next
 // stroke decides the pose, and solves the stroke with one atan2. This checks it against the

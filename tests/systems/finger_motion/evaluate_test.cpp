@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // evaluate_hand_pose is a pure function of (plan, path, t): deterministic, seek-order independent.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared test inputs: the real content files, constant hand paths and tiny hand-made scores.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A tiny world: one pianist, one right hand, five fingers; one frame of the schedule.
 #include <tutti/finger_motion/finger_pose_system.hpp>
 

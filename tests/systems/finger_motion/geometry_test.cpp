@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Spread angle: theta = atan(d / y), 0 above the rest line, mirrored for the left hand.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ode to Joy end to end: load, finger (plan_score), hand paths (plan_hand_path), finger motion;
 // then a 60 fps sweep.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Strokes decided by a performance style (NoteStroke): the contact reaches the key bed at the
 // stroke's bottom time, from its start, to its travel; without strokes nothing changes.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Key stroke: joint 1 strikes (MCP; thumb: abduction), joints 2-3 shaped before and fixed during
 // the stroke, press depth 1 exactly at the onset, held to the offset, released after.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Between notes the finger stays, then moves late and quickly (minimum jerk) to arrive at onset.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Players' lines from a score's brass parts: voices, monophony, written pitch.
 #include <tutti/fingering_planner/brass_lines.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Brass fingering planner: standard fingerings by default, alternates only where they help,
 // slide timing, out-of-range notes, real parts.
 #include <tutti/fingering_planner/brass_planner.hpp>

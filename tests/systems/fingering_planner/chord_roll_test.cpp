@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Chords a hand cannot span are rolled (chord_roll.hpp): struck from the bottom up, a note let go
 // before one out of its reach strikes; chords within reach are left as written.
 #include <gtest/gtest.h>

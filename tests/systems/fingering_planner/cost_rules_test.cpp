@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The paper's rules (Sekiguchi & Eiho 1999) on small hand-made cases, through the same cost
 // functions the planners use.
 #include <gtest/gtest.h>

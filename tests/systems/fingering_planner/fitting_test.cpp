@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The annotated corpus (tests/data/fingering_corpus), weight fitting, saving weights, and the
 // match rates of the presets on the corpus and the third-party marks.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Which hand plays each note: a chord the score gives one hand but no hand can span goes, in
 // part, to the other hand when it is free (Scarlatti's K. 27 writes D4 and B5 together on the
 // right-hand staff); when the other hand is busy, or the file states the hands, nothing moves.

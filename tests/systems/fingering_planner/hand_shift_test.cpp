@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hand shifts between disjoint hand areas: the time a shift may take (effective_dt), the hand
 // speed limit of the default preset, and the shifts the planner asks for on real pieces.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Re-planning after a pin: only the affected span changes, and the result is as good as a full
 // re-plan with the same pins (on real pieces).
 #include <tutti/fingering_planner/local_replan.hpp>

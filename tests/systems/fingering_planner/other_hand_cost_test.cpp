@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The other hand's room (other_hand_cost.hpp): a hand's fingering keeps it on its own side of the
 // other hand, measured on the planned corridors.
 #include <gtest/gtest.h>

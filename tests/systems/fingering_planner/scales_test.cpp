@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scales: the standard fingerings, and the marks of pianoplayer's test_scales_all_keys.xml.
 #include <gtest/gtest.h>
 

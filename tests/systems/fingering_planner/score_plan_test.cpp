@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Whole scores: hand assignment, chords, octaves, pins, determinism, editors' marks.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The streaming fingering planner: when it decides (lookahead, deadline, chords arriving late),
 // what a key still down does, bounded memory, bad input, and its agreement with the exact and
 // the paper's lookahead planner on real pieces.

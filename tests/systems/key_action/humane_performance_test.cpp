@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The acceptance on tutti's piano demo (the Ode to Joy of content/scenes/piano.json) and
 // on third-party piano pieces: the precise style sounds within 2 ms of the score on average,
 // the beginner is uneven in time and loudness and now and then loses a note, deterministically.

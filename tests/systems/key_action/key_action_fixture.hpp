@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The real content files, and a whole performance of a score in a style (fingering, hand paths,
 // strokes, finger motion, keys), for the key_action tests.

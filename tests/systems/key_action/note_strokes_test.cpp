@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/key_action/note_strokes.hpp>
 
 #include <gtest/gtest.h>

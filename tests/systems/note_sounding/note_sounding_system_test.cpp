@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Note::sounding from the frame time: a tiny world of notes, one schedule, frames played forward,
 // backwards and out of order.
 #include <tutti/note_sounding/note_sounding_system.hpp>

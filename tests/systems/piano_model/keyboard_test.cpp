@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/piano_model/keyboard.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The corridor repair: jumps get a transition gap, contract violations are fixed, and the result
 // always plans.
 #include <tutti/piano_performance/corridor_repair.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Issue 3 acceptance: "zero corridor violations with the default smoothing on every test piece;
 // the natural-spline option's violations reported beside it".
 //

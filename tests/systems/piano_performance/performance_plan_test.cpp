@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Whole pieces through fingering + repair + path: every note fingered, the path never leaves the
 // corridors it was planned through, deterministic.
 #include <tutti/piano_performance/performance_plan.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared by the spline-motion tests: random corridor sequences and the taut string's
 // optimality certificate.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/spline_motion/corridor_portals.hpp>
 
 #include <gmock/gmock.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <tutti/spline_motion/path_report.hpp>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The plateau envelope (the pianist's hand moving in for black keys, the trombonist turning for the
 // far slide positions): at least as high as every need, eased in before and out after, short
 // dips bridged, and nothing without a need.
