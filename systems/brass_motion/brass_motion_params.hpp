@@ -14,7 +14,7 @@ struct BrassMotionParams {
   double valve_hold_rest_s = 0.6;       // a valve stays down over a shorter rest when still needed
   double slide_comfortable_s = 0.15;    // a slide move takes this long when there is time
   double slide_min_move_s = 0.04;       // and never less
-  double slide_reach_ramp_s = 0.6;      // the body turns toward a far position over this long
+  double slide_reach_ramp_s = 1.0;      // the body turns toward a far position over this long
   double slide_reach_bridge_s = 0.6;    // and stays turned between two far ones this close
   double mouth_rest_tension = 0.15;     // embouchure between phrases
   double mouth_low_tension = 0.3;       // at the bottom of the range
