@@ -17,6 +17,7 @@
 
 #include <tutti/cli/exit_codes.hpp>
 #include <tutti/cli/stage_scene.hpp>
+#include <tutti/performance/draft_scene.hpp>
 #include <tutti/cli/play_live.hpp>
 #include <tutti/cli/size_option.hpp>
 #include <tutti/image/png.hpp>
@@ -164,7 +165,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     loop = runtime::LoopRange{*a, *b};
   }
   std::vector<std::string> draft_notes;
-  auto scene = load_scene_or_music(o.scene, &draft_notes);
+  auto scene = performance::load_scene_or_music(o.scene, {}, &draft_notes);
   if (!scene) return fail(scene.error());
   for (const std::string& note : draft_notes) err << "note: " << note << "\n";
   auto live_play =

@@ -16,6 +16,7 @@
 #include <tutti/cli/size_option.hpp>
 #include <tutti/cli/slice_tag.hpp>
 #include <tutti/cli/stage_scene.hpp>
+#include <tutti/performance/draft_scene.hpp>
 #include <tutti/cli/video_pipe.hpp>
 #include <tutti/audio/wav_file.hpp>
 #include <tutti/image/png.hpp>
@@ -99,7 +100,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   auto kind = output_kind(o);
   if (!kind) return fail(kind.error());
   std::vector<std::string> draft_notes;
-  auto scene = load_scene_or_music(o.scene, &draft_notes);
+  auto scene = performance::load_scene_or_music(o.scene, {}, &draft_notes);
   if (!scene) return fail(scene.error());
   for (const std::string& note : draft_notes) err << "note: " << note << "\n";
   int width = scene->output.width;

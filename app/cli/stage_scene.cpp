@@ -6,14 +6,9 @@
 
 namespace tutti::app {
 
-Result<scene::Scene> load_scene_or_music(const std::filesystem::path& file,
-                                         std::vector<std::string>* notes) {
-  return performance::load_scene_or_music(file, {}, notes);
-}
-
 Result<std::unique_ptr<stage::Stage>> stage_scene_file(const std::filesystem::path& scene_file,
                                                        const std::filesystem::path& assets) {
-  auto scene = load_scene_or_music(scene_file);
+  auto scene = performance::load_scene_or_music(scene_file);
   if (!scene) return scene.error();
   stage::StageOptions options;
   options.asset_dir = assets;

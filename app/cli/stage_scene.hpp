@@ -16,11 +16,6 @@
 
 namespace tutti::app {
 
-// A scene file, or a scene drafted from a music file. `notes` (may be null) receives the
-// draft's notes (parts not played).
-Result<scene::Scene> load_scene_or_music(const std::filesystem::path& file,
-                                         std::vector<std::string>* notes = nullptr);
-
 // `assets`: the folder of the generated .glb files; empty: the build's or the installation's.
 Result<std::unique_ptr<stage::Stage>> stage_scene_file(const std::filesystem::path& scene_file,
                                                        const std::filesystem::path& assets);

@@ -165,10 +165,11 @@ int32_t tutti_event_kind_by_name(const char* name) {
 
 void tutti_default_options(tutti_options* options) {
   if (options == nullptr) {
-    guarded<int>("tutti_default_options", 0, [] {
+    try {
       last_error = "tutti_default_options: options is NULL";
-      return 0;
-    });
+    } catch (...) {
+      last_error.clear();
+    }
     return;
   }
   options->struct_size = sizeof(tutti_options);

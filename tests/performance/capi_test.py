@@ -13,6 +13,7 @@ import ctypes
 import math
 import os
 import sys
+import tempfile
 
 
 class Trs(ctypes.Structure):
@@ -253,6 +254,20 @@ def check_lasting_surface(lib, p, scenes):
     check(lib.tutti_open(os.path.join(scenes, "no_such.mid").encode(), None,
                          ctypes.byref(handle)) == BAD_INPUT and
           "no_such.mid" in lib.tutti_last_error().decode(), "a missing music file")
+    # Broken files: one line naming the file, a status, no handle.
+    with tempfile.TemporaryDirectory() as folder:
+        for name, data in (("cut.mid", b"MThd\x00\x00\x00\x06\x00\x01"),
+                           ("cut.musicxml", b"<?xml version='1.0'?><score-partwise><part-list>"),
+                           ("cut.json", b'{"music": "x.mid", "performers": ['),
+                           ("hostile.json", b'{"music": 7, "performers": "all"}')):
+            path = os.path.join(folder, name)
+            with open(path, "wb") as f:
+                f.write(data)
+            handle = ctypes.c_void_p(1)
+            status = lib.tutti_open(path.encode(), None, ctypes.byref(handle))
+            message = lib.tutti_last_error().decode()
+            check(status == BAD_INPUT and name in message and "\n" not in message and
+                  not handle.value, f"{name}: status {status}, {message!r}")
     lib.tutti_close(None)
 
 
