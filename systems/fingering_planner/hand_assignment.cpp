@@ -27,8 +27,7 @@ void split_automatically(const music::Score& score, std::vector<int> indices,
   const Keyboard& keyboard = model.keyboard;
   const double white = keyboard.white_key_width_mm();
   // Widest reach: thumb's lowest to little finger's highest.
-  const double reach_mm =
-      model.hand.range(music::Hand::right, 5).hi_mm - model.hand.range(music::Hand::right, 1).lo_mm;
+  const double reach_mm = model.hand.reach_mm();
   auto x_of = [&](int key) {
     return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
   };
@@ -151,9 +150,11 @@ void keep_chords_in_reach(const music::Score& score, const FingeringModel& model
   auto x_of = [&](int key) {
     return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
   };
+  // Both hands reach as far (the left hand mirrors the right: its range(5) lies below its
+  // range(1), so `range(side, 5).hi - range(side, 1).lo` would be 0 for it).
+  const double reach_mm = model.hand.reach_mm();
   for (const music::Hand side : {music::Hand::right, music::Hand::left}) {
     const music::Hand other = side == music::Hand::right ? music::Hand::left : music::Hand::right;
-    const double reach_mm = model.hand.range(side, 5).hi_mm - model.hand.range(side, 1).lo_mm;
     std::vector<int> notes;
     for (std::size_t i = 0; i < score.notes.size(); ++i) {
       // A hand the file itself states (PIG) is kept.
@@ -204,8 +205,7 @@ void take_crossed_notes(const music::Score& score, const FingeringModel& model,
   auto x_of = [&](int key) {
     return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
   };
-  const double reach_mm =
-      model.hand.range(music::Hand::right, 5).hi_mm - model.hand.range(music::Hand::right, 1).lo_mm;
+  const double reach_mm = model.hand.reach_mm();
   for (std::size_t note = 0; note < score.notes.size(); ++note) {
     const music::Hand side = out.hand[note];
     if (side == music::Hand::unknown || out.source[note] == HandSource::file) continue;

@@ -8,8 +8,7 @@ namespace tutti::piano {
 
 LiveHandSplit::LiveHandSplit(const FingeringModel& model)
     : model_(&model),
-      reach_mm_(model.hand.range(music::Hand::right, 5).hi_mm -
-                model.hand.range(music::Hand::right, 1).lo_mm) {}
+      reach_mm_(model.hand.reach_mm()) {}
 
 bool LiveHandSplit::can_take(music::Hand side, int key) const {
   const Keyboard& keyboard = model_->keyboard;

@@ -36,6 +36,9 @@ class HandModel {
     const auto& table = side == music::Hand::left ? left_ : right_;
     return table[static_cast<std::size_t>(finger - 1)];
   }
+  // The widest span one hand covers: thumb's lowest to little finger's highest (the same for
+  // both hands, mirror images; an octave and a little for the medium hand).
+  double reach_mm() const { return right_[4].hi_mm - right_[0].lo_mm; }
   const std::string& preset() const { return preset_; }
   double scale() const { return scale_; }
 

@@ -77,6 +77,28 @@ TEST(HandAssignment, AReachableChordStaysWithItsStaff) {
   EXPECT_EQ(s.hand_of(a, 48, 0), Hand::left);
 }
 
+// The left hand reaches as far as the right (its ranges mirror the right's): its octaves and
+// fifths stay with it even while the right hand is free to take their top notes. (Its reach once
+// read 0 mm, so every left-hand chord gave its top note to a free right hand, and the thumbs met.)
+TEST(HandAssignment, ALeftHandChordItCanSpanStaysWithIt) {
+  PianoScore s;
+  s.add(45, 0, 240, 2);  // A2-A3, B2-B3, D3-A3 on the left-hand staff; the right hand rests
+  s.add(57, 0, 240, 2);
+  s.add(47, 240, 240, 2);
+  s.add(59, 240, 240, 2);
+  s.add(50, 480, 240, 2);
+  s.add(57, 480, 240, 2);
+  s.add(79, 960, 480, 1);
+  music::finalize_score(s.score);
+  const HandAssignment a = assign_hands(s.score, test::model("default"));
+  for (std::size_t i = 0; i + 1 < s.score.notes.size(); ++i) {
+    EXPECT_EQ(a.hand[i], Hand::left) << s.score.notes[i].pitch;
+    EXPECT_EQ(a.source[i], HandSource::staff) << s.score.notes[i].pitch;
+  }
+  const FingeringModel& model = test::model("default");
+  EXPECT_NEAR(model.hand.reach_mm(), 8.0 * model.keyboard.white_key_width_mm(), 1e-9);
+}
+
 TEST(HandAssignment, ABusyOrCrossingOtherHandTakesNothing) {
   {
     PianoScore s;  // the left hand holds a chord far below: it cannot also reach D4

@@ -90,7 +90,7 @@ TEST(OtherHandCost, ThirdPartyLeftHandsCrowdTheRightHandLess) {
   without.weights.other_hand_per_white_key = 0.0;
   for (const char* file : {"musicxml/pianoplayer/mozart_sonfacile.mxl",
                            "musicxml/lilypond-test-suite/01a-Pitches-Pitches.xml",
-                           "midi/tonejs/TheEntertainer.mid"}) {
+                           "midi/tonejs/bach_846.mid", "musicxml/pianoplayer/bach_invention4.xml"}) {
     auto score = music::load_score(tutti::test::testdata(file));
     ASSERT_TRUE(score.ok()) << score.error().message;
     auto a = plan_score(*score, without);
