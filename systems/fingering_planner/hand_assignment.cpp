@@ -198,9 +198,16 @@ void keep_chords_in_reach(const music::Score& score, const FingeringModel& model
 // reach and at most five keys. A pianist reads such a note into the other hand rather than
 // crossing through it (Chopin's op. 1 no. 4 writes G3 in the right hand's staff under the left
 // hand's D4-G4). What the other hand cannot take stays a crossing.
+// The other hand is where it plays from kNearS before the note to kNearS after it: a hand that
+// has just left a key, or is about to strike one, is still there (the lilypond suite's 43d
+// writes B4 in the left hand's staff between the right hand's E4 and C4, a quarter second
+// apart; Scarlatti's K. 27 hands B3 from the right thumb to the left thumb as the right lets it
+// go). So the same key struck by the other hand just before or just after, not with it, is a
+// crossing too: the two thumbs would meet on it.
 void take_crossed_notes(const music::Score& score, const FingeringModel& model,
                         HandAssignment& out) {
   constexpr double kArriveS = 0.08;  // the hands' keys ending just before count too
+  constexpr double kNearS = 0.3;     // where the other hand is: its keys this near in time
   const Keyboard& keyboard = model.keyboard;
   auto x_of = [&](int key) {
     return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
@@ -214,24 +221,33 @@ void take_crossed_notes(const music::Score& score, const FingeringModel& model,
     const auto during = [&](const music::Note& o) {
       return o.offset_s > n.onset_s - kArriveS && o.onset_s < n.offset_s;
     };
+    const auto near = [&](const music::Note& o) {
+      return o.offset_s > n.onset_s - kNearS && o.onset_s < n.offset_s + kNearS;
+    };
     bool crosses = false, other_above = false, other_below = false;
     double lo = x_of(n.pitch), hi = lo;
     int at_onset = 1;
     for (std::size_t i = 0; i < score.notes.size(); ++i) {
       const music::Note& o = score.notes[i];
-      if (i == note || !during(o)) continue;
-      if (out.hand[i] == other) {
-        if (o.pitch == n.pitch) {
+      if (i == note || out.hand[i] != other || !near(o)) continue;
+      if (o.pitch != n.pitch && !during(o)) continue;
+      if (o.pitch == n.pitch) {
+        if (o.onset_ticks == n.onset_ticks) {
           crosses = false;
-          other_above = other_below = true;  // a unison: not this rule's
+          other_above = other_below = true;  // a unison: share_unisons' to settle
           break;
         }
-        crosses = crosses || (side == music::Hand::right ? o.pitch >= n.pitch : o.pitch <= n.pitch);
+        // The key struck again just after the other hand let it go, or while it holds it: the
+        // hand on it plays it. (The other way round, the later note comes to this hand.)
+        if (o.onset_ticks > n.onset_ticks) continue;
+        crosses = true;
+      } else {
+        crosses = crosses || (side == music::Hand::right ? o.pitch > n.pitch : o.pitch < n.pitch);
         (o.pitch > n.pitch ? other_above : other_below) = true;
-        lo = std::min(lo, x_of(o.pitch));
-        hi = std::max(hi, x_of(o.pitch));
-        if (o.onset_s <= n.onset_s && o.offset_s > n.onset_s) ++at_onset;
       }
+      lo = std::min(lo, x_of(o.pitch));
+      hi = std::max(hi, x_of(o.pitch));
+      if (o.onset_s <= n.onset_s && o.offset_s > n.onset_s) ++at_onset;
     }
     if (!crosses || (other_above && other_below)) continue;
     if (hi - lo > reach_mm || at_onset > 5) continue;
@@ -337,8 +353,9 @@ HandAssignment assign_hands(const music::Score& score, const FingeringModel& mod
   }
   if (!automatic.empty()) split_automatically(score, std::move(automatic), model, out);
   keep_chords_in_reach(score, model, out);
-  take_crossed_notes(score, model, out);
+  // Unisons first: a doubled key given to one hand no longer blocks a crossing note beside it.
   share_unisons(score, out);
+  take_crossed_notes(score, model, out);
   return out;
 }
 

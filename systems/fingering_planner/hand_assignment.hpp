@@ -17,7 +17,9 @@
 // them without crossing (HandSource::reach). Last, a key both hands strike at once is played by
 // one hand, the one with more of its keys near it then (HandSource::unison). And a note that
 // would take its hand across the other (a right-hand G3 under the left hand's held D4-G4) goes to
-// the other hand when it can add it at its own outer side (HandSource::crossing).
+// the other hand when it can add it at its own outer side (HandSource::crossing); so does a key
+// the other hand struck before it and still holds, or let go less than 0.3 s before (the thumbs
+// would meet on it).
 
 #include <vector>
 

@@ -360,7 +360,19 @@ HandPlan finish_plan(const PreparedHand& hand, std::span<const int> chosen,
   for (std::size_t e = 0; e < hand.events.size(); ++e) {
     const HandEvent& event = hand.events[e];
     const Candidate& cand = hand.candidates[static_cast<std::size_t>(chosen[e])];
-    plan.corridors.push_back({event.onset_s, event.end_s, cand.shape.lo_mm, cand.shape.hi_mm});
+    HandCorridor corridor{event.onset_s, event.end_s, cand.shape.lo_mm, cand.shape.hi_mm};
+    for (int s = event.slot_begin; s < event.slot_end; ++s) {
+      const HandSlot& slot = hand.slots[static_cast<std::size_t>(s)];
+      if (!slot.alive) continue;  // let go early: no finger stays on it
+      const double lo = model.keyboard.x_mm(
+          std::clamp(slot.lo_key, model.keyboard.lowest_key(), model.keyboard.highest_key()));
+      const double hi = model.keyboard.x_mm(
+          std::clamp(slot.hi_key, model.keyboard.lowest_key(), model.keyboard.highest_key()));
+      corridor.keys_lo_mm = corridor.keys_known ? std::min(corridor.keys_lo_mm, lo) : lo;
+      corridor.keys_hi_mm = corridor.keys_known ? std::max(corridor.keys_hi_mm, hi) : hi;
+      corridor.keys_known = true;
+    }
+    plan.corridors.push_back(corridor);
     // The transition cost priced a move between disjoint areas over the effective time dt_s
     // (which may count an early release, release_fraction). The corridor must end when that
     // move starts, or the hand path would be asked to jump in no time.

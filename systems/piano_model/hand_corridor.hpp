@@ -13,6 +13,11 @@ struct HandCorridor {
   double end_s = 0.0;    // the event's keys are released (or the next event starts)
   double lo_mm = 0.0;    // allowed hand positions, keyboard x in millimetres
   double hi_mm = 0.0;    // lo_mm <= hi_mm
+  // The event's lowest and highest keys, held ones included (keyboard x in millimetres), when
+  // the planner knows them: where the hand's outer fingers are, however far it stretches.
+  bool keys_known = false;
+  double keys_lo_mm = 0.0;
+  double keys_hi_mm = 0.0;
 };
 
 // Sorted by start_s; consecutive corridors do not overlap in time (end_s <= next start_s).

@@ -29,10 +29,16 @@ piano::HandCorridors well_formed(const piano::HandCorridors& corridors) {
 }  // namespace
 
 motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
-                                  const PerformanceOptions& options, HandReport& report) {
+                                  const PerformanceOptions& options, HandReport& report,
+                                  const OtherHand& other_hand) {
   const auto start = std::chrono::steady_clock::now();
   report.events = corridors.size();
-  report.repair = repair_corridors(corridors, options.repair);
+  report.repair = repair_corridors(
+      other_hand.path == nullptr
+          ? corridors
+          : with_idle_room(corridors, other_hand.corridors, *other_hand.path, report.hand,
+                           options.idle_room),
+      options.repair);
   auto path = plan_hand_path(report.repair.corridors, options.path);
   motion::HandPath result;
   if (path) {
@@ -62,7 +68,12 @@ PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
   left.hand = music::Hand::left;
   left.notes = plan.fingering.left_notes.size();
   left.diagnostics = plan.fingering.left.diagnostics.size();
-  plan.left_path = plan_hand_motion(plan.fingering.left.corridors, options, left);
+  plan.left_path = plan_hand_motion(plan.fingering.left.corridors, options, left,
+                                    {plan.fingering.right.corridors, &plan.right_path});
+  // The right hand again, its idle moments clear of the left hand's path (the left hand's idle
+  // moments were kept clear of the first right path; this one only moves further from it).
+  plan.right_path = plan_hand_motion(plan.fingering.right.corridors, options, right,
+                                     {plan.fingering.left.corridors, &plan.left_path});
   return plan;
 }
 

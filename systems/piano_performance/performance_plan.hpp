@@ -10,12 +10,14 @@
 // HandReport::path_error (the run itself succeeds). Only the fingering planner's errors (bad
 // input notes) fail plan_performance.
 
+#include <span>
 #include <string>
 
 #include <tutti/core/result.hpp>
 #include <tutti/fingering_planner/plan_score.hpp>
 #include <tutti/music/score.hpp>
 #include <tutti/piano_performance/corridor_repair.hpp>
+#include <tutti/piano_performance/idle_hand_room.hpp>
 #include <tutti/spline_motion/path_report.hpp>
 #include <tutti/spline_motion/smoothing.hpp>
 
@@ -25,6 +27,7 @@ struct PerformanceOptions {
   piano::PlanOptions fingering;
   motion::PlanOptions path;
   RepairOptions repair;
+  IdleRoomOptions idle_room;  // each hand out of the other's way while it does not play
 };
 
 struct HandReport {
@@ -65,8 +68,17 @@ Result<PianoPerformancePlan> plan_performance(const music::Score& score,
 PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
                                             const PerformanceOptions& options = {});
 
-// One hand's repair + path + reports, from its corridors (exposed for tests and tools).
+// The other hand, for one hand's path: its corridors and its path (null = plan the hand alone).
+struct OtherHand {
+  std::span<const piano::HandCorridor> corridors;
+  const motion::HandPath* path = nullptr;
+};
+
+// One hand's repair + path + reports, from its corridors (exposed for tests and tools). With
+// the other hand's path, this hand's idle gaps keep out of its way (idle_hand_room.hpp,
+// options.idle_room; report.hand says which hand this is).
 motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
-                                  const PerformanceOptions& options, HandReport& report);
+                                  const PerformanceOptions& options, HandReport& report,
+                                  const OtherHand& other_hand = {});
 
 }  // namespace tutti::performance

@@ -305,8 +305,8 @@ TEST(PoseCheck, APolonaisesTenthIsRolledHeardAsStruckWithThePadsOnTheKeys) {
 }
 
 // Hands never pass through each other: the bundled pieces keep them apart; the lilypond test
-// suite's 43e, whose lower staff climbs over the upper one (the left hand's C#5 above the right
-// hand's B4 at 5 s), crowds them (a fault the measure exists to show: issue 35 lists it until
+// suite's 43e, whose lower staff climbs into the upper one's range and over it (both hands
+// within G4-D5 from 2.5 s, the left hand's C#5 over the right hand's B4 at 5 s), crowds them (a fault the measure exists to show: issue 35 lists it until
 // such crossings are planned). Each pressing pad lies on its key's top.
 TEST(PoseCheck, OneHandInsideTheOtherIsMeasured) {
   for (const char* scene : {"piano.json", "piano_beginner.json"}) {
@@ -319,7 +319,7 @@ TEST(PoseCheck, OneHandInsideTheOtherIsMeasured) {
   }
   TUTTI_REQUIRE_TESTDATA();
   const PoseReport report =
-      check_piece("musicxml/lilypond-test-suite/43e-Multistaff-ClefDynamics.xml", 4.7, 5.3);
+      check_piece("musicxml/lilypond-test-suite/43e-Multistaff-ClefDynamics.xml", 0.0, 6.0);
   const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
   EXPECT_GT(apart.worst(), 5.0);
   EXPECT_NE(apart.worst_of.find("right "), std::string::npos) << apart.worst_of;

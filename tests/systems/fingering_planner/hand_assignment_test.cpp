@@ -125,7 +125,9 @@ TEST(HandAssignment, ABusyOrCrossingOtherHandTakesNothing) {
 // A right-hand note under the left hand's keys goes to the left hand as its lowest key (Chopin's
 // op. 1 no. 4: G3 in the right hand's staff under the left hand's held D4-G4); with D4 and B5 at
 // once, D4 goes to a left hand that plays F4 meanwhile, below it. A note the other hand cannot
-// span with its keys (C#3 under a left hand on C#4-G4) stays where it is.
+// span with its keys (C#3 under a left hand on C#4-G4) stays where it is. The same key struck by
+// the other hand just before, or while it holds it, is the other hand's (the thumbs would meet
+// on it); a new key is not.
 TEST(HandAssignment, ANoteUnderTheOtherHandsKeysGoesToItAtItsOuterSide) {
   struct Added {
     int pitch;
@@ -141,6 +143,12 @@ TEST(HandAssignment, ANoteUnderTheOtherHandsKeysGoesToItAtItsOuterSide) {
       {{{62, 0, 960, 2}, {67, 0, 960, 2}, {77, 0, 480, 1}, {55, 480, 960, 1}}, 55, 480, Hand::left},
       {{{62, 0, 480, 1}, {83, 0, 480, 1}, {65, 120, 240, 2}}, 62, 0, Hand::left},
       {{{61, 0, 960, 2}, {64, 0, 960, 2}, {67, 0, 960, 2}, {49, 480, 960, 1}}, 49, 480, Hand::right},
+      // D4 handed from the left thumb to the right as the left lets it go: the left plays both.
+      {{{62, 0, 240, 2}, {62, 240, 240, 1}, {81, 960, 480, 1}}, 62, 240, Hand::left},
+      // G5 struck by the right hand while the left holds it with D#5: the left strikes it again.
+      {{{75, 0, 960, 2}, {79, 0, 960, 2}, {79, 240, 120, 1}}, 79, 240, Hand::left},
+      // A line passing from one hand to the other on a new key stays as written.
+      {{{62, 0, 240, 2}, {64, 240, 240, 1}}, 64, 240, Hand::right},
   };
   for (const auto& c : cases) {
     PianoScore s;

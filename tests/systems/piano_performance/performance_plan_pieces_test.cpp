@@ -203,11 +203,16 @@ TEST(PerformancePlanPieces, DefaultSmoothingNeverLeavesACorridorNaturalSplineRep
     f.notes = report.right.notes + report.left.notes;
     for (const HandReport* hand : {&report.right, &report.left}) {
       expect_inside(*hand);
-      // The same corridors, the paper's smoothing: reported, not asserted to be zero.
+      // The same corridors, beside the other hand's final path, the paper's smoothing:
+      // reported, not asserted to be zero.
+      const bool right = hand->hand == music::Hand::right;
+      const OtherHand other{corridors_of(*plan, right ? music::Hand::left : music::Hand::right),
+                            right ? &plan->left_path : &plan->right_path};
       HandReport natural_report;
+      natural_report.hand = hand->hand;
       const motion::HandPath natural_path =
-          plan_hand_motion(corridors_of(*plan, hand->hand), natural, natural_report);
-      EXPECT_EQ(natural_report.repair.corridors.size(), hand->repair.corridors.size());
+          plan_hand_motion(corridors_of(*plan, hand->hand), natural, natural_report, other);
+      EXPECT_EQ(natural_report.events, hand->events);
       if (natural_report.path_error.empty() && !hand->repair.corridors.empty()) {
         EXPECT_EQ(natural_path.mode(), motion::SmoothingMode::natural_spline);
       }
