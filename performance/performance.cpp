@@ -21,6 +21,8 @@
 #include <tutti/performance/families.hpp>
 #include <tutti/performance/model_names.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/scene/scene.hpp>
+#include <tutti/stage/stage.hpp>
 
 namespace tutti::performance {
 namespace {
@@ -189,6 +191,12 @@ void read_poses(const stage::Stage& stage, std::vector<ModelPose>& out) {
     pose.morph_weights.assign(placed.pose.morph_weights.begin(), placed.pose.morph_weights.end());
   }
 }
+
+Performance::~Performance() = default;
+
+double Performance::start_s() const { return stage_->start_s(); }
+double Performance::end_s() const { return stage_->end_s(); }
+const std::vector<std::string>& Performance::notes() const { return stage_->notes(); }
 
 Result<std::unique_ptr<Performance>> Performance::open(const std::filesystem::path& scene_file,
                                                        const Options& options) {

@@ -26,8 +26,15 @@
 #include <vector>
 
 #include <tutti/core/result.hpp>
-#include <tutti/scene/scene.hpp>
-#include <tutti/stage/stage.hpp>
+
+// Only named here: a host's code sees no stage, ECS or scene internals (nor glm) through this
+// header. Code that works on the staged scene includes <tutti/stage/stage.hpp> itself.
+namespace tutti::scene {
+struct Scene;
+}
+namespace tutti::stage {
+class Stage;
+}
 
 namespace tutti::performance {
 
@@ -107,8 +114,12 @@ class Performance {
   static Result<std::unique_ptr<Performance>> stage(const scene::Scene& scene,
                                                     const Options& options = {});
 
-  double start_s() const { return stage_->start_s(); }
-  double end_s() const { return stage_->end_s(); }
+  ~Performance();
+  Performance(const Performance&) = delete;
+  Performance& operator=(const Performance&) = delete;
+
+  double start_s() const;
+  double end_s() const;
   const std::vector<PerformerInfo>& performers() const { return performers_; }
   const std::vector<ModelInfo>& models() const { return models_; }
   // Every event of the piece, in time order (ties: by performer, then kind).
@@ -116,7 +127,7 @@ class Performance {
   // The events with from_s <= t_s < to_s.
   std::span<const Event> events_between(double from_s, double to_s) const;
   // Planning diagnostics worth showing (notes out of range, ...).
-  const std::vector<std::string>& notes() const { return stage_->notes(); }
+  const std::vector<std::string>& notes() const;
 
   // Poses everything at t_s and fills `out`: every model's pose, and each performer's events
   // within `events_window_s` of t_s (before or after).

@@ -13,6 +13,7 @@
 #include <set>
 
 #include <tutti/components/note.hpp>
+#include <tutti/stage/stage.hpp>
 
 namespace tutti::performance {
 namespace {
