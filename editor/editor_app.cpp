@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <ostream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/editor/editor_ui.hpp>
 #include <tutti/editor/script.hpp>
 #include <tutti/editor/session.hpp>
@@ -107,7 +107,7 @@ class Editor final : public ScriptHost {
   }
   int fail(const Error& error) {
     err_ << "error: " << error.message << "\n";
-    return app::exit_code_of(error);
+    return exit_code_of(error);
   }
   Status frame();
   void viewport_input();
@@ -220,14 +220,14 @@ int Editor::run() {
   std::uint32_t width = 0, height = 0;
   if (!parse_size(options_.size, width, height)) {
     err_ << "error: --size \"" << options_.size << "\": expected WxH, at least 320x240\n";
-    return app::kExitBadInput;
+    return kExitBadInput;
   }
   std::optional<Script> script;
   if (!options_.script.empty()) {
     auto loaded = load_script(options_.script);
     if (!loaded) {
       err_ << "error: " << loaded.error().message << "\n";
-      return app::kExitBadInput;
+      return kExitBadInput;
     }
     script = std::move(*loaded);
   }
@@ -236,7 +236,7 @@ int Editor::run() {
   auto session = Session::open(options_.scene, stage_options);
   if (!session) {
     err_ << "error: " << session.error().message << "\n";
-    return app::kExitBadInput;
+    return kExitBadInput;
   }
   session_ = std::move(*session);
   if (const char* pause = std::getenv("TUTTI_EDITOR_TEST_SAVE_PAUSE_MS")) {
@@ -317,7 +317,7 @@ int Editor::run() {
     follow_replans();
     if (*step == ScriptStep::quit) break;
   }
-  return app::kExitOk;
+  return kExitOk;
 }
 
 }  // namespace

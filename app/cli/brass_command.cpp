@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/brass_motion/brass_motion_params.hpp>
 #include <tutti/brass_motion/breath_params.hpp>

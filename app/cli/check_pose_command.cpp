@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/performance/pose_check.hpp>
 #include <tutti/cli/stage_scene.hpp>
 

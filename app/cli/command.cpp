@@ -3,7 +3,7 @@
 #include <exception>
 #include <ostream>
 #include <tutti/cli/command.hpp>
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/core/did_you_mean.hpp>
 
 namespace tutti::app {

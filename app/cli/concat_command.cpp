@@ -9,7 +9,7 @@
 #include <ostream>
 #include <system_error>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/run_tool.hpp>
 #include <tutti/cli/scene_audio.hpp>
 #include <tutti/cli/slice_tag.hpp>

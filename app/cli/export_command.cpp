@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/frame_range.hpp>
 #include <tutti/core/file_io.hpp>
 #include <tutti/export/scene_export.hpp>

@@ -5,7 +5,7 @@
 #include <optional>
 #include <ostream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/fingering_output.hpp>
 #include <tutti/cli/fingering_report.hpp>
 #include <tutti/cli/piano_roll_plot.hpp>

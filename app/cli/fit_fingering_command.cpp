@@ -6,7 +6,7 @@
 #include <memory>
 #include <ostream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/weights_option.hpp>
 #include <tutti/fingering_planner/weight_fitting.hpp>
 #include <tutti/music/load_score.hpp>

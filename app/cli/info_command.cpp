@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/score_summary.hpp>
 #include <tutti/core/file_io.hpp>
 #include <tutti/components/breath.hpp>

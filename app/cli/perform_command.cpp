@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/core/file_io.hpp>
 #include <tutti/finger_motion/finger_motion_params.hpp>
 #include <tutti/key_action/humane_performance.hpp>

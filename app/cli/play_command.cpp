@@ -15,7 +15,7 @@
 #include <ostream>
 #include <vector>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/stage_scene.hpp>
 #include <tutti/performance/draft_scene.hpp>
 #include <tutti/cli/play_live.hpp>

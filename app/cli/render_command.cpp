@@ -10,7 +10,7 @@
 #include <ostream>
 #include <vector>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/frame_range.hpp>
 #include <tutti/cli/scene_audio.hpp>
 #include <tutti/cli/size_option.hpp>

@@ -9,7 +9,7 @@
 #include <ostream>
 #include <string>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/humanoid/humanoid.hpp>
 #include <tutti/model/model_asset.hpp>
 #include <tutti/scene/asset_mapping.hpp>

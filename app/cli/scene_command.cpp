@@ -4,7 +4,7 @@
 #include <memory>
 #include <ostream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/core/file_io.hpp>
 #include <tutti/music/load_score.hpp>
 #include <tutti/performance/draft_scene.hpp>

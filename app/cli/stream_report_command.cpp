@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <ostream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/fingering_planner/streaming_report.hpp>
 #include <tutti/music/load_score.hpp>

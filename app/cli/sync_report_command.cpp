@@ -12,7 +12,7 @@
 #include <ostream>
 #include <string>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/frame_range.hpp>
 #include <tutti/cli/scene_audio.hpp>
 #include <tutti/cli/sync_report.hpp>

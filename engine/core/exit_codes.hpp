@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The exit codes of every tutti program (README "Exit codes"):
+// The exit codes of every tutti program (README "Exit codes"): the command line, the editor,
+// the examples; here, under the programs, so that any of them can use them:
 //   0  done
 //   1  tutti's own fault (an internal error; please report it)
 //   2  bad input or usage: the message names the file or option and what is wrong
@@ -11,7 +12,7 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::app {
+namespace tutti {
 
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitInternal = 1;
@@ -39,4 +40,4 @@ struct Fail {
   int operator()(const std::string& message) const { return (*this)(Error{message}); }
 };
 
-}  // namespace tutti::app
+}  // namespace tutti

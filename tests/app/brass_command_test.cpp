@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/music/midi/midi_writer.hpp>
 #include "testdata.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 
 #include "command_run.hpp"
 

@@ -3,7 +3,7 @@
 // one, and the exit code says whose problem it is — 2 bad input, 3 a missing environment (see
 // render_command_test and play_command_test), 1 tutti's own fault.
 #include <tutti/cli/command.hpp>
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/fingering_command.hpp>
 #include <tutti/cli/info_command.hpp>
 #include <tutti/cli/render_command.hpp>

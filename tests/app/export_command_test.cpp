@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include "command_run.hpp"
 #include <tutti/core/file_io.hpp>
 #include "testdata.hpp"

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <tuple>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/cli/fingering_output.hpp>
 #include "command_run.hpp"
 #include <tutti/core/file_io.hpp>

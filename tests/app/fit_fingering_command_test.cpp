@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/fingering_planner/cost_weights.hpp>
 #include "testdata.hpp"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include "testdata.hpp"
 
 namespace tutti::app {

@@ -18,7 +18,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
-#include <tutti/cli/exit_codes.hpp>
+#include <tutti/core/exit_codes.hpp>
 #include <tutti/scene/asset_mapping.hpp>
 
 #include "command_run.hpp"
