@@ -22,6 +22,7 @@
 #include <tutti/performance/model_names.hpp>
 #include <tutti/scene/load_scene.hpp>
 #include <tutti/scene/scene.hpp>
+#include <tutti/stage/contact_detector.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::performance {
@@ -56,95 +57,25 @@ bool event_before(const Event& a, const Event& b) {
          std::tie(b.t_s, b.performer, b.kind, b.value);
 }
 
-// Linear crossing time of `level` between (t0, v0) and (t1, v1).
-double crossing(double t0, double v0, double t1, double v1, double level) {
-  if (v1 == v0) return t1;
-  return t0 + (t1 - t0) * std::clamp((level - v0) / (v1 - v0), 0.0, 1.0);
-}
-
-// Keys, valves and slides reaching their stops, read off the evaluated components on a grid of
-// `step_s` over the stage's range (the crossing placed between grid points).
+// Keys, valves and slides reaching their stops (stage/contact_detector.hpp), on a grid of
+// `step_s` over the stage's range, as events of the performers they belong to.
 void add_contact_events(stage::Stage& stage, const std::map<std::uint64_t, std::int32_t>& index_of,
                         double step_s, std::vector<Event>& out) {
-  constexpr double kDown = 0.999;
-  constexpr double kUp = 0.001;
-  ecs::World& world = stage.world();
-  const auto performer_of = [&](ecs::Entity e) {
-    const auto it = index_of.find(e.bits());
-    return it == index_of.end() ? -1 : it->second;
-  };
-  struct FingerTrack {
-    ecs::Entity entity;
-    std::int32_t performer;
-    double depth = 0.0;
-    int key_down = -1;  // the key this finger holds at its bed
-  };
-  struct InstrumentTrack {
-    ecs::Entity entity;
-    std::int32_t performer;
-    std::array<double, components::Valve::kMax> press{};
-    bool moving = false;
-  };
-  std::vector<FingerTrack> fingers;
-  world.view<const components::Finger>().each([&](ecs::Entity e, const components::Finger& f) {
-    const auto* hand = world.try_get<components::Hand>(f.hand);
-    const std::int32_t p = performer_of(hand != nullptr ? hand->performer : ecs::Entity::null);
-    if (p >= 0) fingers.push_back({e, p});
-  });
-  std::vector<InstrumentTrack> instruments;
-  world.view<const components::Instrument>().each(
-      [&](ecs::Entity e, const components::Instrument& instrument) {
-        const std::int32_t p = performer_of(instrument.performer);
-        if (p >= 0) instruments.push_back({e, p});
-      });
-  if (!(step_s > 0.0) || (fingers.empty() && instruments.empty())) return;
-  const auto steps =
-      static_cast<std::int64_t>(std::ceil((stage.end_s() - stage.start_s()) / step_s)) + 1;
-  double previous_t = stage.start_s();
-  for (std::int64_t i = 0; i < steps; ++i) {
-    const double t = stage.start_s() + static_cast<double>(i) * step_s;
-    stage.run({t, step_s}, ecs::Phase::evaluate);
-    const bool first = i == 0;
-    for (FingerTrack& track : fingers) {
-      const auto& finger = world.get<components::Finger>(track.entity);
-      const double depth = finger.press_depth;
-      if (!first && track.depth < kDown && depth >= kDown && finger.key >= 0) {
-        out.push_back({crossing(previous_t, track.depth, t, depth, kDown), EventKind::key_down,
-                       track.performer, finger.key});
-        track.key_down = finger.key;
-      } else if (!first && track.depth > kUp && depth <= kUp && track.key_down >= 0) {
-        out.push_back({crossing(previous_t, track.depth, t, depth, kUp), EventKind::key_up,
-                       track.performer, track.key_down});
-        track.key_down = -1;
-      }
-      track.depth = depth;
+  const auto stops =
+      stage::detect_stops(stage, {stage.start_s(), stage.end_s(), step_s, /*include_end=*/true});
+  for (const stage::Stop& stop : stops) {
+    const auto it = index_of.find(stop.performer.bits());
+    if (it == index_of.end()) continue;
+    EventKind kind = EventKind::key_down;
+    switch (stop.kind) {
+      case stage::StopKind::key_down: kind = EventKind::key_down; break;
+      case stage::StopKind::key_up: kind = EventKind::key_up; break;
+      case stage::StopKind::valve_down: kind = EventKind::valve_down; break;
+      case stage::StopKind::valve_up: kind = EventKind::valve_up; break;
+      case stage::StopKind::slide_arrives: kind = EventKind::slide_arrives; break;
+      case stage::StopKind::tongue: continue;  // note_on already says when it sounds
     }
-    for (InstrumentTrack& track : instruments) {
-      if (const auto* valve = world.try_get<components::Valve>(track.entity)) {
-        for (std::size_t v = 0; v < valve->count && v < track.press.size(); ++v) {
-          const double now = valve->press[v];
-          const double before = track.press[v];
-          const auto number = static_cast<std::int32_t>(v + 1);
-          if (!first && before < kDown && now >= kDown) {
-            out.push_back({crossing(previous_t, before, t, now, kDown), EventKind::valve_down,
-                           track.performer, number});
-          } else if (!first && before > kUp && now <= kUp) {
-            out.push_back({crossing(previous_t, before, t, now, kUp), EventKind::valve_up,
-                           track.performer, number});
-          }
-          track.press[v] = now;
-        }
-      }
-      if (const auto* slide = world.try_get<components::Slide>(track.entity)) {
-        const bool moving = slide->speed_mm_per_s != 0.0;
-        if (!first && track.moving && !moving) {
-          out.push_back({t, EventKind::slide_arrives, track.performer,
-                         static_cast<std::int32_t>(std::lround(slide->position))});
-        }
-        track.moving = moving;
-      }
-    }
-    previous_t = t;
+    out.push_back({stop.t_s, kind, it->second, stop.value});
   }
 }
 

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+#include <tutti/stage/contact_detector.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <tutti/components/finger.hpp>
+#include <tutti/components/hand.hpp>
+#include <tutti/components/instrument.hpp>
+#include <tutti/components/mouth.hpp>
+#include <tutti/components/slide.hpp>
+#include <tutti/components/valve.hpp>
+
+namespace tutti::stage {
+namespace {
+
+constexpr double kFullyDown = 0.999;
+constexpr double kFullyUp = 0.001;
+
+// Linear crossing time of `level` between (t0, v0) and (t1, v1).
+double crossing(double t0, double v0, double t1, double v1, double level) {
+  if (v1 == v0) return t1;
+  return t0 + (t1 - t0) * std::clamp((level - v0) / (v1 - v0), 0.0, 1.0);
+}
+
+struct FingerTrack {
+  ecs::Entity entity = ecs::Entity::null;
+  ecs::Entity performer = ecs::Entity::null;
+  double depth = 0.0;
+  int key_down = -1;  // the key this finger holds at its bed
+};
+
+struct InstrumentTrack {
+  ecs::Entity entity = ecs::Entity::null;
+  ecs::Entity performer = ecs::Entity::null;
+  std::array<double, components::Valve::kMax> press{};
+  bool moving = false;
+  bool buzzing = false;
+  std::vector<std::size_t> waiting;  // stops found last sample whose `sounding` waits for this one
+};
+
+}  // namespace
+
+std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid) {
+  std::vector<Stop> stops;
+  if (!(grid.step_s > 0.0) || !(grid.to_s >= grid.from_s)) return stops;
+  ecs::World& world = stage.world();
+  std::vector<FingerTrack> fingers;
+  world.view<const components::Finger>().each([&](ecs::Entity e, const components::Finger& f) {
+    const auto* hand = world.try_get<components::Hand>(f.hand);
+    fingers.push_back({e, hand != nullptr ? hand->performer : ecs::Entity::null});
+  });
+  std::vector<InstrumentTrack> instruments;
+  world.view<const components::Instrument>().each(
+      [&](ecs::Entity e, const components::Instrument& instrument) {
+        InstrumentTrack track;
+        track.entity = e;
+        track.performer = instrument.performer;
+        instruments.push_back(std::move(track));
+      });
+  // Spawn order: the same on every run of the same scene.
+  std::sort(fingers.begin(), fingers.end(),
+            [](const FingerTrack& a, const FingerTrack& b) { return a.entity.index < b.entity.index; });
+  std::sort(instruments.begin(), instruments.end(),
+            [](const InstrumentTrack& a, const InstrumentTrack& b) {
+              return a.entity.index < b.entity.index;
+            });
+  if (fingers.empty() && instruments.empty()) return stops;
+
+  const double span = grid.to_s - grid.from_s;
+  const auto steps =
+      static_cast<std::int64_t>(std::ceil(span / grid.step_s)) + (grid.include_end ? 1 : 0);
+  double previous_t = grid.from_s;
+  for (std::int64_t i = 0; i < steps; ++i) {
+    const double t = grid.from_s + static_cast<double>(i) * grid.step_s;
+    stage.run({t, grid.step_s}, ecs::Phase::evaluate);
+    const bool first = i == 0;
+    for (FingerTrack& track : fingers) {
+      const auto* finger = world.try_get<components::Finger>(track.entity);
+      if (finger == nullptr) continue;
+      const double depth = finger->press_depth;
+      if (!first && track.depth < kFullyDown && depth >= kFullyDown && finger->key >= 0) {
+        stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyDown),
+                         StopKind::key_down, track.performer, finger->key, true});
+        track.key_down = finger->key;
+      } else if (!first && track.depth > kFullyUp && depth <= kFullyUp && track.key_down >= 0) {
+        stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyUp), StopKind::key_up,
+                         track.performer, track.key_down, true});
+        track.key_down = -1;
+      }
+      track.depth = depth;
+    }
+    for (InstrumentTrack& track : instruments) {
+      const auto* mouth = world.try_get<components::Mouth>(track.performer);
+      const bool buzzing = mouth != nullptr && mouth->buzzing;
+      // Last sample's releases and arrivals sound if the player sounded then and still does.
+      for (const std::size_t k : track.waiting) stops[k].sounding = buzzing && track.buzzing;
+      track.waiting.clear();
+      if (!first && buzzing && !track.buzzing) {
+        stops.push_back({t, StopKind::tongue, track.performer, -1, true});
+      }
+      if (const auto* valve = world.try_get<components::Valve>(track.entity)) {
+        for (std::size_t v = 0; v < valve->count && v < track.press.size(); ++v) {
+          const double now = valve->press[v];
+          const double before = track.press[v];
+          const auto number = static_cast<std::int32_t>(v + 1);
+          if (!first && before < kFullyDown && now >= kFullyDown) {
+            stops.push_back({crossing(previous_t, before, t, now, kFullyDown),
+                             StopKind::valve_down, track.performer, number, true});
+          } else if (!first && before > kFullyUp && now <= kFullyUp) {
+            track.waiting.push_back(stops.size());
+            stops.push_back({crossing(previous_t, before, t, now, kFullyUp), StopKind::valve_up,
+                             track.performer, number, false});
+          }
+          track.press[v] = now;
+        }
+      }
+      if (const auto* slide = world.try_get<components::Slide>(track.entity)) {
+        const bool moving = slide->speed_mm_per_s != 0.0;
+        if (!first && track.moving && !moving) {
+          track.waiting.push_back(stops.size());
+          stops.push_back({t, StopKind::slide_arrives, track.performer,
+                           static_cast<std::int32_t>(std::lround(slide->position)), false});
+        }
+        track.moving = moving;
+      }
+      track.buzzing = buzzing;
+    }
+    previous_t = t;
+  }
+  return stops;
+}
+
+}  // namespace tutti::stage

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// The one contact detector: keys reach their beds and leave them, valves their stops, slides
+// come to rest, players start to sound; each stop belongs to a performer, lies on the grid's
+// range, and comes out the same on every run.
+#include <tutti/stage/contact_detector.hpp>
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <utility>
+
+#include <tutti/components/performer.hpp>
+#include <tutti/performance/families.hpp>
+#include <tutti/scene/load_scene.hpp>
+
+namespace tutti::stage {
+namespace {
+
+const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
+
+std::unique_ptr<Stage> build(const char* scene_name) {
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / scene_name);
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return nullptr;
+  auto stage = performance::build_stage(*scene, {});
+  EXPECT_TRUE(stage) << stage.error().message;
+  return stage ? std::move(*stage) : nullptr;
+}
+
+bool same(const std::vector<Stop>& a, const std::vector<Stop>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].t_s != b[i].t_s || a[i].kind != b[i].kind || a[i].performer != b[i].performer ||
+        a[i].value != b[i].value || a[i].sounding != b[i].sounding) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The pianist: every key that reaches its bed leaves it again on the same key (but those still
+// down when the range ends), on the piano's keys, and the same stops on a second run.
+TEST(ContactDetector, EveryKeyThePianistPressesComesBackUp) {
+  auto stage = build("piano.json");
+  ASSERT_NE(stage, nullptr);
+  const StopGrid grid{stage->start_s(), stage->start_s() + 8.0, 0.002, false};
+  const std::vector<Stop> stops = detect_stops(*stage, grid);
+  std::map<std::pair<std::uint64_t, int>, int> down;  // (performer, key) -> keys down
+  int downs = 0, ups = 0;
+  for (const Stop& stop : stops) {
+    EXPECT_GE(stop.t_s, grid.from_s);
+    EXPECT_LE(stop.t_s, grid.to_s);
+    ASSERT_NE(stage->world().try_get<components::Performer>(stop.performer), nullptr);
+    ASSERT_TRUE(stop.kind == StopKind::key_down || stop.kind == StopKind::key_up);
+    EXPECT_TRUE(stop.sounding);
+    EXPECT_GE(stop.value, 21);
+    EXPECT_LE(stop.value, 108);
+    int& held = down[{stop.performer.bits(), stop.value}];
+    if (stop.kind == StopKind::key_down) {
+      ++held;
+      ++downs;
+    } else {
+      EXPECT_GT(held, 0) << "key " << stop.value << " up at " << stop.t_s << " s, never down";
+      --held;
+      ++ups;
+    }
+  }
+  EXPECT_GT(downs, 20);
+  EXPECT_GE(ups, downs - 10);
+  EXPECT_TRUE(same(stops, detect_stops(*stage, grid)));
+}
+
+// The quartet: valves reach both stops, slides come to rest, players start to sound; a valve
+// let go or a slide at rest counts as sounding only where the player sounds around it.
+TEST(ContactDetector, TheBrassValvesSlidesAndTonguesAreFound) {
+  auto stage = build("quartet.json");
+  ASSERT_NE(stage, nullptr);
+  const StopGrid grid{stage->start_s(), stage->start_s() + 20.0, 0.002, false};
+  const std::vector<Stop> stops = detect_stops(*stage, grid);
+  std::map<StopKind, int> count;
+  int silent = 0;
+  for (const Stop& stop : stops) {
+    ++count[stop.kind];
+    EXPECT_NE(stage->world().try_get<components::Performer>(stop.performer), nullptr);
+    if (!stop.sounding) {
+      ++silent;
+      EXPECT_TRUE(stop.kind == StopKind::valve_up || stop.kind == StopKind::slide_arrives);
+    }
+    if (stop.kind == StopKind::slide_arrives) {
+      EXPECT_GE(stop.value, 1);
+      EXPECT_LE(stop.value, 7);
+    }
+  }
+  EXPECT_GT(count[StopKind::valve_down], 8);
+  EXPECT_GT(count[StopKind::valve_up], 8);
+  EXPECT_GT(count[StopKind::slide_arrives], 2);
+  EXPECT_GT(count[StopKind::tongue], 5);
+  EXPECT_LT(silent, static_cast<int>(stops.size()));
+  EXPECT_TRUE(same(stops, detect_stops(*stage, grid)));
+}
+
+TEST(ContactDetector, AnEmptyGridFindsNothing) {
+  auto stage = build("piano.json");
+  ASSERT_NE(stage, nullptr);
+  EXPECT_TRUE(detect_stops(*stage, {1.0, 2.0, 0.0, false}).empty());
+  EXPECT_TRUE(detect_stops(*stage, {2.0, 1.0, 0.001, false}).empty());
+  EXPECT_TRUE(detect_stops(*stage, {1.0, 1.0, 0.001, false}).empty());
+}
+
+}  // namespace
+}  // namespace tutti::stage
