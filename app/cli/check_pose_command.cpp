@@ -8,7 +8,7 @@
 #include <ostream>
 
 #include <tutti/core/exit_codes.hpp>
-#include <tutti/performance/pose_check.hpp>
+#include <tutti/cli/pose_check.hpp>
 #include <tutti/cli/stage_scene.hpp>
 
 namespace tutti::app {
@@ -20,7 +20,7 @@ int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& e
   if (!staged) return fail(staged.error());
   stage::Stage& stage = **staged;
   const scene::Scene* scene = &stage.scene();
-  performance::PoseCheckOptions options;
+  PoseCheckOptions options;
   options.fps = o.fps;
   options.from_s = stage.start_s();
   options.to_s = std::min(stage.end_s(), stage.start_s() + 12.0);
@@ -41,10 +41,10 @@ int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& e
                   std::to_string(stage.end_s()) + " s");
     }
   }
-  auto report = performance::check_pose(stage, options);
+  auto report = check_pose(stage, options);
   if (!report) return fail(Error{scene->source + ": " + report.error().message, report.error().code});
   bool over = false;
-  for (const performance::PoseMeasure& m : report->measures) over = over || !m.within_limit();
+  for (const PoseMeasure& m : report->measures) over = over || !m.within_limit();
   if (o.json) {
     nlohmann::json doc;
     doc["scene"] = scene->source;
@@ -53,7 +53,7 @@ int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& e
     doc["fps"] = options.fps;
     doc["frames"] = report->frames;
     doc["measures"] = nlohmann::json::array();
-    for (const performance::PoseMeasure& m : report->measures) {
+    for (const PoseMeasure& m : report->measures) {
       nlohmann::json j{{"name", m.name},       {"unit", m.unit},
                        {"samples", m.samples.size()}, {"min", m.percentile(0.0)}, {"median", m.percentile(0.5)},
                        {"p95", m.percentile(0.95)},   {"max", m.worst()},
@@ -69,7 +69,7 @@ int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& e
     char heading[160];
     std::snprintf(heading, sizeof heading, "check-pose: %s, %.2f .. %.2f s at %d fps, ",
                   scene->source.c_str(), options.from_s, options.to_s, options.fps);
-    out << heading << performance::format_pose_report(*report);
+    out << heading << format_pose_report(*report);
   }
   return o.check && over ? kExitPoseLimitOver : kExitOk;
 }

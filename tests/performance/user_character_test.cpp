@@ -16,13 +16,18 @@
 #include <tutti/stage/stage.hpp>
 #include <tutti/humanoid/humanoid.hpp>
 #include <tutti/performance/families.hpp>
-#include <tutti/performance/pose_check.hpp>
+#include <tutti/cli/pose_check.hpp>
 #include <tutti/scene/load_scene.hpp>
 
 #include "scratch_dir.hpp"
 
 namespace tutti::performance {
 namespace {
+
+using app::check_pose;
+using app::PoseCheckOptions;
+using app::PoseMeasure;
+using app::PoseReport;
 
 const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <tutti/performance/pose_check.hpp>
+#include <tutti/cli/pose_check.hpp>
 
 #include <algorithm>
 #include <array>
@@ -25,7 +25,7 @@
 #include <tutti/components/valve.hpp>
 #include <tutti/piano/piano_components.hpp>
 
-namespace tutti::performance {
+namespace tutti::app {
 namespace {
 
 constexpr const char* kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
@@ -884,4 +884,4 @@ std::string format_pose_report(const PoseReport& report) {
   return out;
 }
 
-}  // namespace tutti::performance
+}  // namespace tutti::app

@@ -4,7 +4,7 @@
 // fingers inside their joint limits, pianists' pads on the key tops at key bottom and no key left
 // hanging. And the checks fail when the hold is wrong: a hold file that puts the right palm on
 // the old grip above the buttons leaves the fingertips centimetres away.
-#include <tutti/performance/pose_check.hpp>
+#include <tutti/cli/pose_check.hpp>
 
 #include <gtest/gtest.h>
 
@@ -26,8 +26,11 @@
 #include "scratch_dir.hpp"
 #include "testdata.hpp"
 
-namespace tutti::performance {
+namespace tutti::app {
 namespace {
+
+using performance::build_stage;
+using performance::draft_scene;
 
 const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
 
@@ -443,4 +446,4 @@ TEST(PoseCheck, AnEmptyRangeIsAnError) {
 }
 
 }  // namespace
-}  // namespace tutti::performance
+}  // namespace tutti::app
