@@ -87,6 +87,10 @@ struct PianoRig {
   std::array<double, 128> key_top_z_mm{};
   std::array<double, 128> key_back_y_mm{};
   std::array<double, 128> key_centre_x_mm{};  // across the keys, keyboard frame
+  // Each key's top outline about its node (mm): half its widest width, and its length from the
+  // back edge (the node's origin) to the front. 0 for a key without a mesh.
+  std::array<double, 128> key_half_width_mm{};
+  std::array<double, 128> key_length_mm{};
   glm::mat4 world_to_keyboard{1.0f};
   std::vector<glm::mat4> scratch_world;  // reused every frame by the pose system
   std::vector<glm::mat4> scratch_target_world;

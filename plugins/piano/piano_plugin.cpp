@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <tutti/piano/piano_plugin.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include <tutti/components/finger.hpp>
@@ -72,6 +74,26 @@ float key_pivot_behind_m(const model::ModelAsset& piano, int node, const key_act
   return static_cast<float>(std::max(0.0, lever.pivot_y_mm - back_y_mm) / 1000.0);
 }
 
+// A key's top outline about its node (mm): the key mesh's widest |x| and its furthest +z (the
+// node sits at the top's back edge, the key running toward +z, the player).
+struct KeyOutlineMm {
+  double half_width = 0.0;
+  double length = 0.0;
+};
+KeyOutlineMm key_outline_mm(const model::ModelAsset& piano, int node) {
+  const model::Node& key = piano.nodes[static_cast<std::size_t>(node)];
+  if (key.mesh < 0) return {};
+  float x_max = 0.0f, z_max = 0.0f;
+  for (const model::Primitive& primitive : piano.meshes[static_cast<std::size_t>(key.mesh)].primitives) {
+    for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
+      const glm::vec3& p = piano.vertices[primitive.first_vertex + v].position;
+      x_max = std::max(x_max, std::abs(p.x));
+      z_max = std::max(z_max, p.z);
+    }
+  }
+  return {1000.0 * static_cast<double>(x_max), 1000.0 * static_cast<double>(z_max)};
+}
+
 Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
                   const key_action::KeyAction& action, bool draw_hands, PianoRig& rig) {
   auto piano_model = builder.generated_model("piano.glb");
@@ -92,6 +114,9 @@ Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
     rig.key_top_z_mm[static_cast<std::size_t>(key)] = 1000.0 * static_cast<double>(rest.y);
     rig.key_back_y_mm[static_cast<std::size_t>(key)] = -1000.0 * static_cast<double>(rest.z);
     rig.key_centre_x_mm[static_cast<std::size_t>(key)] = 1000.0 * static_cast<double>(rest.x);
+    const KeyOutlineMm outline = key_outline_mm(piano, node);
+    rig.key_half_width_mm[static_cast<std::size_t>(key)] = outline.half_width;
+    rig.key_length_mm[static_cast<std::size_t>(key)] = outline.length;
   }
   {
     std::vector<glm::mat4> world(piano.nodes.size());
