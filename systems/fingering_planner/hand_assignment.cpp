@@ -251,11 +251,16 @@ void take_crossed_notes(const music::Score& score, const FingeringModel& model,
     }
     if (!crosses || (other_above && other_below)) continue;
     if (hi - lo > reach_mm || at_onset > 5) continue;
-    // This hand's keys meanwhile must stay beyond the other hand's new span.
+    // This hand's keys meanwhile must stay beyond the other hand's new span. A key it lets go
+    // as the note strikes is not meanwhile: the hand leaves it (43e writes a right-hand line
+    // C#5-B4-A4 against the left's B4-C#5-D5, each hand crossing the other note by note).
+    const auto meanwhile = [&](const music::Note& o) {
+      return o.offset_s > n.onset_s && o.onset_s < n.offset_s;
+    };
     bool clear = true;
     for (std::size_t i = 0; i < score.notes.size() && clear; ++i) {
       const music::Note& o = score.notes[i];
-      if (i == note || out.hand[i] != side || !during(o)) continue;
+      if (i == note || out.hand[i] != side || !meanwhile(o)) continue;
       const double x = x_of(o.pitch);
       clear = other == music::Hand::left ? x > hi : x < lo;
     }
@@ -323,6 +328,134 @@ void share_unisons(const music::Score& score, HandAssignment& out) {
   }
 }
 
+// Crowded hands: the left hand's highest key less than this many white keys below the right
+// hand's lowest (or above it). The hands' thumb sides then meet: a hand's keys lie up to about
+// two white keys from its thumb, which reaches one more.
+constexpr double kCrowdedWhiteKeys = 3.5;
+// The widest passage one hand takes over (white keys, lowest to highest).
+constexpr double kPassageWhiteKeys = 6.0;
+
+// Passages where both hands play crowded together at every onset and one hand could play all of
+// their keys (within its reach, at most five at once) go to one hand: the one with more of the
+// passage's notes (ties: the side of middle C the passage is on). A hand a file states is kept.
+void one_hand_for_crowded_passages(const music::Score& score, const FingeringModel& model,
+                                   HandAssignment& out) {
+  constexpr double kLegatoOverlapS = 0.05;  // a key overlapping the next onset this little has gone
+  constexpr double kNearS = 0.3;  // where the other hand is: its keys this near in time
+  const Keyboard& keyboard = model.keyboard;
+  auto x_of = [&](int key) {
+    return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
+  };
+  const double reach_mm = model.hand.reach_mm();
+  const double crowded_mm = kCrowdedWhiteKeys * keyboard.white_key_width_mm();
+  std::vector<int> order;
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    if (out.hand[i] != music::Hand::unknown) order.push_back(static_cast<int>(i));
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return score.notes[static_cast<std::size_t>(a)].onset_ticks <
+           score.notes[static_cast<std::size_t>(b)].onset_ticks;
+  });
+  // Each onset: whether the hands are crowded there and one hand could take all their keys.
+  struct Onset {
+    std::size_t begin, end;  // into `order`: the notes struck here
+    bool crowded_and_fits;
+    double onset_s;
+  };
+  std::vector<Onset> onsets;
+  std::vector<std::size_t> sounding;  // notes struck so far and not yet let go
+  for (std::size_t start = 0; start < order.size();) {
+    std::size_t stop = start;
+    const auto& first = score.notes[static_cast<std::size_t>(order[start])];
+    while (stop < order.size() &&
+           score.notes[static_cast<std::size_t>(order[stop])].onset_ticks == first.onset_ticks) {
+      ++stop;
+    }
+    // The keys sounding as this onset strikes, by hand (held ones included).
+    std::erase_if(sounding, [&](std::size_t i) {
+      return score.notes[i].offset_s <= first.onset_s + kLegatoOverlapS;
+    });
+    for (std::size_t k = start; k < stop; ++k) sounding.push_back(static_cast<std::size_t>(order[k]));
+    int left_top = -1, right_bottom = 128, lowest = 128, highest = -1, keys = 0;
+    bool stated = false;
+    for (const std::size_t i : sounding) {
+      const music::Note& n = score.notes[i];
+      stated = stated || out.source[i] == HandSource::file;
+      if (out.hand[i] == music::Hand::left) left_top = std::max(left_top, n.pitch);
+      else right_bottom = std::min(right_bottom, n.pitch);
+      lowest = std::min(lowest, n.pitch);
+      highest = std::max(highest, n.pitch);
+      ++keys;
+    }
+    const bool both = left_top >= 0 && right_bottom < 128;
+    const bool crowded = both && x_of(right_bottom) - x_of(left_top) < crowded_mm;
+    const bool fits = keys <= 5 && x_of(highest) - x_of(lowest) <= reach_mm;
+    onsets.push_back({start, stop, crowded && fits && !stated, first.onset_s});
+    start = stop;
+  }
+  for (std::size_t a = 0; a < onsets.size();) {
+    if (!onsets[a].crowded_and_fits) {
+      ++a;
+      continue;
+    }
+    std::size_t b = a;
+    while (b < onsets.size() && onsets[b].crowded_and_fits) ++b;
+    // The passage: onsets [a, b). Its notes, and which hand has more of them.
+    int right = 0, left = 0;
+    double pitch_sum = 0.0;
+    for (std::size_t k = onsets[a].begin; k < onsets[b - 1].end; ++k) {
+      const auto i = static_cast<std::size_t>(order[k]);
+      (out.hand[i] == music::Hand::right ? right : left) += 1;
+      pitch_sum += score.notes[i].pitch;
+    }
+    const double centre = pitch_sum / static_cast<double>(right + left);
+    // The passage's keys (lo_mm..hi_mm) and time, and whether `giver` is free of it: none of its
+    // other keys this near in time (struck or held) lies crowded against the passage's keys.
+    // A hand that has just played there, or goes on there, would meet the keeper's thumb.
+    double lo_mm = 1e300, hi_mm = -1e300, start_s = onsets[a].onset_s, end_s = start_s;
+    for (std::size_t k = onsets[a].begin; k < onsets[b - 1].end; ++k) {
+      const music::Note& n = score.notes[static_cast<std::size_t>(order[k])];
+      lo_mm = std::min(lo_mm, x_of(n.pitch));
+      hi_mm = std::max(hi_mm, x_of(n.pitch));
+      end_s = std::max(end_s, n.offset_s);
+    }
+    // A passage that sits in one place (a seventh: 43e's thirds between F#4 and D5), not one a
+    // hand would leap through (a left-hand D3-A3 taken by the right hand from C5).
+    if (hi_mm - lo_mm > std::min(reach_mm, kPassageWhiteKeys * keyboard.white_key_width_mm())) {
+      a = b;
+      continue;
+    }
+    const auto free_of_passage = [&](music::Hand giver) {
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        if (k >= onsets[a].begin && k < onsets[b - 1].end) continue;
+        const auto i = static_cast<std::size_t>(order[k]);
+        const music::Note& n = score.notes[i];
+        if (out.hand[i] != giver || n.offset_s <= start_s - kNearS || n.onset_s >= end_s + kNearS) continue;
+        const double x = x_of(n.pitch);
+        if (x > lo_mm - crowded_mm && x < hi_mm + crowded_mm) return false;
+      }
+      return true;
+    };
+    const music::Hand preferred = right != left ? (right > left ? music::Hand::right : music::Hand::left)
+                                                : (centre >= 60.0 ? music::Hand::right : music::Hand::left);
+    const music::Hand other = preferred == music::Hand::right ? music::Hand::left : music::Hand::right;
+    music::Hand keeper = music::Hand::unknown;
+    if (free_of_passage(other)) keeper = preferred;
+    else if (free_of_passage(preferred)) keeper = other;
+    if (keeper == music::Hand::unknown) {
+      a = b;
+      continue;
+    }
+    for (std::size_t k = onsets[a].begin; k < onsets[b - 1].end; ++k) {
+      const auto i = static_cast<std::size_t>(order[k]);
+      if (out.hand[i] == keeper) continue;
+      out.hand[i] = keeper;
+      out.source[i] = HandSource::crowded;
+    }
+    a = b;
+  }
+}
+
 }  // namespace
 
 HandAssignment assign_hands(const music::Score& score, const FingeringModel& model) {
@@ -356,6 +489,7 @@ HandAssignment assign_hands(const music::Score& score, const FingeringModel& mod
   // Unisons first: a doubled key given to one hand no longer blocks a crossing note beside it.
   share_unisons(score, out);
   take_crossed_notes(score, model, out);
+  one_hand_for_crowded_passages(score, model, out);
   return out;
 }
 

@@ -20,6 +20,10 @@
 // the other hand when it can add it at its own outer side (HandSource::crossing); so does a key
 // the other hand struck before it and still holds, or let go less than 0.3 s before (the thumbs
 // would meet on it).
+// Last of all, a passage where the two hands play crowded together (their inner keys less than
+// kCrowdedWhiteKeys apart, or crossed) at every onset, and all their keys at each onset fit one
+// hand (its reach, five keys), goes to the hand with more of its notes (HandSource::crowded): a
+// pianist plays two close lines with one hand rather than the hands inside each other.
 
 #include <vector>
 
@@ -28,7 +32,7 @@
 
 namespace tutti::piano {
 
-enum class HandSource { file, part_name, staff, automatic, reach, unison, crossing, none };
+enum class HandSource { file, part_name, staff, automatic, reach, unison, crossing, crowded, none };
 
 struct HandAssignment {
   std::vector<music::Hand> hand;   // per Score::notes entry

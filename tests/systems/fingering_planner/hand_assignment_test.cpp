@@ -167,6 +167,72 @@ TEST(HandAssignment, ANoteUnderTheOtherHandsKeysGoesToItAtItsOuterSide) {
   }
 }
 
+// Two lines written crossing note by note (the lilypond suite's 43e: the right hand's staff
+// C#5-B4-A4 against the left's B4-C#5-D5, a half-beat each). A key a hand lets go as the crossed
+// note strikes does not keep that note in it: no onset has the hands crossed.
+TEST(HandAssignment, LinesCrossingNoteByNoteAreTradedAtEachStrike) {
+  PianoScore s;
+  s.add(73, 0, 480, 1);  // right: C#5, B4, A4
+  s.add(71, 480, 480, 1);
+  s.add(69, 960, 480, 1);
+  s.add(71, 0, 480, 2);  // left: B4, C#5, D5
+  s.add(73, 480, 480, 2);
+  s.add(74, 960, 480, 2);
+  music::finalize_score(s.score);
+  const HandAssignment a = assign_hands(s.score, test::model("default"));
+  for (const std::int64_t tick : {0, 480, 960}) {
+    int left_top = -1, right_bottom = 128;
+    for (std::size_t i = 0; i < s.score.notes.size(); ++i) {
+      if (s.score.notes[i].onset_ticks != tick) continue;
+      if (a.hand[i] == Hand::left) left_top = std::max(left_top, s.score.notes[i].pitch);
+      if (a.hand[i] == Hand::right) right_bottom = std::min(right_bottom, s.score.notes[i].pitch);
+    }
+    EXPECT_LT(left_top, right_bottom) << "tick " << tick;
+  }
+}
+
+// Two lines a third apart in the two staves (43e's bars of thirds around B4): the hands would
+// play inside each other, and one hand spans both, so it plays them all. Lines an octave apart,
+// or close chords one hand cannot hold (six keys), stay in their staves.
+TEST(HandAssignment, CrowdedLinesOneHandSpansGoToIt) {
+  // Chords `left` and `right` struck together on two beats: how many notes left their staff's hand.
+  const auto moved = [](const std::vector<int>& left, const std::vector<int>& right) {
+    PianoScore s;
+    for (const std::int64_t tick : {0, 480}) {
+      for (const int pitch : left) s.add(pitch, tick, 480, 2);
+      for (const int pitch : right) s.add(pitch, tick, 480, 1);
+    }
+    music::finalize_score(s.score);
+    const HandAssignment a = assign_hands(s.score, test::model("default"));
+    int count = 0;
+    for (std::size_t i = 0; i < s.score.notes.size(); ++i) {
+      const Hand staff = s.score.notes[i].staff == 1 ? Hand::right : Hand::left;
+      if (a.hand[i] != staff) ++count;
+    }
+    return count;
+  };
+  {
+    PianoScore s;
+    const int left[] = {66, 67, 69, 71};   // F#4 G4 A4 B4
+    const int right[] = {69, 71, 73, 74};  // A4 B4 C#5 D5
+    for (int k = 0; k < 4; ++k) {
+      s.add(left[k], k * 480, 480, 2);
+      s.add(right[k], k * 480, 480, 1);
+    }
+    music::finalize_score(s.score);
+    const HandAssignment a = assign_hands(s.score, test::model("default"));
+    for (std::size_t i = 0; i < s.score.notes.size(); ++i) {
+      EXPECT_EQ(a.hand[i], Hand::right) << s.score.notes[i].pitch;
+      if (s.score.notes[i].staff == 2) {
+        EXPECT_EQ(a.source[i], HandSource::crowded);
+      }
+    }
+  }
+  EXPECT_EQ(moved({67}, {71}), 2);          // G4 under B4: the right hand plays both
+  EXPECT_EQ(moved({55}, {67}), 0);          // an octave apart: as written
+  EXPECT_EQ(moved({55, 59, 62}, {64, 67, 71}), 0);  // six keys: no one hand holds them
+}
+
 TEST(HandAssignment, HandsAFileStatesAreKept) {
   PianoScore s;
   s.add(62, 0, 480, 1);

@@ -202,7 +202,8 @@ TEST(ScorePlan, VoicesOnSeparateTracksAreSplitTogether) {
   int fugue_left = 0;
   for (std::size_t i = 0; i < score.notes.size(); ++i) {
     if (score.parts[std::size_t(score.notes[i].part)].name.rfind("Fuga", 0) != 0) continue;
-    EXPECT_EQ(a.source[i], HandSource::automatic);
+    // Split automatically; a few close two-voice passages then go to one hand (crowded).
+    EXPECT_TRUE(a.source[i] == HandSource::automatic || a.source[i] == HandSource::crowded);
     (a.hand[i] == Hand::right ? fugue_right : fugue_left) += 1;
   }
   EXPECT_GT(fugue_right, 100);
