@@ -617,11 +617,14 @@ class Checker {
         pad.two_sided = true;
         // The pad's lowest point over the key's top: off its outline (a black key struck in front
         // of its front edge, a key missed to the side) it presses nothing.
-        const KeyOutline& outline = key_outline(*piano->asset, key_node);
-        const double off_side = std::max(0.0, std::abs(static_cast<double>(centre_local.x)) -
-                                                  outline.half_width_m);
+        // The key's outline, from its mesh when the rig was bound (PianoRig::key_half_width_mm).
+        const auto key = static_cast<std::size_t>(finger->key);
+        const double half_width_m = rig.key_half_width_mm[key] / 1000.0;
+        const double length_m = rig.key_length_mm[key] / 1000.0;
+        const double off_side =
+            std::max(0.0, std::abs(static_cast<double>(centre_local.x)) - half_width_m);
         const double off_end = std::max({0.0, -static_cast<double>(centre_local.z),
-                                         static_cast<double>(centre_local.z) - outline.length_m});
+                                         static_cast<double>(centre_local.z) - length_m});
         measure(who + ": pressing pad off its key's top (0 = on it)", "mm", 1.0)
             .add(std::hypot(off_side, off_end) * 1000.0, t_s_,
                  (side == 0 ? "right " : "left ") + std::string(kFingerNames[f]) + " on key " +
@@ -733,27 +736,6 @@ class Checker {
 
   // A key's top in its own frame: from the pivot (its back edge, z = 0) toward the player, as
   // wide and as long as its mesh.
-  struct KeyOutline {
-    double half_width_m = 0.0;
-    double length_m = 0.0;
-  };
-  const KeyOutline& key_outline(const model::ModelAsset& asset, int node) {
-    auto [it, added] = outlines_.try_emplace(node);
-    if (!added) return it->second;
-    const model::Node& key = asset.nodes[static_cast<std::size_t>(node)];
-    if (key.mesh < 0) return it->second;
-    float x_max = 0.0f, z_max = 0.0f;
-    for (const model::Primitive& primitive : asset.meshes[static_cast<std::size_t>(key.mesh)].primitives) {
-      for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) {
-        const glm::vec3& p = asset.vertices[primitive.first_vertex + v].position;
-        x_max = std::max(x_max, std::abs(p.x));
-        z_max = std::max(z_max, p.z);
-      }
-    }
-    it->second = {static_cast<double>(x_max), static_cast<double>(z_max)};
-    return it->second;
-  }
-
   void collect_notes() {
     notes_.clear();
     stage_.world().view<const components::Note>().each(
@@ -793,7 +775,6 @@ class Checker {
   std::vector<std::uint8_t> joint_kind_;
   std::map<std::uint64_t, double> last_slide_mm_;  // per performer entity
   std::array<std::vector<HandCapsule>, 2> hand_capsules_;  // the pianist's right, left
-  std::map<int, KeyOutline> outlines_;
   std::map<const model::ModelAsset*, DeskPanel> desk_panels_;
 };
 
