@@ -60,7 +60,9 @@ TEST(AtomicFile, AnUnwritableFolderIsAOneLineError) {
 }
 
 // A child process saves big versions over and over; it is killed (SIGKILL, no clean-up) at a
-// different moment each round. Whatever moment: the file is one complete version.
+// different moment each round. Whatever moment: the file is one complete version. Rounds go on
+// (up to 120) until at least three kills have landed inside a save: how long a save takes varies
+// with the machine's load and the sanitizers, and twelve fixed rounds sometimes had none.
 TEST(AtomicFile, KilledDuringSaveTheFileIsOneWholeVersion) {
   ScratchDir dir;
   const std::string old_version = "{\"version\": \"old\"}\n";
@@ -71,7 +73,7 @@ TEST(AtomicFile, KilledDuringSaveTheFileIsOneWholeVersion) {
     return text + "\"}\n";
   };
   int killed_mid_save = 0;
-  for (int round = 0; round < 12; ++round) {
+  for (int round = 0; round < 120 && (round < 12 || killed_mid_save < 3); ++round) {
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
@@ -79,7 +81,7 @@ TEST(AtomicFile, KilledDuringSaveTheFileIsOneWholeVersion) {
         if (!write_file_atomically(file, version(n))) ::_exit(3);
       }
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5 + 7 * round));
+    std::this_thread::sleep_for(std::chrono::milliseconds(5 + 7 * (round % 12) + round / 12));
     ::kill(child, SIGKILL);
     int status = 0;
     ::waitpid(child, &status, 0);
