@@ -23,6 +23,7 @@
 #include <tutti/components/performer.hpp>
 #include <tutti/components/slide.hpp>
 #include <tutti/components/valve.hpp>
+#include <tutti/piano/hand_capsules.hpp>
 #include <tutti/piano/piano_components.hpp>
 
 namespace tutti::app {
@@ -80,37 +81,6 @@ double distance_to_segment(const glm::vec3& p, const glm::vec3& a, const glm::ve
   return static_cast<double>(glm::length(p - (a + t * ab)));
 }
 
-// The closest distance between segments [p1, q1] and [p2, q2] (Ericson, Real-Time Collision
-// Detection, 5.1.9).
-double segment_distance(const glm::vec3& p1, const glm::vec3& q1, const glm::vec3& p2,
-                        const glm::vec3& q2) {
-  const glm::vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
-  constexpr float kTiny = 1e-12f;
-  float s = 0.0f, t = 0.0f;
-  if (a <= kTiny && e <= kTiny) return static_cast<double>(glm::length(r));
-  if (a <= kTiny) {
-    t = std::clamp(f / e, 0.0f, 1.0f);
-  } else {
-    const float c = glm::dot(d1, r);
-    if (e <= kTiny) {
-      s = std::clamp(-c / a, 0.0f, 1.0f);
-    } else {
-      const float b = glm::dot(d1, d2), denom = a * e - b * b;
-      s = denom > kTiny ? std::clamp((b * f - c * e) / denom, 0.0f, 1.0f) : 0.0f;
-      t = (b * s + f) / e;
-      if (t < 0.0f) {
-        t = 0.0f;
-        s = std::clamp(-c / a, 0.0f, 1.0f);
-      } else if (t > 1.0f) {
-        t = 1.0f;
-        s = std::clamp((b - c) / a, 0.0f, 1.0f);
-      }
-    }
-  }
-  return static_cast<double>(glm::distance(p1 + d1 * s, p2 + d2 * t));
-}
-
 // How far inside the box [lo, hi]'s outline across x and y the segment [a, b] passes, where it
 // crosses the box (slab clipping); 0 when it misses the box.
 double edge_into_box(const glm::vec3& a, const glm::vec3& b, const glm::vec3& lo, const glm::vec3& hi) {
@@ -132,14 +102,7 @@ double edge_into_box(const glm::vec3& a, const glm::vec3& b, const glm::vec3& lo
       std::min({mid.x - lo.x, hi.x - mid.x, mid.y - lo.y, hi.y - mid.y}));
 }
 
-// A finger's bone or the palm across the knuckles, as a capsule, named for reports.
-struct HandCapsule {
-  glm::vec3 a, b;
-  float radius;
-  const char* name;
-};
-// The palm's half thickness across the knuckles.
-constexpr float kPalmRadiusM = 0.011f;
+using piano_family::HandCapsule;
 
 std::string name_of(const ecs::World& world, ecs::Entity performer) {
   const auto* about = world.try_get<components::Performer>(performer);
@@ -675,16 +638,10 @@ class Checker {
   void collect_hand_capsules(const piano_family::PianoRig& rig, std::size_t side,
                              const stage::PlacedModel* own, const stage::BodyNodes* own_nodes,
                              std::size_t body_side, const stage::PlacedModel* hand) {
-    static constexpr const char* kBoneNames[5][3] = {
-        {"thumb's first bone", "thumb's middle bone", "thumb's tip"},
-        {"index's first bone", "index's middle bone", "index's tip"},
-        {"middle's first bone", "middle's middle bone", "middle's tip"},
-        {"ring's first bone", "ring's middle bone", "ring's tip"},
-        {"little's first bone", "little's middle bone", "little's tip"}};
     std::vector<HandCapsule>& out = hand_capsules_[side];
     out.clear();
     const std::vector<glm::mat4>* world = nullptr;
-    std::array<std::array<int, 4>, 5> chain{};
+    piano_family::FingerChains chain{};
     if (own != nullptr) {
       world = rig.hands_retarget && own == &rig.hands_retarget->proxy ? &hand_world_ : &body_world_;
       for (std::size_t f = 0; f < 5; ++f) {
@@ -700,17 +657,7 @@ class Checker {
     } else {
       return;
     }
-    const auto at = [&](int node) { return origin((*world)[static_cast<std::size_t>(node)]); };
-    for (std::size_t f = 0; f < 5; ++f) {
-      const auto radius = stage::kFingertipPadRadiusM[f];
-      for (std::size_t j = 0; j < 3; ++j) {
-        if (chain[f][j] < 0 || chain[f][j + 1] < 0) continue;
-        out.push_back({at(chain[f][j]), at(chain[f][j + 1]), radius, kBoneNames[f][j]});
-      }
-    }
-    if (chain[1][0] >= 0 && chain[4][0] >= 0) {
-      out.push_back({at(chain[1][0]), at(chain[4][0]), kPalmRadiusM, "palm"});
-    }
+    piano_family::collect_hand_capsules(chain, *world, out);
   }
 
   // How deep one hand's capsules reach into the other's: hands cross over each other, never
@@ -722,8 +669,7 @@ class Checker {
     const HandCapsule* deepest_left = nullptr;
     for (const HandCapsule& right : hand_capsules_[0]) {
       for (const HandCapsule& left : hand_capsules_[1]) {
-        const double into = static_cast<double>(right.radius + left.radius) -
-                            segment_distance(right.a, right.b, left.a, left.b);
+        const double into = piano_family::overlap_m(right, left);
         if (into > depth) depth = into, deepest_right = &right, deepest_left = &left;
       }
     }

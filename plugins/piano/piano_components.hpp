@@ -20,6 +20,7 @@
 #include <tutti/key_action/performance_report.hpp>
 #include <tutti/music/score.hpp>
 #include <optional>
+#include <tutti/piano/hand_capsules.hpp>
 
 #include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/performer_rig.hpp>
@@ -94,6 +95,10 @@ struct PianoRig {
   glm::mat4 world_to_keyboard{1.0f};
   std::vector<glm::mat4> scratch_world;  // reused every frame by the pose system
   std::vector<glm::mat4> scratch_target_world;
+  // Reused every frame by the idle fingers' yield (idle_fingers_yield.hpp): each hand's posed
+  // world matrices and capsules.
+  std::array<std::vector<glm::mat4>, 2> scratch_hand_world;
+  std::array<std::vector<HandCapsule>, 2> scratch_hand_capsules;
 };
 
 }  // namespace tutti::piano_family

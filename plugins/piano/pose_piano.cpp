@@ -12,6 +12,7 @@
 
 #include <tutti/components/finger.hpp>
 #include <tutti/components/hand.hpp>
+#include <tutti/piano/idle_fingers_yield.hpp>
 #include <tutti/piano/own_hands.hpp>
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/stage/body_retarget.hpp>
@@ -283,6 +284,14 @@ void pose_pianist(ecs::World& world, PianoRig& rig) {
                            : world.try_get<PlacedModel>(rig.hand_models[static_cast<std::size_t>(side)]);
     if (hand_model == nullptr || hand_model->asset == nullptr) continue;
     seat_pads_on_keys(world, rig, static_cast<std::size_t>(side), *hand_model, key_down);
+  }
+  {
+    std::array<PlacedModel*, 2> hand_models{};
+    for (std::size_t side = 0; side < 2; ++side) {
+      hand_models[side] = rig.hand_models[side].is_null() ? &rig.hand_targets[side]
+                                                          : world.try_get<PlacedModel>(rig.hand_models[side]);
+    }
+    idle_fingers_yield(world, rig, hand_models);
   }
   // A key two fingers hold (one handing it to the other, or both hands) goes down once: as far
   // as the deeper of them holds it.

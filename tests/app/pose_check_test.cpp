@@ -330,6 +330,18 @@ TEST(PoseCheck, OneHandInsideTheOtherIsMeasured) {
   EXPECT_NE(apart.worst_of.find(" in left "), std::string::npos) << apart.worst_of;
 }
 
+// A finger that presses nothing gives way to the other hand: in Bach's Prelude in C (BWV 846)
+// at 200.57 s the right thumb strikes C4 where the left thumb, idle beside the left hand's B3,
+// hung (5.6 mm into it before the yield).
+TEST(PoseCheck, AnIdleFingerGivesWayToTheOtherHand) {
+  TUTTI_REQUIRE_TESTDATA();
+  const PoseReport report = check_piece("midi/tonejs/bach_846.mid", 200.3, 200.9);
+  const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
+  EXPECT_GT(apart.samples.size(), 10u);
+  EXPECT_EQ(apart.worst(), 0.0) << apart.worst_at_s << " s: " << apart.worst_of;
+  EXPECT_TRUE(get(report, "pianist: fastest finger joint's angular speed").within_limit());
+}
+
 // Every joint's angular speed from frame to frame, the fastest reported with its joint's name and
 // bound: outside strokes 1000 deg/s, fingers 2500, the slide arm while the slide moves 2000 (and
 // only then: Trumpet 1 has no slide).
