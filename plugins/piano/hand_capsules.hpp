@@ -2,7 +2,7 @@
 #pragma once
 // A pianist's hand as capsules: each finger's three bones, knuckle to tip, as thick as its pad,
 // and the palm across the knuckles. One shape for the pose that keeps the hands apart
-// (idle_fingers_yield.hpp) and for check-pose's measure of one hand inside the other.
+// (hands_apart.hpp) and for check-pose's measure of one hand inside the other.
 
 #include <array>
 #include <span>

@@ -95,10 +95,20 @@ struct PianoRig {
   glm::mat4 world_to_keyboard{1.0f};
   std::vector<glm::mat4> scratch_world;  // reused every frame by the pose system
   std::vector<glm::mat4> scratch_target_world;
-  // Reused every frame by the idle fingers' yield (idle_fingers_yield.hpp): each hand's posed
+  // Reused every frame by the idle fingers' yield (hands_apart.hpp): each hand's posed
   // world matrices and capsules.
   std::array<std::vector<glm::mat4>, 2> scratch_hand_world;
   std::array<std::vector<HandCapsule>, 2> scratch_hand_capsules;
 };
+
+// Hand model `side`'s finger chains (hand_capsules.hpp): each finger's three bones and its tip.
+inline FingerChains finger_chains(const PianoRig& rig, std::size_t side) {
+  FingerChains chains{};
+  for (std::size_t f = 0; f < 5; ++f) {
+    for (std::size_t j = 0; j < 3; ++j) chains[f][j] = rig.finger_bones[side][f][j];
+    chains[f][3] = rig.finger_tips[side][f];
+  }
+  return chains;
+}
 
 }  // namespace tutti::piano_family

@@ -12,7 +12,8 @@
 
 #include <tutti/components/finger.hpp>
 #include <tutti/components/hand.hpp>
-#include <tutti/piano/idle_fingers_yield.hpp>
+#include <tutti/piano/hands_apart.hpp>
+#include <tutti/piano/pad_seater.hpp>
 #include <tutti/piano/own_hands.hpp>
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/stage/body_retarget.hpp>
@@ -53,161 +54,9 @@ void pose_pianist_body(PlacedModel& body, PianoRig& rig, const std::array<glm::v
                            body.root, body.pose, world);
 }
 
-// The key's top surface height (keyboard frame, mm) at depth y_mm, the key turned `angle` about
-// its rail.
-double key_surface_z_mm(const PianoRig& rig, int key, double angle, double y_mm) {
-  const auto k = static_cast<std::size_t>(key);
-  const double rail_y = rig.key_back_y_mm[k] + 1000.0 * static_cast<double>(rig.key_pivot_behind_m[k]);
-  return rig.key_top_z_mm[k] - (rail_y - y_mm) * std::tan(angle);
-}
-
-// How far the seating may turn a finger's joints past the plan. Centring a pad on its key's
-// centre line takes at most kMostSpreadCorrectionRad: a key further away is the plan's to reach
-// (the hand's place, the finger's range), not a finger's to twist toward. Only a pad that would
-// press beside or in front of its key's top (the thumb's tilted joint carries it there on a black
-// key) turns further, and only as far as the key's outline less kPadInsideKeyMm.
-constexpr double kMostSpreadCorrectionRad = 0.1;
-constexpr double kMostSpreadOntoKeyRad = 0.35;
-constexpr double kMostCurlOntoKeyRad = 0.35;
-constexpr double kPadInsideKeyMm = 1.0;
-
-// A seated finger's turn past its planned pose: its first joint's stroke (about -X) and spread
-// (about the vertical) and its next joint's flexion (curl).
-struct PadSeat {
-  double stroke = 0.0;
-  double spread = 0.0;
-  double curl = 0.0;
-};
-
-// The pad of a pressing finger against its key (keyboard frame, mm): its lowest point's height
-// over the key's top there, its centre's distance across from the key's centre line, and its
-// centre's depth into the keys.
-struct PadOnKey {
-  double height_mm = 0.0;
-  double side_mm = 0.0;
-  double depth_mm = 0.0;
-  double arm_mm = 0.0;  // the pad's horizontal distance from the finger's first joint
-};
-
-class PadSeater {
- public:
-  PadSeater(PianoRig& rig, PlacedModel& hand_model, const components::Finger& finger, std::size_t side,
-            std::size_t f, double key_angle)
-      : rig_(rig), hand_model_(hand_model), finger_(finger), side_(side), f_(f), angle_(key_angle),
-        mirror_(side == 0 ? 1.0f : -1.0f) {}
-
-  void pose(const PadSeat& seat) {
-    const auto& bones = rig_.finger_bones[side_][f_];
-    const double stroke = (f_ == 0 ? finger_.abduction_rad : finger_.mcp_flexion_rad) + seat.stroke;
-    hand_model_.pose.local[static_cast<std::size_t>(bones[0])].rotation =
-        glm::angleAxis(-mirror_ * static_cast<float>(finger_.spread_rad + seat.spread), glm::vec3(0, 1, 0)) *
-        glm::angleAxis(static_cast<float>(stroke), glm::vec3(-1, 0, 0));
-    if (bones[1] >= 0) {
-      const double curl = (f_ == 0 ? finger_.mcp_flexion_rad : finger_.pip_flexion_rad) + seat.curl;
-      hand_model_.pose.local[static_cast<std::size_t>(bones[1])].rotation =
-          glm::angleAxis(static_cast<float>(curl), glm::vec3(-1, 0, 0));
-    }
-  }
-
-  PadOnKey measure(const PadSeat& seat) {
-    pose(seat);
-    const model::ModelAsset& asset = *hand_model_.asset;
-    std::vector<glm::mat4>& hand_world = rig_.scratch_world;
-    hand_world.resize(asset.nodes.size());
-    model::compute_world_matrices(asset, hand_model_.pose, hand_model_.root, hand_world);
-    const auto in_keyboard = [&](int node) {
-      return glm::vec3(rig_.world_to_keyboard * hand_world[static_cast<std::size_t>(node)][3]);
-    };
-    const auto& bones = rig_.finger_bones[side_][f_];
-    // glTF keyboard frame (m): x, y up, -z into the keys.
-    const glm::vec3 tip_at = in_keyboard(rig_.finger_tips[side_][f_]);
-    const glm::vec3 last_joint = in_keyboard(bones[2]);
-    const glm::vec3 root = in_keyboard(bones[0]);
-    const glm::vec3 along = glm::normalize(tip_at - last_joint);
-    const double radius = static_cast<double>(stage::kFingertipPadRadiusM[f_]) * 1000.0;
-    const glm::vec3 centre = tip_at - static_cast<float>(radius / 1000.0) * along;
-    const auto key = static_cast<std::size_t>(finger_.key);
-    PadOnKey pad;
-    pad.depth_mm = -1000.0 * static_cast<double>(centre.z);
-    pad.height_mm = 1000.0 * static_cast<double>(centre.y) - radius -
-                    key_surface_z_mm(rig_, finger_.key, angle_, pad.depth_mm);
-    pad.side_mm = 1000.0 * static_cast<double>(centre.x) - rig_.key_centre_x_mm[key];
-    pad.arm_mm = 1000.0 * static_cast<double>(glm::length(glm::vec2(centre.x - root.x, centre.z - root.z)));
-    return pad;
-  }
-
-  // How far the pad's centre lies outside its key's top less kPadInsideKeyMm: across, and in
-  // front of (negative) or behind (positive) it. 0, 0 on it.
-  glm::dvec2 off_key_mm(const PadOnKey& pad) const {
-    const auto key = static_cast<std::size_t>(finger_.key);
-    const double half_width = std::max(0.0, rig_.key_half_width_mm[key] - kPadInsideKeyMm);
-    const double back = rig_.key_back_y_mm[key] - kPadInsideKeyMm;
-    const double front = std::min(back, rig_.key_back_y_mm[key] - rig_.key_length_mm[key] + kPadInsideKeyMm);
-    return {pad.side_mm - std::clamp(pad.side_mm, -half_width, half_width),
-            pad.depth_mm - std::clamp(pad.depth_mm, front, back)};
-  }
-
-  // The pad's lowest point onto the key's top, its centre as near the key's centre line as
-  // kMostSpreadCorrectionRad allows: the stroke corrects the height on an arm as long as the
-  // pad's horizontal distance from the joint, the spread sideways on the same arm.
-  PadSeat centre(PadSeat seat) {
-    for (int round = 0; round < 4; ++round) {
-      const PadOnKey pad = measure(seat);
-      if (std::abs(pad.height_mm) < 0.05 && std::abs(pad.side_mm) < 0.2) break;
-      if (pad.arm_mm < 10.0) break;
-      seat.stroke += pad.height_mm / pad.arm_mm;
-      // A larger spread carries the right hand's pads toward +x, the left's toward -x.
-      seat.spread = std::clamp(seat.spread - static_cast<double>(mirror_) * pad.side_mm / pad.arm_mm,
-                               -kMostSpreadCorrectionRad, kMostSpreadCorrectionRad);
-    }
-    pose(seat);
-    return seat;
-  }
-
-  // A pad centred as far as allowed but still off its key's top: the stroke, spread and curl
-  // together (Gauss-Newton on measured differences) put it on the top's edge less the margin,
-  // its lowest point on the surface.
-  void onto_key(PadSeat seat) {
-    const auto residual = [&](const PadSeat& s) {
-      const PadOnKey pad = measure(s);
-      const glm::dvec2 off = off_key_mm(pad);
-      return glm::dvec3(pad.height_mm, off.x, off.y);
-    };
-    const auto limited = [](PadSeat s) {
-      s.spread = std::clamp(s.spread, -kMostSpreadOntoKeyRad, kMostSpreadOntoKeyRad);
-      s.curl = std::clamp(s.curl, -kMostCurlOntoKeyRad, kMostCurlOntoKeyRad);
-      return s;
-    };
-    constexpr double kStepRad = 0.01;
-    for (int round = 0; round < 6; ++round) {
-      const glm::dvec3 r = residual(seat);
-      if (std::abs(r.x) < 0.05 && std::abs(r.y) < 0.05 && std::abs(r.z) < 0.05) break;
-      glm::dmat3 jacobian(0.0);  // columns: d residual / d (stroke, spread, curl), mm per rad
-      for (int j = 0; j < 3; ++j) {
-        PadSeat moved = seat;
-        (j == 0 ? moved.stroke : j == 1 ? moved.spread : moved.curl) += kStepRad;
-        jacobian[j] = (residual(moved) - r) / kStepRad;
-      }
-      // Damped least squares: a small damping keeps a joint that barely moves the pad still.
-      const glm::dmat3 normal = glm::transpose(jacobian) * jacobian + glm::dmat3(25.0);
-      const glm::dvec3 step = -(glm::inverse(normal) * (glm::transpose(jacobian) * r));
-      seat = limited({seat.stroke + step.x, seat.spread + step.y, seat.curl + step.z});
-    }
-    pose(seat);
-  }
-
- private:
-  PianoRig& rig_;
-  PlacedModel& hand_model_;
-  const components::Finger& finger_;
-  std::size_t side_;
-  std::size_t f_;
-  double angle_;
-  float mirror_;
-};
 
 void seat_pads_on_keys(ecs::World& world, PianoRig& rig, std::size_t side, PlacedModel& hand_model,
-                       const std::array<double, 128>& key_down) {
+                       const std::array<double, 128>& key_down, SeatedFingers& seated) {
   for (std::size_t f = 0; f < 5; ++f) {
     const auto* finger = world.try_get<components::Finger>(rig.fingers[side][f]);
     const auto& bones = rig.finger_bones[side][f];
@@ -217,11 +66,16 @@ void seat_pads_on_keys(ecs::World& world, PianoRig& rig, std::size_t side, Place
     }
     const auto key = static_cast<std::size_t>(finger->key);
     if (rig.key_nodes[key] < 0) continue;
-    PadSeater seater(rig, hand_model, *finger, side, f, key_down[key] * rig.key_dip_rad[key]);
+    const double angle = key_down[key] * rig.key_dip_rad[key];
+    PadSeater seater(rig, hand_model, *finger, side, f, angle);
     const PadSeat centred = seater.centre({});
     const glm::dvec2 off = seater.off_key_mm(seater.measure(centred));
-    if (std::abs(off.x) > 0.0 || std::abs(off.y) > 0.0) seater.onto_key(centred);
+    PadSeat seat = centred;
+    if (std::abs(off.x) > 0.0 || std::abs(off.y) > 0.0) seat = seater.onto_key(centred);
     else seater.pose(centred);
+    seated.on_key[side][f] = true;
+    seated.seat[side][f] = seat;
+    seated.key_angle[side][f] = angle;
   }
 }
 
@@ -275,15 +129,14 @@ void pose_pianist(ecs::World& world, PianoRig& rig) {
       }
     }
   }
-  // The planned chain is a planar model of the finger; the hand model's joints are not quite it
-  // (the thumb turns about a tilted axis). Where a finger touches its key, its stroke joint is
-  // corrected on the posed model until the pad's lowest point lies on the key's top there.
+  // Where a finger touches its key, its pad is seated on the key's top (pad_seater.hpp).
+  SeatedFingers seated;
   for (int side = 0; side < 2; ++side) {
     auto* hand_model = rig.hand_models[static_cast<std::size_t>(side)].is_null()
                            ? &rig.hand_targets[static_cast<std::size_t>(side)]
                            : world.try_get<PlacedModel>(rig.hand_models[static_cast<std::size_t>(side)]);
     if (hand_model == nullptr || hand_model->asset == nullptr) continue;
-    seat_pads_on_keys(world, rig, static_cast<std::size_t>(side), *hand_model, key_down);
+    seat_pads_on_keys(world, rig, static_cast<std::size_t>(side), *hand_model, key_down, seated);
   }
   {
     std::array<PlacedModel*, 2> hand_models{};
@@ -291,7 +144,7 @@ void pose_pianist(ecs::World& world, PianoRig& rig) {
       hand_models[side] = rig.hand_models[side].is_null() ? &rig.hand_targets[side]
                                                           : world.try_get<PlacedModel>(rig.hand_models[side]);
     }
-    idle_fingers_yield(world, rig, hand_models);
+    keep_hands_apart(world, rig, hand_models, seated);
   }
   // A key two fingers hold (one handing it to the other, or both hands) goes down once: as far
   // as the deeper of them holds it.

@@ -342,6 +342,25 @@ TEST(PoseCheck, AnIdleFingerGivesWayToTheOtherHand) {
   EXPECT_TRUE(get(report, "pianist: fastest finger joint's angular speed").within_limit());
 }
 
+// A pressing finger in the other hand's way moves its pad along its key's top: in Scarlatti's
+// K. 27 at 50.23 s the left thumb presses C#4 beside the right thumb on D4 (2.3 mm into it
+// before). The pads stay on their keys.
+TEST(PoseCheck, PressingFingersOfBothHandsOnNeighbouringKeysKeepApart) {
+  TUTTI_REQUIRE_TESTDATA();
+  const PoseReport report = check_piece("musicxml/pianoplayer/scarlatti_k027.xml", 50.0, 50.5);
+  const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
+  EXPECT_GT(apart.samples.size(), 10u);
+  EXPECT_EQ(apart.worst(), 0.0) << apart.worst_at_s << " s: " << apart.worst_of;
+  for (const char* on_key : {"pianist: pressing pad off its key's top (0 = on it)",
+                             "pianist: thumb's pad above its key's top at key bottom",
+                             "pianist: pressing fingertip's pad above its key's top at key bottom"}) {
+    const PoseMeasure& measure = get(report, on_key);
+    EXPECT_FALSE(measure.samples.empty()) << on_key;
+    EXPECT_TRUE(measure.within_limit()) << on_key << ": " << measure.worst() << " at "
+                                        << measure.worst_at_s << " s";
+  }
+}
+
 // Every joint's angular speed from frame to frame, the fastest reported with its joint's name and
 // bound: outside strokes 1000 deg/s, fingers 2500, the slide arm while the slide moves 2000 (and
 // only then: Trumpet 1 has no slide).

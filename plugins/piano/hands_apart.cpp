@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <tutti/piano/idle_fingers_yield.hpp>
+#include <tutti/piano/hands_apart.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,15 +14,6 @@ namespace tutti::piano_family {
 namespace {
 
 using stage::PlacedModel;
-
-FingerChains chains_of(const PianoRig& rig, std::size_t side) {
-  FingerChains chains{};
-  for (std::size_t f = 0; f < 5; ++f) {
-    for (std::size_t j = 0; j < 3; ++j) chains[f][j] = rig.finger_bones[side][f][j];
-    chains[f][3] = rig.finger_tips[side][f];
-  }
-  return chains;
-}
 
 void pose_world(const PlacedModel& model, std::vector<glm::mat4>& world) {
   world.resize(model.asset->nodes.size());
@@ -63,13 +54,13 @@ class FingerYielder {
     std::vector<glm::mat4>& world = rig_.scratch_hand_world[side_];
     pose_world(model_, world);
     std::vector<HandCapsule>& own = rig_.scratch_hand_capsules[side_];
-    collect_hand_capsules(chains_of(rig_, side_), world, own);
+    collect_hand_capsules(finger_chains(rig_, side_), world, own);
     out.size = 0;
     for (const HandCapsule& bone : own) {
       if (bone.finger != static_cast<int>(f_)) continue;
       for (const HandCapsule& capsule : other_) {
         if (out.size == out.mm.size()) return;
-        out.mm[out.size++] = std::max(0.0, 1000.0 * overlap_m(bone, capsule) + kYieldMarginMm);
+        out.mm[out.size++] = std::max(0.0, 1000.0 * overlap_m(bone, capsule) + kApartMarginMm);
       }
     }
   }
@@ -130,22 +121,30 @@ class FingerYielder {
 
 }  // namespace
 
-void idle_fingers_yield(const ecs::World& world, PianoRig& rig,
-                        const std::array<PlacedModel*, 2>& hand_models) {
+void keep_hands_apart(const ecs::World& world, PianoRig& rig,
+                      const std::array<PlacedModel*, 2>& hand_models, const SeatedFingers& seated) {
   if (hand_models[0] == nullptr || hand_models[1] == nullptr || hand_models[0]->asset == nullptr ||
       hand_models[1]->asset == nullptr) {
     return;
   }
-  for (std::size_t side = 0; side < 2; ++side) {
-    const std::size_t other = 1 - side;
-    pose_world(*hand_models[other], rig.scratch_hand_world[other]);
-    collect_hand_capsules(chains_of(rig, other), rig.scratch_hand_world[other],
-                          rig.scratch_hand_capsules[other]);
-    for (std::size_t f = 0; f < 5; ++f) {
-      const auto* finger = world.try_get<components::Finger>(rig.fingers[side][f]);
-      if (finger == nullptr || finger->key >= 0 || rig.finger_bones[side][f][0] < 0) continue;
-      FingerYielder(rig, *hand_models[side], *finger, side, f, rig.scratch_hand_capsules[other])
-          .yield();
+  // Free fingers first, then pressing ones where that was not enough.
+  for (const bool pressing : {false, true}) {
+    for (std::size_t side = 0; side < 2; ++side) {
+      const std::size_t other = 1 - side;
+      pose_world(*hand_models[other], rig.scratch_hand_world[other]);
+      collect_hand_capsules(finger_chains(rig, other), rig.scratch_hand_world[other],
+                            rig.scratch_hand_capsules[other]);
+      for (std::size_t f = 0; f < 5; ++f) {
+        const auto* finger = world.try_get<components::Finger>(rig.fingers[side][f]);
+        if (finger == nullptr || rig.finger_bones[side][f][0] < 0) continue;
+        if (!pressing && finger->key < 0) {
+          FingerYielder(rig, *hand_models[side], *finger, side, f, rig.scratch_hand_capsules[other])
+              .yield();
+        } else if (pressing && finger->key >= 0 && seated.on_key[side][f]) {
+          PadSeater(rig, *hand_models[side], *finger, side, f, seated.key_angle[side][f])
+              .clear_of(seated.seat[side][f], rig.scratch_hand_capsules[other], kApartMarginMm);
+        }
+      }
     }
   }
 }
