@@ -61,7 +61,7 @@ Result<piano::FingeringModel> load_model(const FingeringOptions& o) {
 }
 
 Status write_output(OutFormat format, const FingeringOptions& o, const music::Score& fingered,
-                    const performance::PianoPerformancePlan& plan, std::ostream& out) {
+                    const piano_performance::PianoPerformancePlan& plan, std::ostream& out) {
   switch (format) {
     case OutFormat::listing:
       out << fingering_listing(fingered);
@@ -144,12 +144,12 @@ int run_fingering(const FingeringOptions& o, std::ostream& out, std::ostream& er
   auto model = load_model(o);
   if (!model) return fail(model.error());
 
-  performance::PerformanceOptions options;
+  piano_performance::PerformanceOptions options;
   options.fingering.mode = *mode;
   options.fingering.lookahead = o.lookahead;
   options.fingering.pins_from_marks = o.keep_fingers;
   options.path.smoothing = *smoothing;
-  auto plan = performance::plan_performance(*score, *model, options);
+  auto plan = piano_performance::plan_performance(*score, *model, options);
   if (!plan) return fail(plan.error());
 
   const music::Score fingered = fingered_score(*score, plan->fingering);

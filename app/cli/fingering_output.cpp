@@ -32,7 +32,7 @@ nlohmann::ordered_json path_json(const motion::PathReport& r) {
           {"peak_acceleration_mm_per_s2", r.peak_acceleration_mm_per_s2}};
 }
 
-nlohmann::ordered_json hand_json(const performance::HandReport& h) {
+nlohmann::ordered_json hand_json(const piano_performance::HandReport& h) {
   return {{"notes", h.notes},
           {"events", h.events},
           {"diagnostics", h.diagnostics},
@@ -58,7 +58,7 @@ music::Score fingered_score(const music::Score& score, const piano::ScorePlan& p
   return out;
 }
 
-std::string fingering_json(const music::Score& fingered, const performance::PerformanceReport& r) {
+std::string fingering_json(const music::Score& fingered, const piano_performance::PerformanceReport& r) {
   nlohmann::ordered_json notes = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < fingered.notes.size(); ++i) {
     const music::Note& n = fingered.notes[i];

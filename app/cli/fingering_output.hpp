@@ -24,7 +24,7 @@ namespace tutti::app {
 music::Score fingered_score(const music::Score& score, const piano::ScorePlan& plan);
 
 // {"file", "notes": [{index, pitch, onset_s, offset_s, hand, finger}], "hands": {right, left}}.
-std::string fingering_json(const music::Score& fingered, const performance::PerformanceReport& r);
+std::string fingering_json(const music::Score& fingered, const piano_performance::PerformanceReport& r);
 
 // One line per note: index, onset, key name, hand, finger.
 std::string fingering_listing(const music::Score& fingered);

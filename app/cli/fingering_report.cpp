@@ -18,7 +18,7 @@ std::string format(const char* pattern, Args... args) {
   return text;
 }
 
-std::string hand_text(const char* name, const performance::HandReport& h) {
+std::string hand_text(const char* name, const piano_performance::HandReport& h) {
   std::string text = format(
       "%s hand: %zu notes, %zu events, %zu diagnostics; path: %zu violations (planned "
       "corridors, worst %.1f mm), %zu violations (original corridors, worst %.1f mm); peak "
@@ -36,9 +36,9 @@ std::string hand_text(const char* name, const performance::HandReport& h) {
 }  // namespace
 
 std::string fingering_report_text(const music::Score& score,
-                                  const performance::PianoPerformancePlan& plan,
+                                  const piano_performance::PianoPerformancePlan& plan,
                                   int max_diagnostic_lines) {
-  const performance::PerformanceReport& r = plan.report;
+  const piano_performance::PerformanceReport& r = plan.report;
   std::string text = format("hand paths: %s smoothing\n", motion::to_string(r.smoothing)) +
                      hand_text("right", r.right) + hand_text("left", r.left);
   const double ms = r.fingering_ms + r.right.path_ms + r.left.path_ms;

@@ -12,7 +12,7 @@
 namespace tutti::app {
 
 std::string fingering_report_text(const music::Score& score,
-                                  const performance::PianoPerformancePlan& plan,
+                                  const piano_performance::PianoPerformancePlan& plan,
                                   int max_diagnostic_lines = 5);
 
 }  // namespace tutti::app

@@ -76,7 +76,7 @@ int run_perform(const PerformOptions& o, std::ostream& out, std::ostream& err) {
   for (music::Note& n : score->notes) n.finger = 0;
   auto model = piano::load_fingering_model("default", o.hand_size, content);
   if (!model) return fail(model.error());
-  auto plan = performance::plan_performance(*score, *model);
+  auto plan = piano_performance::plan_performance(*score, *model);
   if (!plan) return fail(plan.error());
 
   nlohmann::json report = nlohmann::json::object();

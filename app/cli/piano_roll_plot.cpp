@@ -93,7 +93,7 @@ double key_mm(const piano::Keyboard& keyboard, int key) {
   return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
 }
 
-Frame frame_for(const music::Score& score, const performance::PianoPerformancePlan& plan,
+Frame frame_for(const music::Score& score, const piano_performance::PianoPerformancePlan& plan,
                 const piano::Keyboard& keyboard, std::optional<PlotWindow> window) {
   Frame f;
   f.t0 = window ? window->start_s : 0.0;
@@ -203,7 +203,7 @@ Result<PlotWindow> parse_plot_window(const std::string& text) {
 }
 
 PlotImage plot_piano_roll(const music::Score& fingered,
-                          const performance::PianoPerformancePlan& plan,
+                          const piano_performance::PianoPerformancePlan& plan,
                           const piano::Keyboard& keyboard, std::optional<PlotWindow> window) {
   const Frame f = frame_for(fingered, plan, keyboard, window);
   const int width = 2 * kPlotMargin + int(std::ceil((f.t1 - f.t0) * f.px_per_s));

@@ -41,7 +41,7 @@ inline constexpr double kPlotPixelsPerSecond = 200.0;
 inline constexpr int kPlotMargin = 10;
 
 PlotImage plot_piano_roll(const music::Score& fingered,
-                          const performance::PianoPerformancePlan& plan,
+                          const piano_performance::PianoPerformancePlan& plan,
                           const piano::Keyboard& keyboard, std::optional<PlotWindow> window);
 
 // The plot as a PNG file (image/png.hpp: deterministic, written atomically).

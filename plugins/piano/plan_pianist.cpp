@@ -67,7 +67,7 @@ Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianis
 // The pianist's motion in the scene's performance style, and what the keys make of it.
 Result<key_action::HumanePerformance> perform_in_style(
     const scene::Scene& scene, const scene::Pianist& pianist, const music::Score& score,
-    const performance::PianoPerformancePlan& paths, const piano::FingeringModel& model,
+    const piano_performance::PianoPerformancePlan& paths, const piano::FingeringModel& model,
     const finger_motion::FingerMotionParams& params, const std::filesystem::path& content_dir) {
   auto styles = key_action::load_styles(key_action::styles_path(content_dir));
   if (!styles) return styles.error();
@@ -188,9 +188,9 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
                         std::to_string(span.searched_events) + " of " +
                         std::to_string(span.event_count) + " events)");
     }
-    performance::PianoPerformancePlan performance =
-        performance::plan_performance_paths(plan.fingering);
-    for (const performance::HandReport* hand :
+    piano_performance::PianoPerformancePlan performance =
+        piano_performance::plan_performance_paths(plan.fingering);
+    for (const piano_performance::HandReport* hand :
          {&performance.report.right, &performance.report.left}) {
       if (!hand->path_error.empty()) plan.plan_notes.push_back("pianist: " + hand->path_error);
     }

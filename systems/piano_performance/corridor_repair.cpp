@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <utility>
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 namespace {
 
 struct Item {
@@ -148,4 +148,4 @@ CorridorRepair repair_corridors(std::span<const piano::HandCorridor> corridors,
   return r;
 }
 
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance

@@ -26,7 +26,7 @@
 
 #include <tutti/piano_model/hand_corridor.hpp>
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 
 struct RepairOptions {
   double max_trim_s = 0.030;        // at most 30 ms taken from each side of a jump
@@ -47,4 +47,4 @@ struct CorridorRepair {
 CorridorRepair repair_corridors(std::span<const piano::HandCorridor> corridors,
                                 const RepairOptions& options = {});
 
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance

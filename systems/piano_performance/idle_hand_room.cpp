@@ -5,7 +5,7 @@
 #include <cmath>
 #include <iterator>
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 namespace {
 
 bool sorted_and_well_formed(std::span<const piano::HandCorridor> corridors) {
@@ -102,4 +102,4 @@ piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corrido
   return out;
 }
 
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance

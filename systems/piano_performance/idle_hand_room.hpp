@@ -20,7 +20,7 @@
 #include <tutti/piano_model/hand_corridor.hpp>
 #include <tutti/spline_motion/hand_path.hpp>
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 
 struct IdleRoomOptions {
   double thumb_mm = 47.0;      // the resting thumb two white keys (23.5 mm) from the middle finger
@@ -37,4 +37,4 @@ piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corrido
                                     const motion::HandPath& other, music::Hand side,
                                     const IdleRoomOptions& options = {});
 
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance

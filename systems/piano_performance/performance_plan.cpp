@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 namespace {
 
 double ms_since(std::chrono::steady_clock::time_point start) {
@@ -89,4 +89,4 @@ Result<PianoPerformancePlan> plan_performance(const music::Score& score,
   return plan;
 }
 
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance

@@ -21,7 +21,7 @@
 #include <tutti/spline_motion/path_report.hpp>
 #include <tutti/spline_motion/smoothing.hpp>
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 
 struct PerformanceOptions {
   piano::PlanOptions fingering;
@@ -81,4 +81,4 @@ motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
                                   const PerformanceOptions& options, HandReport& report,
                                   const OtherHand& other_hand = {});
 
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance

@@ -19,7 +19,7 @@ using namespace tutti;
 struct Piece {
   music::Score score;
   piano::FingeringModel model;
-  performance::PianoPerformancePlan plan;
+  piano_performance::PianoPerformancePlan plan;
   key_action::KeyAction action;
   key_action::StyleBook styles;
   finger_motion::FingerMotionParams params;
@@ -34,7 +34,7 @@ const Piece* load_piece(const std::filesystem::path& file) {
   auto params =
       finger_motion::load_finger_motion_params(finger_motion::finger_motion_params_path(content));
   if (!score || !model || !action || !styles || !params) return nullptr;
-  auto plan = performance::plan_performance(*score, *model);
+  auto plan = piano_performance::plan_performance(*score, *model);
   if (!plan) return nullptr;
   return new Piece{std::move(*score), std::move(*model),  std::move(*plan),
                    *action,           std::move(*styles), *params};

@@ -49,7 +49,7 @@ inline PerformanceStyle style(const std::string& name) {
 
 struct Performed {
   music::Score score;
-  performance::PianoPerformancePlan plan;
+  piano_performance::PianoPerformancePlan plan;
   HumanePerformance result;
 };
 
@@ -58,7 +58,7 @@ inline Performed perform_score(music::Score score, const PerformanceStyle& style
                                std::uint64_t seed, const KeyAction* action = nullptr) {
   Performed out;
   out.score = std::move(score);
-  auto plan = performance::plan_performance(out.score, content().model);
+  auto plan = piano_performance::plan_performance(out.score, content().model);
   EXPECT_TRUE(plan.ok()) << (plan.ok() ? "" : plan.error().message);
   if (!plan.ok()) return out;
   out.plan = std::move(*plan);

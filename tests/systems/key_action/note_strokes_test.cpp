@@ -12,7 +12,7 @@ namespace {
 
 NoteStrokes strokes_for(const music::Score& score, const PerformanceStyle& style,
                         std::uint64_t seed, piano::ScorePlan* fingering_out = nullptr) {
-  auto plan = performance::plan_performance(score, test::content().model);
+  auto plan = piano_performance::plan_performance(score, test::content().model);
   EXPECT_TRUE(plan.ok());
   if (fingering_out != nullptr) *fingering_out = plan->fingering;
   return plan_note_strokes(score, plan->fingering, test::content().model.keyboard,

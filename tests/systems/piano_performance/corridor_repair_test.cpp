@@ -12,7 +12,7 @@
 #include <tutti/spline_motion/path_report.hpp>
 #include <tutti/spline_motion/smoothing.hpp>
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 namespace {
 
 using piano::HandCorridor;
@@ -91,4 +91,4 @@ TEST(CorridorRepair, MalformedCorridorsStillGiveAPathAndAReport) {
 }
 
 }  // namespace
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance

@@ -24,7 +24,7 @@
 #include <tutti/piano_performance/performance_plan.hpp>
 #include "testdata.hpp"
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 namespace {
 
 namespace fs = std::filesystem;
@@ -300,4 +300,4 @@ TEST(PerformancePlanPieces, DefaultSmoothingStaysInsideUnderOtherSettings) {
 }
 
 }  // namespace
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance

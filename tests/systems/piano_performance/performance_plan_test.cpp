@@ -11,7 +11,7 @@
 #include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
-namespace tutti::performance {
+namespace tutti::piano_performance {
 namespace {
 
 const piano::FingeringModel& model() {
@@ -102,4 +102,4 @@ TEST(PerformancePlan, Deterministic) {
 }
 
 }  // namespace
-}  // namespace tutti::performance
+}  // namespace tutti::piano_performance
