@@ -129,6 +129,12 @@ Result<std::unique_ptr<Stage>> build_stage(const scene::Scene& scene,
   audio_sync::register_audio_sync(stage->schedule_);
   note_sounding::register_note_sounding(stage->schedule_);
   for (const FamilyPlugin* family : families) family->add_systems(stage->schedule_);
+  // Two writers of one component in a phase must be ordered (ecs::Schedule::check).
+  if (const std::vector<std::string> problems = stage->schedule_.check(); !problems.empty()) {
+    std::string listed;
+    for (const std::string& problem : problems) listed += (listed.empty() ? "" : "; ") + problem;
+    return Error{"the frame's schedule: " + listed};
+  }
 
   StageBuilder builder(*stage, options);
   auto floor = builder.generated_model("stage.glb");

@@ -38,7 +38,11 @@ int run_schedule_info(const InfoOptions& options, std::ostream& out, std::ostrea
     return kExitBadInput;
   }
   const ecs::World& world = (*stage)->world();
-  out << "schedule of " << scene->source << " (phases in run order, systems in order):\n"
+  // A stage is built only when its schedule's check() finds nothing, so every two writers of one
+  // component in a phase are ordered (or each writes only its own family's entities).
+  out << "schedule of " << scene->source
+      << " (phases in run order, systems in order; checked: writers of one component in a phase "
+         "are ordered, or each writes its own family's entities):\n"
       << (*stage)->schedule().describe_access();
   const std::pair<const char*, std::size_t> counts[] = {
       {"Performer", world.size<components::Performer>()},

@@ -84,9 +84,16 @@ std::string Schedule::describe_access() const {
   for (const auto& phase : phases_) {
     for (const Entry& entry : phase) width = std::max(width, entry.name.size());
   }
-  const auto list = [](const std::vector<std::string>& names) {
+  const auto list = [](const std::vector<ComponentRef>& components) {
     std::string text;
-    for (std::size_t k = 0; k < names.size(); ++k) text += (k != 0 ? ", " : "") + names[k];
+    for (std::size_t k = 0; k < components.size(); ++k) {
+      text += (k != 0 ? ", " : "") + components[k].name + (components[k].own_entities ? " (own)" : "");
+    }
+    return text;
+  };
+  const auto names = [](const std::vector<std::string>& systems) {
+    std::string text;
+    for (std::size_t k = 0; k < systems.size(); ++k) text += (k != 0 ? ", " : "") + systems[k];
     return text;
   };
   std::string text;
@@ -104,10 +111,64 @@ std::string Schedule::describe_access() const {
                   list(entry.access.writes);
         }
       }
+      if (!entry.access.after.empty()) line += "; after " + names(entry.access.after);
+      if (!entry.access.before.empty()) line += "; before " + names(entry.access.before);
       text += line + '\n';
     }
   }
   return text;
+}
+
+std::vector<std::string> Schedule::check() const {
+  std::vector<std::string> problems;
+  for (std::size_t p = 0; p < kPhaseCount; ++p) {
+    const std::vector<Entry>& systems = phases_[p];
+    const std::string phase(phase_name(static_cast<Phase>(p)));
+    const auto position = [&](const std::string& name) -> std::ptrdiff_t {
+      for (std::size_t k = 0; k < systems.size(); ++k) {
+        if (systems[k].name == name) return static_cast<std::ptrdiff_t>(k);
+      }
+      return -1;
+    };
+    // Whether systems[a] is declared to run before systems[b].
+    const auto declared_before = [&](std::size_t a, std::size_t b) {
+      const auto& named = [](const std::vector<std::string>& list, const std::string& name) {
+        return std::find(list.begin(), list.end(), name) != list.end();
+      };
+      return named(systems[a].access.before, systems[b].name) ||
+             named(systems[b].access.after, systems[a].name);
+    };
+    for (std::size_t k = 0; k < systems.size(); ++k) {
+      const Entry& entry = systems[k];
+      for (const auto& [list, word] : {std::pair{&entry.access.after, "after"},
+                                      std::pair{&entry.access.before, "before"}}) {
+        for (const std::string& other : *list) {
+          const std::ptrdiff_t at = position(other);
+          if (at < 0) {
+            problems.push_back(phase + ": " + entry.name + " runs " + word + " '" + other +
+                               "', no system of its phase");
+          } else if ((std::string_view(word) == "after") != (at < static_cast<std::ptrdiff_t>(k))) {
+            problems.push_back(phase + ": " + entry.name + " runs " + word + " " + other +
+                               ", but was added " + (at < static_cast<std::ptrdiff_t>(k) ? "after" : "before") +
+                               " it");
+          }
+        }
+      }
+    }
+    for (std::size_t a = 0; a < systems.size(); ++a) {
+      for (std::size_t b = a + 1; b < systems.size(); ++b) {
+        if (declared_before(a, b) || declared_before(b, a)) continue;
+        for (const ComponentRef& one : systems[a].access.writes) {
+          for (const ComponentRef& other : systems[b].access.writes) {
+            if (one.type != other.type || (one.own_entities && other.own_entities)) continue;
+            problems.push_back(phase + ": " + systems[a].name + " and " + systems[b].name +
+                               " both write " + one.name + ", and neither runs after the other");
+          }
+        }
+      }
+    }
+  }
+  return problems;
 }
 
 std::size_t Schedule::size() const noexcept {

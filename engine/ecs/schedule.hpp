@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include <tutti/ecs/type_index.hpp>
 #include <tutti/ecs/world.hpp>
 
 namespace tutti::ecs {
@@ -33,12 +34,88 @@ inline constexpr std::size_t kPhaseCount = 6;
 
 using System = std::function<void(World&, const FrameTime&)>;
 
-// What a system reads and writes, by component (or resource) name: shown by describe(), so the
-// frame's data flow can be read off a running schedule (`tutti info --schedule`).
-struct Access {
-  std::vector<std::string> reads;
-  std::vector<std::string> writes;
+namespace detail {
+// A type's own name, without its namespaces ("Finger" for tutti::components::Finger), read from
+// the compiler's signature of this function (GCC and Clang spell it "[with T = ...]" or
+// "[T = ...]").
+template <typename T>
+[[nodiscard]] constexpr std::string_view type_name() noexcept {
+  std::string_view signature = __PRETTY_FUNCTION__;
+  const auto start = signature.find("T = ");
+  if (start == std::string_view::npos) return "?";
+  signature.remove_prefix(start + 4);
+  signature = signature.substr(0, signature.find_first_of(";]"));
+  if (const auto colons = signature.rfind("::"); colons != std::string_view::npos) {
+    signature.remove_prefix(colons + 2);
+  }
+  return signature;
+}
+}  // namespace detail
+
+// A component (or resource) type a system reads or writes: its number (type_index.hpp) and name.
+struct ComponentRef {
+  std::size_t type = 0;
+  std::string name;
+  // Written only on the entities of the system's own family (its performers' models): two such
+  // writers of one type do not conflict; one with a writer of all its entities does.
+  bool own_entities = false;
+
+  template <typename T>
+  [[nodiscard]] static ComponentRef of(bool own = false) {
+    return {type_index<T>(), std::string(detail::type_name<T>()), own};
+  }
 };
+
+template <typename... Ts>
+struct Reads {};
+template <typename... Ts>
+struct Writes {};
+// Writes only on the system's own family's entities (ComponentRef::own_entities).
+template <typename... Ts>
+struct WritesOwn {};
+
+// What a system reads and writes, as component types, and the systems of its phase it must run
+// after or before (by name). Shown by describe_access() (`tutti info --schedule`); check() fails
+// on two writers of one component in a phase that nothing orders.
+struct Access {
+  std::vector<ComponentRef> reads;
+  std::vector<ComponentRef> writes;
+  std::vector<std::string> after;
+  std::vector<std::string> before;
+
+  template <typename... Ts>
+  Access& read(Reads<Ts...> = {}) {
+    (reads.push_back(ComponentRef::of<Ts>()), ...);
+    return *this;
+  }
+  template <typename... Ts>
+  Access& write(Writes<Ts...> = {}) {
+    (writes.push_back(ComponentRef::of<Ts>()), ...);
+    return *this;
+  }
+  template <typename... Ts>
+  Access& write(WritesOwn<Ts...>) {
+    (writes.push_back(ComponentRef::of<Ts>(true)), ...);
+    return *this;
+  }
+  Access& runs_after(std::string system) {
+    after.push_back(std::move(system));
+    return *this;
+  }
+  Access& runs_before(std::string system) {
+    before.push_back(std::move(system));
+    return *this;
+  }
+};
+
+// access(Reads<A, B>{}, Writes<C>{}): the usual declaration in one expression.
+template <typename... R, typename W>
+[[nodiscard]] Access access(Reads<R...> reads, W writes) {
+  Access a;
+  a.read(reads);
+  a.write(writes);
+  return a;
+}
 
 class Schedule {
  public:
@@ -64,6 +141,12 @@ class Schedule {
   // reads and writes:
   // "evaluate\n  hand_pose    reads Hand  writes Finger\n".
   [[nodiscard]] std::string describe_access() const;
+
+  // What is wrong with the declared order, one line each (empty: nothing): two systems of a phase
+  // writing one component type with neither declared after the other (two writers of only their
+  // own family's entities aside), a `runs_after`/`runs_before` naming no system of its phase, or
+  // one that contradicts the order systems were added in (they run in that order).
+  [[nodiscard]] std::vector<std::string> check() const;
 
   [[nodiscard]] std::size_t size() const noexcept;
   [[nodiscard]] bool contains(std::string_view name) const noexcept;

@@ -203,8 +203,9 @@ void BrassPlugin::add_systems(ecs::Schedule& schedule) const {
   brass::register_brass_motion(schedule);
   ensemble::register_ensemble_variation(schedule);
   schedule.add(ecs::Phase::pose, kBrassSkeletonSystemName, brass_skeleton_system,
-               {{"BrassRig", "Valve", "Slide", "Mouth", "Breath", "BodyMotion"},
-                {"PlacedModel (instrument, body)"}});
+               ecs::access(ecs::Reads<BrassRig, components::Valve, components::Slide, components::Mouth,
+                                      components::Breath, components::BodyMotion>{},
+                           ecs::WritesOwn<stage::PlacedModel>{}));
 }
 
 Status BrassPlugin::build(stage::StageBuilder& builder) const {

@@ -196,7 +196,8 @@ Status bind_user_hands(stage::StageBuilder& builder, const scene::Pianist& piani
 void PianoPlugin::add_systems(ecs::Schedule& schedule) const {
   finger_motion::register_finger_motion(schedule);
   schedule.add(ecs::Phase::pose, kPianoSkeletonSystemName, piano_skeleton_system,
-               {{"PianoRig", "Hand", "Finger"}, {"PlacedModel (piano, hands, pianist)"}});
+               ecs::access(ecs::Reads<PianoRig, components::Hand, components::Finger>{},
+                           ecs::WritesOwn<stage::PlacedModel>{}));
 }
 
 Status PianoPlugin::build(stage::StageBuilder& builder) const {

@@ -22,7 +22,7 @@ void audio_sync_system(ecs::World& world, const ecs::FrameTime& frame) {
 
 void register_audio_sync(ecs::Schedule& schedule) {
   schedule.add(ecs::Phase::sync, kAudioSyncSystemName, audio_sync_system,
-               {{"FrameClock", "AudioClock"}, {"FrameTime"}});
+               ecs::access(ecs::Reads<FrameClock, AudioClock>{}, ecs::Writes<ecs::FrameTime>{}));
 }
 
 }  // namespace tutti::audio_sync

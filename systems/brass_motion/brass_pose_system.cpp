@@ -62,7 +62,9 @@ void brass_pose_system(ecs::World& world, const ecs::FrameTime& frame) {
 
 void register_brass_motion(ecs::Schedule& schedule) {
   schedule.add(ecs::Phase::evaluate, kBrassMotionSystemName, brass_pose_system,
-               {{"BrassPlayerMotionHandle", "Instrument"}, {"Mouth", "Breath", "Valve", "Slide"}});
+               ecs::access(ecs::Reads<BrassPlayerMotionHandle, components::Instrument>{},
+                           ecs::Writes<components::Mouth, components::Breath, components::Valve,
+                                       components::Slide>{}));
 }
 
 }  // namespace tutti::brass

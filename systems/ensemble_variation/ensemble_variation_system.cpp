@@ -22,7 +22,8 @@ void ensemble_variation_system(ecs::World& world, const ecs::FrameTime& frame) {
 
 void register_ensemble_variation(ecs::Schedule& schedule) {
   schedule.add(ecs::Phase::express, kEnsembleVariationSystemName, ensemble_variation_system,
-               {{"EnsembleMotionHandle", "Breath"}, {"BodyMotion"}});
+               ecs::access(ecs::Reads<EnsembleMotionHandle, components::Breath>{},
+                           ecs::Writes<components::BodyMotion>{}));
 }
 
 }  // namespace tutti::ensemble

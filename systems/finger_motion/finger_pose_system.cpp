@@ -51,7 +51,8 @@ void finger_pose_system(ecs::World& world, const ecs::FrameTime& frame) {
 
 void register_finger_motion(ecs::Schedule& schedule) {
   schedule.add(ecs::Phase::evaluate, kFingerMotionSystemName, finger_pose_system,
-               {{"PianistMotionHandle"}, {"Hand", "Finger"}});
+               ecs::access(ecs::Reads<PianistMotionHandle>{},
+                           ecs::Writes<components::Hand, components::Finger>{}));
 }
 
 }  // namespace tutti::finger_motion

@@ -14,7 +14,7 @@ void note_sounding_system(ecs::World& world, const ecs::FrameTime& frame) {
 
 void register_note_sounding(ecs::Schedule& schedule) {
   schedule.add(ecs::Phase::evaluate, kNoteSoundingSystemName, note_sounding_system,
-               {{"Note"}, {"Note.sounding"}});
+               ecs::access(ecs::Reads<>{}, ecs::Writes<components::Note>{}));
 }
 
 }  // namespace tutti::note_sounding

@@ -207,18 +207,71 @@ TEST(ScheduleTest, TheSyncPhaseSetsTheTimeTheLaterPhasesSee) {
   EXPECT_EQ(world.resource<FrameTime>()->t_s, 11.0);
 }
 
+struct Plan {};
+struct Hand {};
+struct Finger {};
+struct Model {};
+
 TEST(ScheduleTest, DescribeAccessListsEachSystemWithWhatItReadsAndWrites) {
   Schedule schedule;
   const auto nothing = [](World&, const FrameTime&) {};
-  schedule.add(Phase::evaluate, "hand_pose", nothing, {{"Plan"}, {"Hand", "Finger"}});
+  schedule.add(Phase::evaluate, "hand_pose", nothing, access(Reads<Plan>{}, Writes<Hand, Finger>{}));
   schedule.add(Phase::evaluate, "bow", nothing);
-  schedule.add(Phase::pose, "skeleton", nothing, {{"Hand"}, {}});
+  schedule.add(Phase::pose, "skeleton", nothing,
+               access(Reads<Hand>{}, WritesOwn<Model>{}).runs_before("camera"));
+  schedule.add(Phase::pose, "camera", nothing, access(Reads<>{}, Writes<>{}));
   EXPECT_EQ(schedule.describe_access(),
             "evaluate\n"
             "  hand_pose  reads Plan; writes Hand, Finger\n"
             "  bow\n"
             "pose\n"
-            "  skeleton   reads Hand\n");
+            "  skeleton   reads Hand; writes Model (own); before camera\n"
+            "  camera\n");
+  EXPECT_TRUE(schedule.check().empty());
+}
+
+TEST(ScheduleTest, TypesAreNamedWithoutTheirNamespaces) {
+  EXPECT_EQ(ComponentRef::of<Finger>().name, "Finger");
+  EXPECT_EQ(ComponentRef::of<FrameTime>().name, "FrameTime");
+  EXPECT_EQ(ComponentRef::of<Finger>().type, type_index<Finger>());
+  EXPECT_NE(ComponentRef::of<Finger>().type, ComponentRef::of<Hand>().type);
+}
+
+TEST(ScheduleTest, CheckFailsOnTwoUnorderedWritersOfOneComponentInAPhase) {
+  const auto nothing = [](World&, const FrameTime&) {};
+  Schedule schedule;
+  schedule.add(Phase::pose, "piano_skeleton", nothing, access(Reads<Hand>{}, Writes<Model>{}));
+  schedule.add(Phase::pose, "brass_skeleton", nothing, access(Reads<>{}, Writes<Model, Finger>{}));
+  schedule.add(Phase::evaluate, "finger_motion", nothing, access(Reads<>{}, Writes<Finger>{}));
+  EXPECT_THAT(schedule.check(),
+              ElementsAre("pose: piano_skeleton and brass_skeleton both write Model, and neither "
+                          "runs after the other"));
+
+  // Ordered, the two writers are fine; so are two writers of only their own family's entities.
+  Schedule ordered;
+  ordered.add(Phase::pose, "piano_skeleton", nothing, access(Reads<>{}, Writes<Model>{}));
+  ordered.add(Phase::pose, "brass_skeleton", nothing,
+              access(Reads<>{}, Writes<Model>{}).runs_after("piano_skeleton"));
+  EXPECT_TRUE(ordered.check().empty());
+  Schedule own;
+  own.add(Phase::pose, "piano_skeleton", nothing, access(Reads<>{}, WritesOwn<Model>{}));
+  own.add(Phase::pose, "brass_skeleton", nothing, access(Reads<>{}, WritesOwn<Model>{}));
+  EXPECT_TRUE(own.check().empty());
+  // One writing every entity's and one its own still conflict.
+  own.add(Phase::pose, "camera_rig", nothing, access(Reads<>{}, Writes<Model>{}));
+  EXPECT_EQ(own.check().size(), 2u);
+}
+
+TEST(ScheduleTest, CheckFailsOnAnOrderNamingNoSystemOrAgainstTheAddedOrder) {
+  const auto nothing = [](World&, const FrameTime&) {};
+  Schedule schedule;
+  schedule.add(Phase::pose, "a", nothing, Access{}.runs_after("b"));
+  schedule.add(Phase::pose, "b", nothing, Access{}.runs_before("nobody"));
+  schedule.add(Phase::evaluate, "c", nothing, Access{}.runs_after("a"));
+  EXPECT_THAT(schedule.check(),
+              ElementsAre("evaluate: c runs after 'a', no system of its phase",
+                          "pose: a runs after b, but was added before it",
+                          "pose: b runs before 'nobody', no system of its phase"));
 }
 
 }  // namespace
