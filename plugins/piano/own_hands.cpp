@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include <tutti/components/finger.hpp>
 #include <tutti/stage/stage.hpp>
@@ -11,8 +10,6 @@
 
 namespace tutti::piano_family {
 namespace {
-
-constexpr const char* kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
 
 // A nominal curl for placing the wrist: a pianist's rounded hand.
 stage::FingerCurls pianist_curls() {
@@ -99,13 +96,13 @@ HandGoal hand_goal(const model::ModelAsset& hands, const stage::BodyNodes& nodes
   std::vector<glm::mat4>& world = rig.scratch_target_world;
   world.resize(target.asset->nodes.size());
   model::compute_world_matrices(*target.asset, target.pose, target.root, world);
-  const std::string suffix = side == 0 ? "_r" : "_l";
+  // The hand model's nodes, found once when it was bound (piano_plugin.cpp).
   for (std::size_t f = 0; f < 5; ++f) {
-    const int tip = target.asset->find_node(std::string(kFingerNames[f]) + "_tip" + suffix);
+    const int tip = rig.finger_tips[s][f];
     if (tip < 0) continue;
     out.tips.world[f] = glm::vec3(world[static_cast<std::size_t>(tip)][3]);
     out.tips.has[f] = true;
-    const int dip = target.asset->find_node(std::string(kFingerNames[f]) + "_3" + suffix);
+    const int dip = rig.finger_bones[s][f][2];
     if (dip < 0) continue;
     const glm::vec3 last_bone = out.tips.world[f] - glm::vec3(world[static_cast<std::size_t>(dip)][3]);
     if (glm::length(last_bone) < 1e-6f) continue;

@@ -19,6 +19,7 @@
 #include <tutti/cli/pose_check.hpp>
 #include <tutti/scene/load_scene.hpp>
 
+#include "character_fixtures.hpp"
 #include "scratch_dir.hpp"
 
 namespace tutti::performance {
@@ -31,12 +32,7 @@ using app::PoseReport;
 
 const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
 
-bool make_fixtures(const std::filesystem::path& dir) {
-  const std::string command = "blender -b --factory-startup --python '" +
-                              (kSource / "tests/data/characters/make_fixtures.py").string() +
-                              "' -- '" + dir.string() + "' > /dev/null 2>&1";
-  return std::system(command.c_str()) == 0;
-}
+bool make_fixtures(const std::filesystem::path& dir) { return test::make_character_fixtures(dir); }
 
 nlohmann::json duo(const std::string& trumpet_character, const std::string& trombone_character) {
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(kSource / "content/scenes/quartet.json"));
