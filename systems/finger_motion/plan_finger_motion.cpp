@@ -56,11 +56,12 @@ double hand_departure_s(const KeyContact& c, const piano::FingerRange& range,
   return c.offset_s;
 }
 
-// Sorts, merges same-onset contacts, trims offsets and fills the timing fields.
-// `preset_strokes`: each contact's stroke_start_s is already the one wanted (a NoteStroke's).
-void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
-                       const piano::FingerRange& range, const motion::HandPath& path,
-                       const StrokeTiming& timing, bool preset_strokes) {
+// Sorts, merges same-onset contacts and trims offsets: to the same finger's next stroke and to
+// the hand's departure. `preset_strokes`: each contact's stroke_start_s is already the one
+// wanted (a NoteStroke's).
+void order_contacts(std::vector<KeyContact>& contacts, const piano::FingerRange& range,
+                    const motion::HandPath& path, const StrokeTiming& timing,
+                    bool preset_strokes) {
   std::sort(contacts.begin(), contacts.end(), [](const KeyContact& a, const KeyContact& b) {
     return a.onset_s != b.onset_s ? a.onset_s < b.onset_s : a.key < b.key;
   });
@@ -85,7 +86,48 @@ void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
   }
   // A key is held only while the hand keeps it in the finger's reach.
   for (KeyContact& c : merged) c.offset_s = std::max(c.onset_s, hand_departure_s(c, range, path));
-  // Pass 2: moves, shaping, releases.
+  contacts = std::move(merged);
+}
+
+// The most a key is let go early for the other hand: its stroke's lead and the key's rise.
+double most_early_let_go_s(const StrokeTiming& timing) {
+  return timing.press_lead_s + timing.release_s;
+}
+
+// A pianist lets a key go before the other hand strikes right beside it or beyond it (a thumb
+// under the other thumb, one hand taking over the other's key): the finger is up and out of the
+// way when the other finger comes down, instead of rising through it. A contact whose offset
+// falls within `most_early_let_go_s` before such a stroke ends that long before the stroke
+// starts (never before its own onset). "Beside or beyond": the struck key is at most a whole
+// tone from the held one on the held hand's own side or anywhere on the other side.
+void let_go_before_the_other_hand(HandFingerPlan& held, const HandFingerPlan& striking,
+                                  const StrokeTiming& timing) {
+  constexpr int kBesideSemitones = 2;
+  const double early = most_early_let_go_s(timing);
+  // Times (struck key - held key): > 0 where the struck key lies toward the held hand's own side
+  // (the right hand's is up the keyboard).
+  const int toward_own_side = held.side == HandSide::right ? 1 : -1;
+  for (std::vector<KeyContact>& finger : held.fingers) {
+    for (KeyContact& c : finger) {
+      double let_go = c.offset_s;
+      for (const std::vector<KeyContact>& other : striking.fingers) {
+        // Strokes starting from `early` before the offset to the end of the key's rise.
+        auto n = std::lower_bound(other.begin(), other.end(), c.offset_s - early,
+                                  [](const KeyContact& k, double t) { return k.stroke_start_s < t; });
+        for (; n != other.end() && n->stroke_start_s < c.offset_s + timing.release_s; ++n) {
+          if (n->onset_s <= c.onset_s) continue;
+          if (toward_own_side * (n->key - c.key) < -kBesideSemitones) continue;
+          let_go = std::min(let_go, n->stroke_start_s - timing.release_s);
+        }
+      }
+      c.offset_s = std::max(c.onset_s, let_go);
+    }
+  }
+}
+
+// Fills the moves, shaping and releases of a finger's ordered contacts (order_contacts).
+void time_contacts(std::vector<KeyContact>& merged, double rest_offset_mm,
+                   const motion::HandPath& path, const StrokeTiming& timing) {
   for (std::size_t j = 0; j < merged.size(); ++j) {
     KeyContact& c = merged[j];
     const KeyContact* prev = j > 0 ? &merged[j - 1] : nullptr;
@@ -115,7 +157,6 @@ void schedule_contacts(std::vector<KeyContact>& contacts, double rest_offset_mm,
     c.release_offset_mm = c.x_mm - (motion::evaluate(path, c.offset_s).x_mm + rest_offset_mm);
     precompute_for_evaluate(c, timing);
   }
-  contacts = std::move(merged);
 }
 
 // Where a contact's pad lands (y, into the keys) with the hand at its rest line.
@@ -261,9 +302,17 @@ Result<FingerMotionPlan> plan_finger_motion(
     const motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
     const music::Hand hand = side->side == HandSide::left ? music::Hand::left : music::Hand::right;
     for (std::size_t f = 0; f < 5; ++f) {
-      schedule_contacts(side->fingers[f], side->rest_offset_mm[f],
-                        hand_model.range(hand, static_cast<int>(f) + 1), path, plan.timing,
-                        !strokes.empty());
+      order_contacts(side->fingers[f], hand_model.range(hand, static_cast<int>(f) + 1), path,
+                     plan.timing, !strokes.empty());
+    }
+  }
+  // Both hands' strokes are known: each lets go where the other strikes beside it.
+  let_go_before_the_other_hand(plan.right, plan.left, plan.timing);
+  let_go_before_the_other_hand(plan.left, plan.right, plan.timing);
+  for (HandFingerPlan* side : {&plan.right, &plan.left}) {
+    const motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
+    for (std::size_t f = 0; f < 5; ++f) {
+      time_contacts(side->fingers[f], side->rest_offset_mm[f], path, plan.timing);
       side->onsets_s[f].reserve(side->fingers[f].size());
       for (const KeyContact& c : side->fingers[f]) side->onsets_s[f].push_back(c.onset_s);
     }

@@ -11,6 +11,9 @@
 //  - stroke: starts press_lead_s before the onset (not before the previous onset);
 //  - the previous offset is trimmed to the stroke start, so the key rises before it is struck
 //  again;
+//  - a key the other hand strikes beside (at most a whole tone toward the holding hand's side)
+//  or beyond, within press_lead_s + release_s after its offset, is let go that early: it is up
+//  before the other finger starts down (never before its own onset);
 //  - lateral move: minimum-jerk, duration clamp(move_min_s + move_s_per_mm x distance, min, max),
 //    ending at the onset and starting no earlier than the previous offset (late and quick);
 //  - bend and hover height adapt over shape_s before the stroke (not before the previous offset).

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <tuple>
 
 #include <tutti/components/note.hpp>
 #include <tutti/performance/families.hpp>
@@ -358,6 +360,26 @@ TEST(PoseCheck, PressingFingersOfBothHandsOnNeighbouringKeysKeepApart) {
     EXPECT_FALSE(measure.samples.empty()) << on_key;
     EXPECT_TRUE(measure.within_limit()) << on_key << ": " << measure.worst() << " at "
                                         << measure.worst_at_s << " s";
+  }
+}
+
+// A key is let go before the other hand strikes beside it: in Mozart's K. 545 at 142.13 s the
+// right thumb strikes C4 as the left thumb lets D4 go (2.5 mm into it while it rose), and in
+// the Maple Leaf Rag at 10.27 s the right thumb takes G#4 as the left hand lets its chord go
+// (7.3 mm).
+TEST(PoseCheck, AKeyIsLetGoBeforeTheOtherHandStrikesBesideIt) {
+  TUTTI_REQUIRE_TESTDATA();
+  // The rag is one of the pieces tests/data/pieces/ adds (an absolute path: testdata() keeps it).
+  const std::string rag = (kSource / "tests/data/pieces/joplin_maple_leaf_rag.mid").string();
+  for (const auto& [piece, from_s, to_s] :
+       {std::tuple{std::string("musicxml/pianoplayer/mozart_sonfacile.mxl"), 141.9, 142.4},
+        std::tuple{rag, 10.0, 10.5}}) {
+    const PoseReport report = check_piece(piece, from_s, to_s);
+    const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
+    EXPECT_GT(apart.samples.size(), 10u) << piece;
+    EXPECT_EQ(apart.worst(), 0.0) << piece << " " << apart.worst_at_s << " s: " << apart.worst_of;
+    EXPECT_TRUE(get(report, "pianist: pressing pad off its key's top (0 = on it)").within_limit())
+        << piece;
   }
 }
 

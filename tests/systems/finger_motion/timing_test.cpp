@@ -76,5 +76,51 @@ TEST(FingerTiming, SameFingerLegatoRepeatReleasesBeforeTheNextStroke) {
   EXPECT_GE(contacts[0].offset_s, contacts[0].onset_s);
 }
 
+// Mozart K. 545 at 142.125 s: the left thumb lets D4 go as the right thumb strikes C4, a whole
+// tone below it, on the left hand's side. The left thumb is up before the right one comes down.
+TEST(FingerTiming, AKeyIsLetGoBeforeTheOtherHandStrikesBesideIt) {
+  const Models& m = test::models();
+  const StrokeTiming& timing = m.params.timing;
+  const double x = m.keyboard.x_mm(61);
+  const FingerMotionPlan plan = test::plan_notes(
+      {{62, 1.0, 1.5, 1, music::Hand::left}, {60, 1.5, 2.0, 1, music::Hand::right}}, x, x);
+  const KeyContact& held = plan.left.fingers[0].at(0);
+  const KeyContact& struck = plan.right.fingers[0].at(0);
+  EXPECT_DOUBLE_EQ(held.release_end_s, struck.stroke_start_s);
+  EXPECT_DOUBLE_EQ(held.offset_s, 1.5 - timing.press_lead_s - timing.release_s);
+  FingerPose pose;
+  evaluate_finger_pose(plan, HandSide::left, 1, x, struck.stroke_start_s, pose);
+  EXPECT_EQ(pose.key, -1);
+  EXPECT_EQ(pose.press_depth, 0.0);
+  // The striking hand's own note keeps its written length.
+  EXPECT_DOUBLE_EQ(struck.offset_s, 2.0);
+}
+
+TEST(FingerTiming, AStrikeOnTheOtherHandsOwnSideLeavesTheHeldKeyAlone) {
+  const Models& m = test::models();
+  // The right hand holds G4 while the left strikes E4 below it (3 semitones, its own side), and
+  // the left holds C4 while the right strikes D#4 above it: both keys are held as written.
+  const FingerMotionPlan plan =
+      test::plan_notes({{67, 1.0, 1.5, 1, music::Hand::right},
+                        {64, 1.5, 2.0, 1, music::Hand::left},
+                        {60, 3.0, 3.5, 1, music::Hand::left},
+                        {63, 3.5, 4.0, 1, music::Hand::right}},
+                       m.keyboard.x_mm(67), m.keyboard.x_mm(62));
+  EXPECT_DOUBLE_EQ(plan.right.fingers[0].at(0).offset_s, 1.5);
+  EXPECT_DOUBLE_EQ(plan.left.fingers[0].at(1).offset_s, 3.5);
+}
+
+// A crossed strike long after the key went down, but within the lead and rise of its offset,
+// never makes the key let go before it was struck.
+TEST(FingerTiming, LettingGoEarlyNeverEndsAKeyBeforeItsOnset) {
+  const Models& m = test::models();
+  const double x = m.keyboard.x_mm(61);
+  const FingerMotionPlan plan = test::plan_notes(
+      {{62, 1.0, 1.04, 1, music::Hand::left}, {61, 1.05, 1.5, 1, music::Hand::right}}, x, x);
+  const KeyContact& held = plan.left.fingers[0].at(0);
+  EXPECT_DOUBLE_EQ(held.offset_s, held.onset_s);
+  EXPECT_GT(held.release_end_s, held.offset_s);
+}
+
 }  // namespace
 }  // namespace tutti::finger_motion
