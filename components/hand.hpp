@@ -16,7 +16,7 @@ struct Hand {
   // The hand's reference point: the root (MCP knuckle) of the middle finger, keyboard frame.
   double x_mm = 0.0;          // along the keyboard; the hand path's value
   double y_mm = 0.0;          // into the keyboard (knuckle line; negative = in front of the keys)
-  double z_mm = 0.0;          // knuckle height above the white keys' top
+  double z_mm = 0.0;          // knuckle height above the white keys' top (higher over the other hand)
   double v_x_mm_per_s = 0.0;  // lateral speed along the keyboard
   Rotation rotation;          // of the back of the hand; identity = palm down, fingers toward +y
 };

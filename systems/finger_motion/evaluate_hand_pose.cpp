@@ -29,10 +29,11 @@ double bend_for(const FingerGeometry& g, bool black) {
 // Where the finger is after `prev`'s key (none: at rest), before the next contact takes over.
 // One exponential at most: the relaxation decay since prev's offset; the hover height's decay
 // since the release end is that value times the precomputed release_decay_scale.
+// `lift_mm`: the hand's pass-over lift at t; a finger away from its key is that much higher.
 Baseline baseline(const FingerMotionPlan& plan, const FingerGeometry& g, const KeyContact* prev,
-                  double rest_x_mm, double t_s) {
+                  double rest_x_mm, double t_s, double lift_mm) {
   const KeyHeights& keys = plan.keys;
-  const double neutral_z = plan.neutral_z_mm;
+  const double neutral_z = plan.neutral_z_mm + lift_mm;
   if (prev == nullptr) return {rest_x_mm, g.neutral_bend_rad, neutral_z, nullptr};
   const double top = key_top(keys, prev->black);
   const double bend = bend_for(g, prev->black);
@@ -44,11 +45,11 @@ Baseline baseline(const FingerMotionPlan& plan, const FingerGeometry& g, const K
   b.touching = prev;
   if (t_s < prev->release_end_s) {
     const double u = (t_s - prev->offset_s) * prev->inv_release_s;
-    b.z_mm = prev->bottom_z_mm + (top + keys.hover_lift_mm - prev->bottom_z_mm) * min_jerk(u);
+    b.z_mm = prev->bottom_z_mm + (top + keys.hover_lift_mm + lift_mm - prev->bottom_z_mm) * min_jerk(u);
   } else {
     // The finger settles toward its rest height but no lower than the top of the key it left:
     // a finger resting on a key does not press it (the rest height is below a black key's top).
-    const double hover = top + keys.hover_lift_mm;
+    const double hover = top + keys.hover_lift_mm + lift_mm;
     b.z_mm = std::max(neutral_z + (hover - neutral_z) * (decay * prev->release_decay_scale), top);
   }
   return b;
@@ -88,8 +89,11 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   // previous key's relaxation is not evaluated at all.
   const bool next_decides =
       next != nullptr && t_s >= next->stroke_start_s && t_s >= next->move_start_s;
+  // Passing over the other hand the whole hand is higher (pass_over.hpp): a finger away from the
+  // keys with it, a pressing one reaching down from it, straighter.
+  const double lift = evaluate_pass_over(hand.pass_over, t_s);
   Baseline b;
-  if (!next_decides) b = baseline(plan, g, prev, rest_x, t_s);
+  if (!next_decides) b = baseline(plan, g, prev, rest_x, t_s, lift);
   double x = b.x_mm;
   double bend = b.bend_rad;
   double z = b.z_mm;
@@ -115,7 +119,7 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
                            ? min_jerk((t_s - next->shape_start_s) * next->inv_shape_s)
                            : 1.0;
       bend = blend(bend, bend_for(g, next->black), u);
-      z = blend(z, top + keys.hover_lift_mm, u);
+      z = blend(z, top + keys.hover_lift_mm + lift, u);
       if (t_s >= next->stroke_start_s) {
         const double w = (t_s - next->stroke_start_s) * next->inv_stroke_s;
         z = blend(z, next->bottom_z_mm, w * w);
@@ -130,9 +134,12 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
     }
   }
 
-  const ChainShape shape = shape_for(plan, f, bend);
   // z is where the finger meets the key (its pad); the fingertip is held pad_drop above it.
-  const StrokeSolution stroke = solve_stroke(shape, g.root_z_mm - (z + g.pad_drop_mm));
+  const double root_z = g.root_z_mm + lift;
+  const ChainShape shape = lift > 0.0
+                               ? reaching_shape(g, shape_for(plan, f, bend), root_z - (z + g.pad_drop_mm))
+                               : shape_for(plan, f, bend);
+  const StrokeSolution stroke = solve_stroke(shape, root_z - (z + g.pad_drop_mm));
   const double mirror = side == components::HandSide::left ? -1.0 : 1.0;
   out.spread_rad = spread_angle_rad(x - rest_x, stroke.reach_y_mm, mirror);
   if (f == 0) {  // thumb: strikes by abduction; the bend is its MCP and IP
@@ -148,12 +155,13 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   }
   out.press_depth = depth;
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
-  const double hand_in = tutti::motion::evaluate_plateau_envelope(hand.reach_in, t_s);
+  const double hand_in = tutti::motion::evaluate_plateau_envelope(hand.reach_in, t_s) +
+                         lift * hand.pass_over.in_per_lift;
   out.tip_x_mm = x;
   out.tip_y_mm = g.root_y_mm + hand_in + stroke.reach_y_mm;
   out.tip_z_mm = z + g.pad_drop_mm;
   out.contact_y_mm = g.pad_drop_mm > 0.0
-                         ? g.root_y_mm + hand_in + solve_stroke(shape, g.root_z_mm - z).reach_y_mm
+                         ? g.root_y_mm + hand_in + solve_stroke(shape, root_z - z).reach_y_mm
                          : out.tip_y_mm;
   out.contact_z_mm = z;
 }
@@ -163,9 +171,12 @@ void evaluate_hand_pose(const FingerMotionPlan& plan, const motion::HandPath& pa
   const motion::HandState state = motion::evaluate(path, t_s);
   out.x_mm = state.x_mm;
   out.v_x_mm_per_s = state.v_mm_per_s;
+  const HandFingerPlan& hand = plan.hand(side);
+  const double lift = evaluate_pass_over(hand.pass_over, t_s);
   out.y_mm = plan.geometry[2].root_y_mm +
-             tutti::motion::evaluate_plateau_envelope(plan.hand(side).reach_in, t_s);
-  out.z_mm = plan.geometry[2].root_z_mm;
+             tutti::motion::evaluate_plateau_envelope(hand.reach_in, t_s) +
+             lift * hand.pass_over.in_per_lift;
+  out.z_mm = plan.geometry[2].root_z_mm + lift;
   for (int finger = 1; finger <= 5; ++finger) {
     evaluate_finger_pose(plan, side, finger, state.x_mm, t_s,
                          out.fingers[static_cast<std::size_t>(finger - 1)]);

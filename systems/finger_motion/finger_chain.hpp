@@ -73,6 +73,29 @@ inline StrokeSolution solve_stroke(const ChainShape& shape, double drop_mm) noex
   return {cosine > 0.0 ? std::atan(sine / cosine) : std::atan2(sine, cosine), y};
 }
 
+// A finger reaching further down than its bend spans (from a hand lifted over the other one,
+// pass_over.hpp) straightens until it spans the drop with a little give: the most bent shape
+// that does, found by bisection. `planned`: the shape it would have.
+inline ChainShape reaching_shape(const FingerGeometry& g, const ChainShape& planned,
+                                 double drop_mm) noexcept {
+  constexpr double kGive = 0.95;
+  const auto spans = [drop_mm](const ChainShape& s) {
+    return drop_mm <= kGive * std::hypot(s.forward_mm, s.down_mm);
+  };
+  if (spans(planned)) return planned;
+  double straight = 0.0;
+  double bent = planned.bend_rad;
+  for (int round = 0; round < 12; ++round) {
+    const double mid = 0.5 * (straight + bent);
+    if (spans(chain_shape(g, mid))) {
+      straight = mid;
+    } else {
+      bent = mid;
+    }
+  }
+  return chain_shape(g, straight);
+}
+
 // The spread angle: the direction of the horizontal root->tip line, atan(d / y), where d is the
 // tip's lateral offset (keyboard x) from the finger's rest line and y its reach into the keys.
 // `mirror` = +1 for the right hand, -1 for the left, so > 0 always means toward the little finger.

@@ -158,19 +158,51 @@ Status read_finger(const JsonReader& reader, const nlohmann::json& fingers, int 
   return Status::success();
 }
 
+// Optional (older files have none): every field of "pass_over" is optional too.
+Status read_pass_over(const JsonReader& reader, const nlohmann::json& document,
+                      PassOverParams& p) {
+  const std::string path = "/pass_over";
+  if (!document.contains("pass_over")) return Status::success();
+  const nlohmann::json& object = document.at("pass_over");
+  if (auto ok = reader.check_keys(object, path,
+                                  {"lift_mm", "gap_mm", "crossed_mm", "ease_s", "sample_s"});
+      !ok) {
+    return ok;
+  }
+  const struct {
+    const char* key;
+    double* out;
+    bool allow_zero;
+  } fields[] = {{"lift_mm", &p.lift_mm, true},  // 0: no hand is ever lifted
+                {"gap_mm", &p.gap_mm, false},
+                {"crossed_mm", &p.crossed_mm, false},
+                {"ease_s", &p.ease_s, false},
+                {"sample_s", &p.sample_s, false}};
+  for (const auto& field : fields) {
+    if (!object.contains(field.key)) continue;
+    if (auto ok = read_positive(reader, object, path, field.key, *field.out, field.allow_zero);
+        !ok) {
+      return ok;
+    }
+  }
+  return Status::success();
+}
+
 }  // namespace
 
 Result<FingerMotionParams> finger_motion_params_from_json(const nlohmann::json& document,
                                                           const std::string& file_name) {
   const JsonReader reader(file_name);
   if (auto ok =
-          reader.check_keys(document, "", {"description", "source", "keys", "timing", "fingers"});
+          reader.check_keys(document, "", {"description", "source", "keys", "timing", "fingers",
+                                           "pass_over"});
       !ok) {
     return ok.error();
   }
   FingerMotionParams params;
   if (auto ok = read_keys(reader, document, params.keys); !ok) return ok.error();
   if (auto ok = read_timing(reader, document, params.timing); !ok) return ok.error();
+  if (auto ok = read_pass_over(reader, document, params.pass_over); !ok) return ok.error();
   if (!document.contains("fingers")) return reader.error("/fingers", "missing");
   const nlohmann::json& fingers = document.at("fingers");
   if (auto ok = reader.check_keys(fingers, "/fingers", {"1", "2", "3", "4", "5"}); !ok) {

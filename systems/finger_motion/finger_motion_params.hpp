@@ -61,10 +61,22 @@ struct StrokeTiming {
   double reach_in_bridge_s = 0.4;
 };
 
+// One hand passing over the other (pass_over.hpp). Optional in the file ("pass_over").
+struct PassOverParams {
+  // Over the other hand's knuckles (its palm's capsule tops out 51 mm above the white keys);
+  // pressing fingers straighten to reach down from it.
+  double lift_mm = 32.0;
+  double gap_mm = 60.0;       // reference points this close on their own sides ...
+  double crossed_mm = 130.0;  // ... or crossed by less than this: the hands overlap
+  double ease_s = 0.08;       // up before the overlap and down after it, minimum jerk
+  double sample_s = 0.01;     // where the paths are compared
+};
+
 struct FingerMotionParams {
   std::array<FingerGeometry, 5> fingers{};  // [0] = thumb .. [4] = little finger
   KeyHeights keys;
   StrokeTiming timing;
+  PassOverParams pass_over;
 };
 
 Result<FingerMotionParams> load_finger_motion_params(const std::filesystem::path& path);

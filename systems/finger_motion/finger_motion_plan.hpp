@@ -13,6 +13,7 @@
 #include <tutti/components/hand_side.hpp>
 #include <tutti/finger_motion/finger_chain.hpp>
 #include <tutti/finger_motion/finger_motion_params.hpp>
+#include <tutti/finger_motion/pass_over.hpp>
 #include <tutti/spline_motion/plateau_envelope.hpp>
 
 namespace tutti::finger_motion {
@@ -66,11 +67,13 @@ struct HandFingerPlan {
   // How far in toward the fallboard the hand sits beyond its rest line over time (mm), so the
   // short fingers reach the black keys they strike.
   tutti::motion::PlateauEnvelope reach_in;
+  // Where the hand is lifted over the other one (pass_over.hpp).
+  PassOver pass_over;
 };
 
 struct FingerMotionPlan {
-  HandFingerPlan right{components::HandSide::right, {}, {}, {}, {}};
-  HandFingerPlan left{components::HandSide::left, {}, {}, {}, {}};
+  HandFingerPlan right{components::HandSide::right, {}, {}, {}, {}, {}};
+  HandFingerPlan left{components::HandSide::left, {}, {}, {}, {}, {}};
   std::array<FingerGeometry, 5> geometry{};  // scaled to the hand preset
   // Chain shapes for the three bends a held or resting finger has, so evaluate rarely needs trig.
   std::array<ChainShape, 5> neutral_shape{};

@@ -23,10 +23,12 @@ void finger_pose_system(ecs::World& world, const ecs::FrameTime& frame) {
     const motion::HandState state = motion::evaluate(motion->path(hand.side), t_s);
     hand.x_mm = state.x_mm;
     hand.v_x_mm_per_s = state.v_mm_per_s;
+    const HandFingerPlan& plan = motion->fingers.hand(hand.side);
+    const double lift = evaluate_pass_over(plan.pass_over, t_s);
     hand.y_mm = motion->fingers.geometry[2].root_y_mm +
-                tutti::motion::evaluate_plateau_envelope(
-                    motion->fingers.hand(hand.side).reach_in, t_s);
-    hand.z_mm = motion->fingers.geometry[2].root_z_mm;
+                tutti::motion::evaluate_plateau_envelope(plan.reach_in, t_s) +
+                lift * plan.pass_over.in_per_lift;
+    hand.z_mm = motion->fingers.geometry[2].root_z_mm + lift;
   });
   world.view<components::Finger>().each([&](components::Finger& finger) {
     const components::Hand* hand = world.try_get<components::Hand>(finger.hand);

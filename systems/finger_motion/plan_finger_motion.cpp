@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include <tutti/finger_motion/plan_pass_over.hpp>
+
 namespace tutti::finger_motion {
 namespace {
 
@@ -319,6 +321,7 @@ Result<FingerMotionPlan> plan_finger_motion(
     side->reach_in = plan_hand_reach_in(*side, plan);
     settle_key_beds(*side, plan, !strokes.empty());
   }
+  plan_pass_over(plan, right_path, left_path, params.pass_over);
   return plan;
 }
 

@@ -18,6 +18,9 @@
 //    ending at the onset and starting no earlier than the previous offset (late and quick);
 //  - bend and hover height adapt over shape_s before the stroke (not before the previous offset).
 //
+// Where the hands come onto each other, the crossing one is lifted over the other
+// (pass_over.hpp, params.pass_over).
+//
 // With `strokes` (one per Score note), each contact's onset is the stroke's bottom_s, its stroke
 // start, offset and key travel the stroke's (the same clamps to the finger's previous contact
 // apply).

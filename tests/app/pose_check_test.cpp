@@ -24,6 +24,7 @@
 #include <tutti/music/load_score.hpp>
 #include <tutti/performance/draft_scene.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/stage/stage.hpp>
 
 #include "scratch_dir.hpp"
 #include "testdata.hpp"
@@ -247,7 +248,8 @@ TEST(PoseCheck, PianistsPadsMeetTheKeyTopsAndNoKeyIsLeftHanging) {
 
 // A third-party piece staged as `tutti scene new` drafts it, checked over [from_s, to_s).
 // A third-party piece staged as `scene new` drafts it; null (and a failure) when it cannot be.
-std::unique_ptr<stage::Stage> stage_piece(const std::string& relative) {
+std::unique_ptr<stage::Stage> stage_piece(const std::string& relative,
+                                          const stage::StageOptions& stage_options = {}) {
   const std::filesystem::path file = test::testdata(relative);
   auto score = music::load_score(file);
   EXPECT_TRUE(score) << score.error().message;
@@ -259,14 +261,15 @@ std::unique_ptr<stage::Stage> stage_piece(const std::string& relative) {
                                   file.parent_path());
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return nullptr;
-  auto staged = build_stage(*scene, {});
+  auto staged = build_stage(*scene, stage_options);
   EXPECT_TRUE(staged) << staged.error().message;
   if (!staged) return nullptr;
   return std::move(*staged);
 }
 
-PoseReport check_piece(const std::string& relative, double from_s, double to_s) {
-  auto staged = stage_piece(relative);
+PoseReport check_piece(const std::string& relative, double from_s, double to_s,
+                       const stage::StageOptions& stage_options = {}) {
+  auto staged = stage_piece(relative, stage_options);
   if (!staged) return {};
   PoseCheckOptions options;
   options.from_s = from_s;
@@ -309,10 +312,13 @@ TEST(PoseCheck, APolonaisesTenthIsRolledHeardAsStruckWithThePadsOnTheKeys) {
   EXPECT_LE(get(*report, "pianist: pressing pad off its key's top (0 = on it)").worst(), 1.5);
 }
 
-// Hands never pass through each other: the bundled pieces keep them apart; the lilypond test
-// suite's 43e, whose lower staff climbs into the upper one's range and over it (both hands
-// within G4-D5 from 2.5 s, the left hand's C#5 over the right hand's B4 at 5 s), crowds them (a fault the measure exists to show: issue 35 lists it until
-// such crossings are planned). Each pressing pad lies on its key's top.
+// Hands never pass through each other: the bundled pieces keep them apart, and so do true
+// crossings, one hand lifted over the other (systems/finger_motion/pass_over.hpp). Clara
+// Schumann's Polonaise op. 1 no. 3 writes the right hand's staff under the left's at 64.5 s: the
+// right hand leaps from A5 over the left hand's chord to F2-G2-C#3 beside its A2-G3. With the
+// lift switched off (content's "pass_over": {"lift_mm": 0}) the measure shows the right hand
+// passing through the left; with it, the hands are apart. Each pressing pad lies on its key's
+// top.
 TEST(PoseCheck, OneHandInsideTheOtherIsMeasured) {
   for (const char* scene : {"piano.json", "piano_beginner.json"}) {
     const PoseReport report = check(scene);
@@ -323,13 +329,58 @@ TEST(PoseCheck, OneHandInsideTheOtherIsMeasured) {
         << scene;
   }
   TUTTI_REQUIRE_TESTDATA();
-  // Clara Schumann's Polonaise op. 1 no. 3 writes the right hand's staff under the left's: a
-  // crossing tutti does not yet play from above (tests/data/pose_limits_known_over.txt).
-  const PoseReport report = check_piece("musicxml/music21/polonaise_op1n3.mxl", 64.0, 65.0);
-  const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
-  EXPECT_GT(apart.worst(), 5.0);
-  EXPECT_NE(apart.worst_of.find("right "), std::string::npos) << apart.worst_of;
-  EXPECT_NE(apart.worst_of.find(" in left "), std::string::npos) << apart.worst_of;
+  const test::ScratchDir scratch;
+  const std::filesystem::path content = scratch.path() / "content";
+  std::filesystem::copy(kSource / "content", content, std::filesystem::copy_options::recursive);
+  {
+    const std::filesystem::path file = content / "piano" / "finger_motion.json";
+    nlohmann::json params = nlohmann::json::parse(std::ifstream(file));
+    params["pass_over"]["lift_mm"] = 0.0;
+    std::ofstream(file) << params.dump(2);
+  }
+  for (const bool lifted : {false, true}) {
+    stage::StageOptions options;
+    if (!lifted) options.content_dir = content;
+    const PoseReport report =
+        check_piece("musicxml/music21/polonaise_op1n3.mxl", 64.0, 65.0, options);
+    const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
+    if (lifted) {
+      EXPECT_EQ(apart.worst(), 0.0) << apart.worst_at_s << " s: " << apart.worst_of;
+      for (const char* on_key : {"pianist: pressing pad off its key's top (0 = on it)",
+                                 "pianist: pressing fingertip's pad above its key's top at key bottom",
+                                 "pianist: fastest joint's angular speed outside strokes"}) {
+        EXPECT_TRUE(get(report, on_key).within_limit()) << on_key;
+      }
+    } else {
+      EXPECT_GT(apart.worst(), 5.0);
+      EXPECT_NE(apart.worst_of.find("right "), std::string::npos) << apart.worst_of;
+      EXPECT_NE(apart.worst_of.find(" in left "), std::string::npos) << apart.worst_of;
+    }
+  }
+}
+
+// The right hand crosses over the left and back in the Polonaise op. 1 no. 4 (15.0-16.1 s: it
+// leaps from C#5 to C#3 and C#2 under the left hand's held C#4-E4-G4, then back to D5), and in
+// no. 3 it holds D3 under the left hand's chords (2.0-2.75 s). It is lifted over the left hand,
+// its fingers reaching down to their keys: 17.5 and 20.5 mm into it before.
+TEST(PoseCheck, AHandCrossingTheOtherPassesOverIt) {
+  TUTTI_REQUIRE_TESTDATA();
+  for (const auto& [piece, from_s, to_s] :
+       {std::tuple{"musicxml/music21/polonaise_op1n4.mxl", 14.9, 16.3},
+        std::tuple{"musicxml/music21/polonaise_op1n3.mxl", 1.8, 2.9}}) {
+    const PoseReport report = check_piece(piece, from_s, to_s);
+    const PoseMeasure& apart = get(report, "pianist: one hand inside the other (depth; 0 = apart)");
+    EXPECT_GT(apart.samples.size(), 30u) << piece;
+    EXPECT_EQ(apart.worst(), 0.0) << piece << " " << apart.worst_at_s << " s: " << apart.worst_of;
+    for (const char* limit : {"pianist: pressing pad off its key's top (0 = on it)",
+                              "pianist: pressing fingertip's pad above its key's top at key bottom",
+                              "pianist: fastest finger joint's angular speed",
+                              "pianist: fastest joint's angular speed outside strokes"}) {
+      const PoseMeasure& measure = get(report, limit);
+      EXPECT_TRUE(measure.within_limit())
+          << piece << " " << limit << ": " << measure.worst() << " at " << measure.worst_at_s;
+    }
+  }
 }
 
 // A finger that presses nothing gives way to the other hand: in Bach's Prelude in C (BWV 846)

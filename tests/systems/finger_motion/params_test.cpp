@@ -92,6 +92,37 @@ TEST(FingerMotionParams, BadLeverAndReachInValuesAreNamed) {
   EXPECT_EQ(p->keys.pivot_y_mm, 0.0);
 }
 
+TEST(FingerMotionParams, PassOverIsOptionalAndChecked) {
+  nlohmann::json doc = content_json();
+  ASSERT_TRUE(doc.contains("pass_over"));
+  auto p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_TRUE(p.ok()) << p.error().message;
+  EXPECT_EQ(p->pass_over.lift_mm, doc["pass_over"]["lift_mm"].get<double>());
+
+  doc["pass_over"]["gap_mm"] = -5.0;
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().message, "f.json: /pass_over/gap_mm: must be positive");
+
+  doc = content_json();
+  doc["pass_over"]["lift"] = 30.0;
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_NE(p.error().message.find("f.json: /pass_over/lift: unknown key"), std::string::npos)
+      << p.error().message;
+
+  doc = content_json();
+  doc["pass_over"]["lift_mm"] = 0.0;  // allowed: no hand is lifted
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_TRUE(p.ok()) << p.error().message;
+
+  doc = content_json();
+  doc.erase("pass_over");
+  p = finger_motion_params_from_json(doc, "f.json");
+  ASSERT_TRUE(p.ok()) << p.error().message;
+  EXPECT_EQ(p->pass_over.lift_mm, PassOverParams{}.lift_mm);
+}
+
 TEST(FingerMotionParams, MissingFileIsAnError) {
   auto p = load_finger_motion_params("/nonexistent/finger_motion.json");
   ASSERT_FALSE(p.ok());
