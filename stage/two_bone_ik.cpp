@@ -5,6 +5,8 @@
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
 
+#include <tutti/model/world_matrices_below.hpp>
+
 namespace tutti::stage {
 namespace {
 
@@ -28,6 +30,25 @@ void set_world_rotation(const model::ModelAsset& asset, int node, const glm::qua
       parent >= 0 ? world_rotation(world[static_cast<std::size_t>(parent)]) : world_rotation(root);
   pose.local[static_cast<std::size_t>(node)].rotation =
       glm::normalize(glm::inverse(parent_rotation) * wanted);
+}
+
+// The three joints' world matrices after the upper one turned, the same products a whole pass
+// makes, when the chain is a chain (each joint the parent of the next); else everything below.
+// The hand and fingers below the end are brought up to date once, at the end of the solve.
+void update_chain(const model::ModelAsset& asset, const model::ModelPose& pose,
+                  const glm::mat4& root, const TwoBoneChain& chain, std::span<glm::mat4> world) {
+  const auto u = static_cast<std::size_t>(chain.upper);
+  const auto l = static_cast<std::size_t>(chain.lower);
+  const auto e = static_cast<std::size_t>(chain.end);
+  const int above = asset.nodes[u].parent;
+  if (asset.nodes[l].parent != chain.upper || asset.nodes[e].parent != chain.lower ||
+      !(above < chain.upper) || !(u < l && l < e) || e >= pose.local.size() || e >= world.size()) {
+    model::update_world_matrices_below(asset, pose, root, chain.upper, world);
+    return;
+  }
+  world[u] = (above >= 0 ? world[static_cast<std::size_t>(above)] : root) * model::to_matrix(pose.local[u]);
+  world[l] = world[u] * model::to_matrix(pose.local[l]);
+  world[e] = world[l] * model::to_matrix(pose.local[e]);
 }
 
 }  // namespace
@@ -84,7 +105,7 @@ void solve_two_bone_ik(const model::ModelAsset& asset, const TwoBoneChain& chain
   const glm::quat turn_upper = rotation_between(glm::normalize(b - a), glm::normalize(elbow - a));
   const glm::quat upper_world = turn_upper * world_rotation(world[u]);
   set_world_rotation(asset, chain.upper, upper_world, world, root, pose);
-  model::compute_world_matrices(asset, pose, root, world);
+  update_chain(asset, pose, root, chain, world);
 
   const glm::vec3 new_elbow = origin(world[l]);
   const glm::vec3 new_end = origin(world[e]);
@@ -93,7 +114,7 @@ void solve_two_bone_ik(const model::ModelAsset& asset, const TwoBoneChain& chain
       rotation_between(glm::normalize(new_end - new_elbow), glm::normalize(wanted_end - new_elbow));
   const glm::quat lower_world = turn_lower * world_rotation(world[l]);
   set_world_rotation(asset, chain.lower, lower_world, world, root, pose);
-  model::compute_world_matrices(asset, pose, root, world);
+  model::update_world_matrices_below(asset, pose, root, chain.upper, world);
 }
 
 }  // namespace tutti::stage

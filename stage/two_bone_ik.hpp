@@ -19,8 +19,8 @@ struct TwoBoneChain {
 };
 
 // Rewrites pose.local[upper].rotation and pose.local[lower].rotation. `world` must hold the
-// world matrices of the current pose (compute_world_matrices); it is updated for the whole model
-// before returning. A target out of reach straightens the arm toward it. Nodes missing (-1) or
+// world matrices of the current pose (compute_world_matrices); it is updated before returning
+// (only below the upper node: nothing else moved, model/world_matrices_below.hpp). A target out of reach straightens the arm toward it. Nodes missing (-1) or
 // degenerate chains leave the pose as it is. `soft_m` > 0: the last soft_m of the arm's reach is
 // eased (soft IK): the end stops short of a target near or past full stretch by up to soft_m / e
 // at full stretch, and the elbow never whips straight however the target moves there (at full

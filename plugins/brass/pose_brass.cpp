@@ -11,6 +11,7 @@
 #include <tutti/components/mouth.hpp>
 #include <tutti/components/slide.hpp>
 #include <tutti/components/valve.hpp>
+#include <tutti/model/world_matrices_below.hpp>
 #include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/spline_motion/plateau_envelope.hpp>
@@ -240,7 +241,8 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
                        : stage::rotation_of(body->root);
       body->pose.local[static_cast<std::size_t>(arm.end)].rotation =
           glm::normalize(glm::inverse(parent_rotation) * hand_rotation);
-      model::compute_world_matrices(body_asset, body->pose, body->root, body_world);
+      // Only the hand turned since the IK brought the arm's matrices up to date.
+      model::update_world_matrices_below(body_asset, body->pose, body->root, arm.end, body_world);
       if (!by_fingertips && rig_grip >= 0) {
         short_by[side] =
             glm::distance(origin(body_world[static_cast<std::size_t>(rig_grip)]), palm_goal);

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <span>
+#include <utility>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -119,6 +121,47 @@ class FingerYielder {
   std::array<Overlaps, 2> column_;
 };
 
+// Whether finger f's bones in `own` are clear of every capsule in `other` by the margin, as
+// FingerYielder counts clear: the test that spares a finger in no one's way its searches.
+bool finger_clear(std::span<const HandCapsule> own, std::size_t f,
+                  std::span<const HandCapsule> other) {
+  for (const HandCapsule& bone : own) {
+    if (bone.finger != static_cast<int>(f)) continue;
+    for (const HandCapsule& capsule : other) {
+      if (1000.0 * overlap_m(bone, capsule) + kApartMarginMm >= 0.05) return false;
+    }
+  }
+  return true;
+}
+
+// Whether two hands' capsules lie further apart than the margin along some axis: then no
+// finger of one can reach the other.
+bool hands_far_apart(std::span<const HandCapsule> one, std::span<const HandCapsule> other) {
+  if (one.empty() || other.empty()) return true;
+  const auto bounds = [](std::span<const HandCapsule> capsules) {
+    glm::vec3 lo(std::numeric_limits<float>::max());
+    glm::vec3 hi(std::numeric_limits<float>::lowest());
+    for (const HandCapsule& c : capsules) {
+      lo = glm::min(lo, glm::min(c.a, c.b) - glm::vec3(c.radius));
+      hi = glm::max(hi, glm::max(c.a, c.b) + glm::vec3(c.radius));
+    }
+    return std::pair{lo, hi};
+  };
+  const auto [lo1, hi1] = bounds(one);
+  const auto [lo2, hi2] = bounds(other);
+  const auto margin = static_cast<float>(kApartMarginMm / 1000.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (lo1[axis] > hi2[axis] + margin || lo2[axis] > hi1[axis] + margin) return true;
+  }
+  return false;
+}
+
+void collect_posed_capsules(PianoRig& rig, const PlacedModel& model, std::size_t side) {
+  pose_world(model, rig.scratch_hand_world[side]);
+  collect_hand_capsules(finger_chains(rig, side), rig.scratch_hand_world[side],
+                        rig.scratch_hand_capsules[side]);
+}
+
 }  // namespace
 
 void keep_hands_apart(const ecs::World& world, PianoRig& rig,
@@ -127,16 +170,23 @@ void keep_hands_apart(const ecs::World& world, PianoRig& rig,
       hand_models[1]->asset == nullptr) {
     return;
   }
+  // Most frames the hands are apart: two forward passes tell, and nothing else is done.
+  for (std::size_t side = 0; side < 2; ++side) collect_posed_capsules(rig, *hand_models[side], side);
+  if (hands_far_apart(rig.scratch_hand_capsules[0], rig.scratch_hand_capsules[1])) return;
   // Free fingers first, then pressing ones where that was not enough.
   for (const bool pressing : {false, true}) {
     for (std::size_t side = 0; side < 2; ++side) {
       const std::size_t other = 1 - side;
-      pose_world(*hand_models[other], rig.scratch_hand_world[other]);
-      collect_hand_capsules(finger_chains(rig, other), rig.scratch_hand_world[other],
-                            rig.scratch_hand_capsules[other]);
+      // Both hands as they are now. A finger's search below poses only that finger, so the
+      // other fingers' capsules in scratch_hand_capsules[side] stay true for them.
+      collect_posed_capsules(rig, *hand_models[other], other);
+      collect_posed_capsules(rig, *hand_models[side], side);
       for (std::size_t f = 0; f < 5; ++f) {
         const auto* finger = world.try_get<components::Finger>(rig.fingers[side][f]);
         if (finger == nullptr || rig.finger_bones[side][f][0] < 0) continue;
+        if (finger_clear(rig.scratch_hand_capsules[side], f, rig.scratch_hand_capsules[other])) {
+          continue;
+        }
         if (!pressing && finger->key < 0) {
           FingerYielder(rig, *hand_models[side], *finger, side, f, rig.scratch_hand_capsules[other])
               .yield();

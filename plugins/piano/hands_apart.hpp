@@ -13,7 +13,9 @@
 //   - then a pressing finger still in the other hand moves its pad along its key's top, away
 //     from it (PadSeater::clear_of): on the surface, inside the outline.
 // A pose is a function of the planned components only, so it stays a pure function of t; the
-// turn grows from zero as the overlap does.
+// turn grows from zero as the overlap does. Most frames the hands are apart: their bounding boxes
+// tell after one forward pass of each, and a finger whose bones are clear of the other hand is
+// not searched.
 
 #include <array>
 
