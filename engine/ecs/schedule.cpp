@@ -9,8 +9,6 @@ namespace tutti::ecs {
 
 std::string_view phase_name(Phase phase) noexcept {
   switch (phase) {
-    case Phase::plan:
-      return "plan";
     case Phase::sync:
       return "sync";
     case Phase::evaluate:
@@ -19,8 +17,6 @@ std::string_view phase_name(Phase phase) noexcept {
       return "express";
     case Phase::pose:
       return "pose";
-    case Phase::render:
-      return "render";
   }
   return "unknown";
 }

@@ -25,11 +25,13 @@ struct FrameTime {
   double dt_s = 0.0;  // time since the previous frame
 };
 
-// In run order.
-enum class Phase : std::uint8_t { plan, sync, evaluate, express, pose, render };
-inline constexpr std::size_t kPhaseCount = 6;
+// In run order. Planning happens offline, before the first frame (each family's plan), and
+// drawing after the frame, from what pose left (the renderer, the exporter, the C API): neither
+// is a phase of the frame.
+enum class Phase : std::uint8_t { sync, evaluate, express, pose };
+inline constexpr std::size_t kPhaseCount = 4;
 
-// "plan", "sync", ...; "unknown" for a value outside the enum.
+// "sync", "evaluate", ...; "unknown" for a value outside the enum.
 [[nodiscard]] std::string_view phase_name(Phase phase) noexcept;
 
 using System = std::function<void(World&, const FrameTime&)>;
@@ -132,7 +134,7 @@ class Schedule {
   // FrameTime resource as the phase starts (the sync phase may have replaced it). An exception
   // from a system or a command propagates and skips the rest of the frame; commands still queued
   // stay queued.
-  void run(World& world, const FrameTime& frame, Phase last = Phase::render);
+  void run(World& world, const FrameTime& frame, Phase last = Phase::pose);
 
   // One line per non-empty phase, in run order, each ending in '\n':
   // "sync: audio_clock\nevaluate: hand_pose, bow\n". Empty string for an empty schedule.

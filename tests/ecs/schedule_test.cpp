@@ -20,12 +20,10 @@ struct Note {
 };
 
 TEST(ScheduleTest, PhaseNames) {
-  EXPECT_EQ(phase_name(Phase::plan), "plan");
   EXPECT_EQ(phase_name(Phase::sync), "sync");
   EXPECT_EQ(phase_name(Phase::evaluate), "evaluate");
   EXPECT_EQ(phase_name(Phase::express), "express");
   EXPECT_EQ(phase_name(Phase::pose), "pose");
-  EXPECT_EQ(phase_name(Phase::render), "render");
   EXPECT_EQ(phase_name(static_cast<Phase>(42)), "unknown");
 }
 
@@ -35,19 +33,17 @@ TEST(ScheduleTest, RunsPhasesInOrderAndSystemsInAddedOrder) {
   auto logger = [&log](std::string name) {
     return [&log, name](World&, const FrameTime&) { log.push_back(name); };
   };
-  schedule.add(Phase::render, "draw", logger("draw"));
+  schedule.add(Phase::pose, "skin", logger("skin"));
   schedule.add(Phase::evaluate, "hand_pose", logger("hand_pose"));
   schedule.add(Phase::sync, "audio_clock", logger("audio_clock"));
   schedule.add(Phase::evaluate, "bow", logger("bow"));
-  schedule.add(Phase::plan, "fingering", logger("fingering"));
   schedule.add(Phase::pose, "ik", logger("ik"));
   schedule.add(Phase::express, "breath", logger("breath"));
 
   World world;
   schedule.run(world, FrameTime{1.0, 0.5});
-  EXPECT_THAT(log,
-              ElementsAre("fingering", "audio_clock", "hand_pose", "bow", "breath", "ik", "draw"));
-  EXPECT_EQ(schedule.size(), 7U);
+  EXPECT_THAT(log, ElementsAre("audio_clock", "hand_pose", "bow", "breath", "skin", "ik"));
+  EXPECT_EQ(schedule.size(), 6U);
   EXPECT_TRUE(schedule.contains("bow"));
   EXPECT_FALSE(schedule.contains("Bow"));
 }
@@ -74,8 +70,8 @@ TEST(ScheduleTest, DescribeListsNonEmptyPhasesInRunOrder) {
   schedule.add(Phase::evaluate, "hand_pose", noop);
   schedule.add(Phase::sync, "audio_clock", noop);
   schedule.add(Phase::evaluate, "bow", noop);
-  schedule.add(Phase::render, "draw", noop);
-  EXPECT_EQ(schedule.describe(), "sync: audio_clock\nevaluate: hand_pose, bow\nrender: draw\n");
+  schedule.add(Phase::pose, "ik", noop);
+  EXPECT_EQ(schedule.describe(), "sync: audio_clock\nevaluate: hand_pose, bow\npose: ik\n");
 }
 
 TEST(ScheduleTest, RejectsDuplicateNamesAcrossPhases) {
@@ -117,7 +113,7 @@ TEST(ScheduleTest, CommandsDeferredByTheLastPhaseAreFlushedByRun) {
   Schedule schedule;
   World world;
   const Entity e = world.create();
-  schedule.add(Phase::render, "late", [e](World& w, const FrameTime&) {
+  schedule.add(Phase::pose, "late", [e](World& w, const FrameTime&) {
     w.defer([e](World& inner) { inner.add<Note>(e, 1); });
   });
   schedule.run(world, FrameTime{});
@@ -129,7 +125,7 @@ TEST(ScheduleTest, CannotAddOrRunFromARunningSystem) {
   World world;
   bool add_rejected = false;
   bool run_rejected = false;
-  schedule.add(Phase::plan, "meddler", [&](World& w, const FrameTime& frame) {
+  schedule.add(Phase::sync, "meddler", [&](World& w, const FrameTime& frame) {
     try {
       schedule.add(Phase::pose, "late_comer", [](World&, const FrameTime&) {});
     } catch (const std::logic_error&) {
@@ -173,7 +169,7 @@ namespace {
 TEST(ScheduleTest, RunStopsAfterTheLastPhaseAsked) {
   Schedule schedule;
   std::vector<std::string> log;
-  for (Phase phase : {Phase::sync, Phase::evaluate, Phase::express, Phase::pose, Phase::render}) {
+  for (Phase phase : {Phase::sync, Phase::evaluate, Phase::express, Phase::pose}) {
     schedule.add(phase, std::string(phase_name(phase)),
                  [&log, phase](World&, const FrameTime&) { log.emplace_back(phase_name(phase)); });
   }
