@@ -28,11 +28,11 @@ constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFl
                                          ImGuiWindowFlags_NoSavedSettings;
 
 // The seed-drawn value of each variation field (scene::kVariationFields order).
-constexpr std::array<double ensemble::VariationParams::*, 7> kParamOf{
-    &ensemble::VariationParams::sway_amount,  &ensemble::VariationParams::sway_period,
-    &ensemble::VariationParams::sway_phase,   &ensemble::VariationParams::weight_shift_rate,
-    &ensemble::VariationParams::breath_depth, &ensemble::VariationParams::cue_strength,
-    &ensemble::VariationParams::head_motion};
+constexpr std::array<double ensemble_variation::VariationParams::*, 7> kParamOf{
+    &ensemble_variation::VariationParams::sway_amount,  &ensemble_variation::VariationParams::sway_period,
+    &ensemble_variation::VariationParams::sway_phase,   &ensemble_variation::VariationParams::weight_shift_rate,
+    &ensemble_variation::VariationParams::breath_depth, &ensemble_variation::VariationParams::cue_strength,
+    &ensemble_variation::VariationParams::head_motion};
 
 // The panels are designed in sRGB colours; the swap chain encodes linear light (the layer
 // linearises ImGui's own style the same way), so each colour is decoded once here.
@@ -155,7 +155,7 @@ void draw_transport(Session& session, UiState& ui, UiRequests& out) {
 
 void draw_variation(Session& session, UiState& ui, PlayerRef player,
                     const scene::Variation& variation, std::uint64_t seed) {
-  const ensemble::VariationParams drawn = ensemble::resolve_variation(seed, {});
+  const ensemble_variation::VariationParams drawn = ensemble_variation::resolve_variation(seed, {});
   for (std::size_t f = 0; f < scene::kVariationFields.size(); ++f) {
     const scene::VariationField& field = scene::kVariationFields[f];
     const std::optional<double>& set = variation.*field.value;

@@ -97,12 +97,12 @@ void add_hand_paths(const stage::Stage& stage, ecs::Entity pianist, Timeline& ou
   }
   const auto* handle = world.try_get<finger_motion::PianistMotionHandle>(pianist);
   if (handle == nullptr || !handle->motion) return;
-  const motion::HandPath* paths[2] = {&handle->motion->right_path, &handle->motion->left_path};
+  const spline_motion::HandPath* paths[2] = {&handle->motion->right_path, &handle->motion->left_path};
   for (std::size_t side = 0; side < 2; ++side) {
     if (paths[side]->empty()) continue;
     for (double t = paths[side]->start_s(); t <= paths[side]->end_s() + 1e-9;
          t += kHandPathStep_s) {
-      out.hand_path[side].push_back({t, motion::evaluate(*paths[side], t).x_mm});
+      out.hand_path[side].push_back({t, spline_motion::evaluate(*paths[side], t).x_mm});
     }
   }
 }
@@ -118,7 +118,7 @@ Timeline build_timeline(const stage::Stage& stage) {
   for (ecs::Entity performer : stage.performers()) {
     out.lanes.push_back(performer_lane(stage, performer));
     if (out.lanes.back().pianist) add_hand_paths(stage, performer, out);
-    if (const auto* ensemble = world.try_get<ensemble::EnsembleMotionHandle>(performer);
+    if (const auto* ensemble = world.try_get<ensemble_variation::EnsembleMotionHandle>(performer);
         ensemble != nullptr && ensemble->plan && out.cues_s.empty()) {
       out.cues_s = ensemble->plan->cue_entrances_s;
     }

@@ -207,10 +207,10 @@ Status Performance::init(const Options& options) {
         events_.push_back({schedule->breaths[b].end_s, EventKind::breath_end, performer, index});
       }
     }
-    if (const auto* ensemble = world.try_get<ensemble::EnsembleMotionHandle>(entity);
+    if (const auto* ensemble = world.try_get<ensemble_variation::EnsembleMotionHandle>(entity);
         ensemble != nullptr && ensemble->plan && ensemble->performer < ensemble->plan->performers.size()) {
       const bool lead = ensemble->plan->lead == static_cast<int>(ensemble->performer);
-      for (const ensemble::CueMotion& cue : ensemble->plan->performers[ensemble->performer].cues) {
+      for (const ensemble_variation::CueMotion& cue : ensemble->plan->performers[ensemble->performer].cues) {
         events_.push_back({cue.dip_s, EventKind::cue, performer, lead ? 1 : 0});
       }
     }

@@ -42,7 +42,7 @@ enum class Stance { standing, seated };
 
 // Per-performer expression controls (systems/ensemble_variation owns their meaning): absent =
 // drawn from the performer's seed. The fixed list of keys is kVariationFields below.
-using Variation = ensemble::VariationOverrides;
+using Variation = ensemble_variation::VariationOverrides;
 
 struct VariationField {
   std::string_view key;

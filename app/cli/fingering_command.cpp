@@ -50,8 +50,8 @@ Result<piano::PlannerMode> parse_mode(const std::string& mode) {
   return Error{"--mode: unknown mode '" + mode + "' (exact or lookahead)"};
 }
 
-Result<motion::SmoothingMode> parse_smoothing(const std::string& name) {
-  if (const auto mode = motion::smoothing_mode_from_string(name)) return *mode;
+Result<spline_motion::SmoothingMode> parse_smoothing(const std::string& name) {
+  if (const auto mode = spline_motion::smoothing_mode_from_string(name)) return *mode;
   return Error{"--smoothing: unknown smoothing '" + name +
                "' (monotone_quintic, pchip, natural_spline or none)"};
 }

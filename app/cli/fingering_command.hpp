@@ -23,7 +23,7 @@ struct FingeringOptions {
   std::string hand_size{};          // hands.json preset; empty = its default
   std::string weights = "default";  // preset name, or a path to a weights .json file
   bool keep_fingers = false;        // the file's finger marks are pins (else they are ignored)
-  // Hand-path smoothing, a motion::SmoothingMode name: monotone_quintic (default), pchip,
+  // Hand-path smoothing, a spline_motion::SmoothingMode name: monotone_quintic (default), pchip,
   // natural_spline (the paper's; may leave corridors) or none (the taut string).
   std::string smoothing = "monotone_quintic";
   std::filesystem::path plot{};         // PNG piano roll, empty = none

@@ -25,7 +25,7 @@ const char* hand_name(music::Hand hand) {
   return "unknown";
 }
 
-nlohmann::ordered_json path_json(const motion::PathReport& r) {
+nlohmann::ordered_json path_json(const spline_motion::PathReport& r) {
   return {{"violating_corridors", r.violating_corridors},
           {"worst_violation_mm", r.worst_violation_mm},
           {"peak_speed_mm_per_s", r.peak_speed_mm_per_s},
@@ -71,7 +71,7 @@ std::string fingering_json(const music::Score& fingered, const piano_performance
   }
   nlohmann::ordered_json doc = {
       {"file", fingered.source},
-      {"smoothing", motion::to_string(r.smoothing)},
+      {"smoothing", spline_motion::to_string(r.smoothing)},
       {"notes", std::move(notes)},
       {"hands", {{"right", hand_json(r.right)}, {"left", hand_json(r.left)}}}};
   return doc.dump(2) + "\n";

@@ -39,7 +39,7 @@ std::string fingering_report_text(const music::Score& score,
                                   const piano_performance::PianoPerformancePlan& plan,
                                   int max_diagnostic_lines) {
   const piano_performance::PerformanceReport& r = plan.report;
-  std::string text = format("hand paths: %s smoothing\n", motion::to_string(r.smoothing)) +
+  std::string text = format("hand paths: %s smoothing\n", spline_motion::to_string(r.smoothing)) +
                      hand_text("right", r.right) + hand_text("left", r.left);
   const double ms = r.fingering_ms + r.right.path_ms + r.left.path_ms;
   const std::size_t notes = score.notes.size();

@@ -165,7 +165,7 @@ void draw_notes(Canvas& canvas, const Frame& f, const music::Score& score,
   }
 }
 
-void draw_path(Canvas& canvas, const Frame& f, const motion::HandPath& path, Rgb colour,
+void draw_path(Canvas& canvas, const Frame& f, const spline_motion::HandPath& path, Rgb colour,
                int width) {
   if (path.empty()) return;
   int previous_y = 0;
@@ -176,7 +176,7 @@ void draw_path(Canvas& canvas, const Frame& f, const motion::HandPath& path, Rgb
       have_previous = false;
       continue;
     }
-    const int y = f.y(motion::evaluate(path, t).x_mm);
+    const int y = f.y(spline_motion::evaluate(path, t).x_mm);
     const int from = have_previous ? std::min(previous_y, y) : y;
     const int to = have_previous ? std::max(previous_y, y) : y;
     canvas.fill(px, from - 1, px, to + 1, colour);  // 3 px thick, continuous

@@ -8,9 +8,9 @@ namespace tutti::live {
 namespace {
 
 // x(0) = x0, x'(0) = v0, x''(0) = a0; x(T) = x1, x'(T) = x''(T) = 0.
-motion::Poly5 quintic(double x0, double v0, double a0, double x1, double duration) {
+spline_motion::Poly5 quintic(double x0, double v0, double a0, double x1, double duration) {
   const double t = duration, d = x1 - x0;
-  motion::Poly5 p;
+  spline_motion::Poly5 p;
   p.c[0] = x0;
   p.c[1] = v0;
   p.c[2] = 0.5 * a0;
@@ -24,12 +24,12 @@ motion::Poly5 quintic(double x0, double v0, double a0, double x1, double duratio
 
 LiveHandPath::LiveHandPath(double start_x_mm, double move_s, std::size_t kept_moves)
     : move_s_(move_s), kept_(std::max<std::size_t>(kept_moves, 2)) {
-  motion::Poly5 hold;
+  spline_motion::Poly5 hold;
   hold.c[0] = start_x_mm;
   moves_.push_back({-1.0e9, move_s_, start_x_mm, hold});
 }
 
-motion::HandState LiveHandPath::state(double t_s) const {
+spline_motion::HandState LiveHandPath::state(double t_s) const {
   // The last move started at or before t (moves are in start order).
   auto it = std::upper_bound(moves_.begin(), moves_.end(), t_s,
                              [](double t, const Move& m) { return t < m.start_s; });
@@ -42,17 +42,17 @@ motion::HandState LiveHandPath::state(double t_s) const {
 
 void LiveHandPath::move_to(double t_s, double x_mm) {
   while (moves_.size() > 1 && moves_.back().start_s >= t_s) moves_.pop_back();
-  const motion::HandState from = state(t_s);
+  const spline_motion::HandState from = state(t_s);
   moves_.push_back(
       {t_s, move_s_, x_mm, quintic(from.x_mm, from.v_mm_per_s, from.a_mm_per_s2, x_mm, move_s_)});
   while (moves_.size() > kept_) moves_.pop_front();
 }
 
-motion::HandPath LiveHandPath::build() const {
+spline_motion::HandPath LiveHandPath::build() const {
   std::vector<double> knots;
-  std::vector<motion::Poly5> pieces;
+  std::vector<spline_motion::Poly5> pieces;
   const auto constant = [](double x) {
-    motion::Poly5 p;
+    spline_motion::Poly5 p;
     p.c[0] = x;
     return p;
   };
@@ -72,11 +72,11 @@ motion::HandPath LiveHandPath::build() const {
   }
   if (knots.empty()) {
     // Never moved: hold the start for ever (two knots make a path that evaluates to it).
-    return motion::HandPath(motion::SmoothingMode::none, {0.0, 1.0},
+    return spline_motion::HandPath(spline_motion::SmoothingMode::none, {0.0, 1.0},
                             {constant(moves_.front().to_x_mm)}, moves_.front().to_x_mm, false);
   }
   knots.push_back(moves_.back().start_s + moves_.back().duration_s);
-  return motion::HandPath(motion::SmoothingMode::none, std::move(knots), std::move(pieces),
+  return spline_motion::HandPath(spline_motion::SmoothingMode::none, std::move(knots), std::move(pieces),
                           moves_.back().to_x_mm, false);
 }
 

@@ -19,15 +19,15 @@ class LiveHandPath {
 
   // From t_s on, go to x_mm. t_s >= the last move's start; a move at the same start replaces it.
   void move_to(double t_s, double x_mm);
-  motion::HandState state(double t_s) const;  // of the moves so far
-  motion::HandPath build() const;             // the same as a HandPath
+  spline_motion::HandState state(double t_s) const;  // of the moves so far
+  spline_motion::HandPath build() const;             // the same as a HandPath
 
  private:
   struct Move {
     double start_s = 0.0;
     double duration_s = 0.0;
     double to_x_mm = 0.0;
-    motion::Poly5 poly;
+    spline_motion::Poly5 poly;
   };
   double move_s_;
   std::size_t kept_;

@@ -173,18 +173,18 @@ components::BreathSchedule breath_schedule(const BrassPlan& plan) {
   return schedule;
 }
 
-ensemble::PerformerInput ensemble_input(const scene::Performer& performer,
+ensemble_variation::PerformerInput ensemble_input(const scene::Performer& performer,
                                         const music::Score& score, const BrassPlan& plan) {
-  ensemble::PerformerInput input;
+  ensemble_variation::PerformerInput input;
   input.seed = performer.seed;
-  input.params = ensemble::resolve_variation(performer.seed, performer.variation);
+  input.params = ensemble_variation::resolve_variation(performer.seed, performer.variation);
   input.lead = performer.lead;
   input.score = &score;
   input.breaths = &plan.player->breaths;
   for (const scene::Expression& e : performer.expressions) {
-    ensemble::ExpressionSpan span;
-    span.kind = e.kind == scene::ExpressionKind::strain ? ensemble::ExpressionKind::strain
-                                                        : ensemble::ExpressionKind::relaxed;
+    ensemble_variation::ExpressionSpan span;
+    span.kind = e.kind == scene::ExpressionKind::strain ? ensemble_variation::ExpressionKind::strain
+                                                        : ensemble_variation::ExpressionKind::relaxed;
     span.start_s = e.start_s;
     span.end_s = e.end_s;
     span.amount = e.amount;
@@ -201,7 +201,7 @@ ensemble::PerformerInput ensemble_input(const scene::Performer& performer,
 
 void BrassPlugin::add_systems(ecs::Schedule& schedule) const {
   brass::register_brass_motion(schedule);
-  ensemble::register_ensemble_variation(schedule);
+  ensemble_variation::register_ensemble_variation(schedule);
   schedule.add(ecs::Phase::pose, kBrassSkeletonSystemName, brass_skeleton_system,
                ecs::access(ecs::Reads<BrassRig, components::Valve, components::Slide, components::Mouth,
                                       components::Breath, components::BodyMotion>{},
@@ -223,7 +223,7 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
 
   ecs::World& world = builder.world();
   std::vector<ecs::Entity> players;
-  std::vector<ensemble::PerformerInput> ensemble_inputs;
+  std::vector<ensemble_variation::PerformerInput> ensemble_inputs;
   for (std::size_t seat = 0; seat < scene.performers.size(); ++seat) {
     const scene::Performer& performer = scene.performers[seat];
     auto planned = plan_brass_seat(builder, seat, *data);
@@ -276,14 +276,14 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
     world.add<BrassPlan>(player, std::move(plan));
     players.push_back(player);
   }
-  ensemble::EnsembleOptions ensemble_options;
+  ensemble_variation::EnsembleOptions ensemble_options;
   ensemble_options.cues_s = scene.cues_s;
-  auto ensemble_plan = ensemble::plan_ensemble(ensemble_inputs, ensemble_options);
+  auto ensemble_plan = ensemble_variation::plan_ensemble(ensemble_inputs, ensemble_options);
   builder.replanned("ensemble");
   if (!ensemble_plan) return ensemble_plan.error();
-  const auto shared = std::make_shared<const ensemble::EnsemblePlan>(std::move(*ensemble_plan));
+  const auto shared = std::make_shared<const ensemble_variation::EnsemblePlan>(std::move(*ensemble_plan));
   for (std::size_t i = 0; i < players.size(); ++i) {
-    world.add<ensemble::EnsembleMotionHandle>(players[i], ensemble::EnsembleMotionHandle{shared, i});
+    world.add<ensemble_variation::EnsembleMotionHandle>(players[i], ensemble_variation::EnsembleMotionHandle{shared, i});
     world.add<components::BodyMotion>(players[i]);
   }
   return Status::success();

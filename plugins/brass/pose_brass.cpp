@@ -74,7 +74,7 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
     reach_mm = slide_mm;
     if (const auto* handle = world.try_get<brass::BrassPlayerMotionHandle>(performer);
         handle != nullptr && handle->motion != nullptr) {
-      reach_mm = std::max(reach_mm, tutti::motion::evaluate_plateau_envelope(
+      reach_mm = std::max(reach_mm, tutti::spline_motion::evaluate_plateau_envelope(
                                         handle->motion->motion.slide_reach, t_s));
     }
   }

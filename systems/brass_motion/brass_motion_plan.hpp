@@ -52,7 +52,7 @@ struct BrassMotionPlan {
   std::vector<SlideMove> slide;      // in time order, not overlapping
   // The slide's extension (mm) the body is set for at each moment: never less than the slide's
   // own, eased (plan_brass_motion.cpp, plan_slide_reach).
-  tutti::motion::PlateauEnvelope slide_reach;
+  tutti::spline_motion::PlateauEnvelope slide_reach;
   float rest_tension = 0.0f;         // before the first ramp
   std::vector<TensionRamp> tension;  // in time order, not overlapping
   float corner_pull_from = 0.45f;

@@ -113,7 +113,7 @@ void plan_slide_reach(const std::vector<Played>& played, const BrassMotionParams
   // Before the first move and after the last, the slide stays out while the phrase's notes last
   // and the instrument comes down (raised over about 2.6 s before, lowered over 1.6 s after).
   constexpr double kBeforeFirstS = 3.0, kAfterLastS = 2.0;
-  std::vector<tutti::motion::EnvelopeNeed> needs;
+  std::vector<tutti::spline_motion::EnvelopeNeed> needs;
   needs.reserve(2 * plan.slide.size() + 1);
   double held_from = played.front().note->onset_s - kBeforeFirstS;
   double held_mm = plan.slide_start_mm;
@@ -126,7 +126,7 @@ void plan_slide_reach(const std::vector<Played>& played, const BrassMotionParams
   double last_offset = held_from;
   for (const Played& n : played) last_offset = std::max(last_offset, n.note->offset_s);
   needs.push_back({held_from, last_offset + kAfterLastS, held_mm});
-  plan.slide_reach = tutti::motion::plan_plateau_envelope(std::move(needs), p.slide_reach_ramp_s,
+  plan.slide_reach = tutti::spline_motion::plan_plateau_envelope(std::move(needs), p.slide_reach_ramp_s,
                                                           p.slide_reach_bridge_s);
 }
 

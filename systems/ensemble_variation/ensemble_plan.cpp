@@ -8,7 +8,7 @@
 
 #include <tutti/music/meter.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -204,4 +204,4 @@ Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs,
   return plan;
 }
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

@@ -37,7 +37,7 @@
 #include <tutti/ensemble_variation/variation_params.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 
 struct WeightShift {
   double start_s = 0.0;
@@ -110,4 +110,4 @@ struct EnsemblePlan {
 Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& performers,
                                    const EnsembleOptions& options = {});
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

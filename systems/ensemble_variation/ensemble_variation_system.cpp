@@ -5,7 +5,7 @@
 #include <tutti/components/breath.hpp>
 #include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 
 void ensemble_variation_system(ecs::World& world, const ecs::FrameTime& frame) {
   const double t_s = frame.t_s;
@@ -26,4 +26,4 @@ void register_ensemble_variation(ecs::Schedule& schedule) {
                            ecs::Writes<components::BodyMotion>{}));
 }
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

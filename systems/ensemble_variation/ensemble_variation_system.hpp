@@ -12,7 +12,7 @@
 #include <tutti/ecs/world.hpp>
 #include <tutti/ensemble_variation/ensemble_plan.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 
 struct EnsembleMotionHandle {
   std::shared_ptr<const EnsemblePlan> plan;
@@ -25,4 +25,4 @@ void ensemble_variation_system(ecs::World& world, const ecs::FrameTime& frame);
 inline constexpr const char* kEnsembleVariationSystemName = "ensemble_variation";
 void register_ensemble_variation(ecs::Schedule& schedule);
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

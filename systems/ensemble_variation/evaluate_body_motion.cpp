@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
@@ -144,4 +144,4 @@ components::BodyMotion evaluate_body_motion(const PerformerMotionPlan& plan, dou
   return m;
 }
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

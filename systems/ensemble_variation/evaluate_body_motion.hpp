@@ -6,7 +6,7 @@
 #include <tutti/components/body_motion.hpp>
 #include <tutti/ensemble_variation/ensemble_plan.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 
 // `breath_strain` is the air model's strain at t (components::Breath::strain, 0 without one);
 // BodyMotion::strain is it as the player's expression shapes it.
@@ -27,4 +27,4 @@ struct ExpressionLevel {
 };
 ExpressionLevel expression_at(const PerformerMotionPlan& plan, double t_s);
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

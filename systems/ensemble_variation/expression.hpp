@@ -12,7 +12,7 @@
 // is shorter than two ramps), so the motion is continuous in t; outside every span the motion is
 // bit for bit what it is without expressions.
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 
 enum class ExpressionKind { strain, relaxed };
 
@@ -25,4 +25,4 @@ struct ExpressionSpan {
 
 inline constexpr double kExpressionRamp_s = 0.3;
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

@@ -3,7 +3,7 @@
 
 #include <tutti/core/splitmix64.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 
 double unit_from_seed(std::uint64_t seed, std::uint64_t stream) {
   const std::uint64_t bits = splitmix64(splitmix64(seed) ^ (stream * 0xD1B54A32D192ED03ull));
@@ -38,4 +38,4 @@ VariationParams resolve_variation(std::uint64_t seed, const VariationOverrides& 
   return p;
 }
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <optional>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 
 // Per-performer expression controls, each normalised to [0, 1]; the ensemble-variation system
 // maps them onto the ranges its style data gives. Absent (nullopt) = drawn from the performer's
@@ -42,4 +42,4 @@ double unit_from_seed(std::uint64_t seed, std::uint64_t stream);
 VariationParams draw_variation(std::uint64_t seed);
 VariationParams resolve_variation(std::uint64_t seed, const VariationOverrides& overrides);
 
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

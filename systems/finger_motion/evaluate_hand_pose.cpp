@@ -155,7 +155,7 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   }
   out.press_depth = depth;
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
-  const double hand_in = tutti::motion::evaluate_plateau_envelope(hand.reach_in, t_s) +
+  const double hand_in = tutti::spline_motion::evaluate_plateau_envelope(hand.reach_in, t_s) +
                          lift * hand.pass_over.in_per_lift;
   out.tip_x_mm = x;
   out.tip_y_mm = g.root_y_mm + hand_in + stroke.reach_y_mm;
@@ -166,15 +166,15 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
   out.contact_z_mm = z;
 }
 
-void evaluate_hand_pose(const FingerMotionPlan& plan, const motion::HandPath& path,
+void evaluate_hand_pose(const FingerMotionPlan& plan, const spline_motion::HandPath& path,
                         components::HandSide side, double t_s, HandPose& out) noexcept {
-  const motion::HandState state = motion::evaluate(path, t_s);
+  const spline_motion::HandState state = spline_motion::evaluate(path, t_s);
   out.x_mm = state.x_mm;
   out.v_x_mm_per_s = state.v_mm_per_s;
   const HandFingerPlan& hand = plan.hand(side);
   const double lift = evaluate_pass_over(hand.pass_over, t_s);
   out.y_mm = plan.geometry[2].root_y_mm +
-             tutti::motion::evaluate_plateau_envelope(hand.reach_in, t_s) +
+             tutti::spline_motion::evaluate_plateau_envelope(hand.reach_in, t_s) +
              lift * hand.pass_over.in_per_lift;
   out.z_mm = plan.geometry[2].root_z_mm + lift;
   for (int finger = 1; finger <= 5; ++finger) {

@@ -32,7 +32,7 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
                           double hand_x_mm, double t_s, FingerPose& out) noexcept;
 
 // The hand (path evaluated at t_s) and its five fingers.
-void evaluate_hand_pose(const FingerMotionPlan& plan, const motion::HandPath& path,
+void evaluate_hand_pose(const FingerMotionPlan& plan, const spline_motion::HandPath& path,
                         components::HandSide side, double t_s, HandPose& out) noexcept;
 
 }  // namespace tutti::finger_motion

@@ -66,7 +66,7 @@ struct HandFingerPlan {
   std::array<std::vector<double>, 5> onsets_s{};
   // How far in toward the fallboard the hand sits beyond its rest line over time (mm), so the
   // short fingers reach the black keys they strike.
-  tutti::motion::PlateauEnvelope reach_in;
+  tutti::spline_motion::PlateauEnvelope reach_in;
   // Where the hand is lifted over the other one (pass_over.hpp).
   PassOver pass_over;
 };

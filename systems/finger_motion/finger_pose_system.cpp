@@ -20,13 +20,13 @@ void finger_pose_system(ecs::World& world, const ecs::FrameTime& frame) {
   world.view<components::Hand>().each([&](components::Hand& hand) {
     const PianistMotion* motion = motion_of(world, hand.performer);
     if (motion == nullptr) return;
-    const motion::HandState state = motion::evaluate(motion->path(hand.side), t_s);
+    const spline_motion::HandState state = spline_motion::evaluate(motion->path(hand.side), t_s);
     hand.x_mm = state.x_mm;
     hand.v_x_mm_per_s = state.v_mm_per_s;
     const HandFingerPlan& plan = motion->fingers.hand(hand.side);
     const double lift = evaluate_pass_over(plan.pass_over, t_s);
     hand.y_mm = motion->fingers.geometry[2].root_y_mm +
-                tutti::motion::evaluate_plateau_envelope(plan.reach_in, t_s) +
+                tutti::spline_motion::evaluate_plateau_envelope(plan.reach_in, t_s) +
                 lift * plan.pass_over.in_per_lift;
     hand.z_mm = motion->fingers.geometry[2].root_z_mm + lift;
   });

@@ -21,10 +21,10 @@ namespace tutti::finger_motion {
 // Everything needed to pose one pianist's hands; built once after planning, then immutable.
 struct PianistMotion {
   FingerMotionPlan fingers;
-  motion::HandPath right_path;
-  motion::HandPath left_path;
+  spline_motion::HandPath right_path;
+  spline_motion::HandPath left_path;
 
-  const motion::HandPath& path(components::HandSide side) const {
+  const spline_motion::HandPath& path(components::HandSide side) const {
     return side == components::HandSide::left ? left_path : right_path;
   }
 };

@@ -42,15 +42,15 @@ constexpr double kDepartureStepS = 0.005;
 // lies outside the finger's reach: there the finger lets the key go (a pianist leaving a held
 // note for the next position, the pedal or nothing holding it), else `offset_s`.
 double hand_departure_s(const KeyContact& c, const piano::FingerRange& range,
-                        const motion::HandPath& path) {
+                        const spline_motion::HandPath& path) {
   if (path.empty()) return c.offset_s;
   // A key the hand already struck from outside the range (a stretch the path allowed) is let
   // go only when the hand takes it further out still.
-  const double at_onset = c.x_mm - motion::evaluate(path, c.onset_s).x_mm;
+  const double at_onset = c.x_mm - spline_motion::evaluate(path, c.onset_s).x_mm;
   const double lo = std::min(range.lo_mm, at_onset) - kHoldBeyondRangeMm;
   const double hi = std::max(range.hi_mm, at_onset) + kHoldBeyondRangeMm;
   for (double t = c.onset_s + kDepartureStepS; t < c.offset_s; t += kDepartureStepS) {
-    const double offset = c.x_mm - motion::evaluate(path, t).x_mm;
+    const double offset = c.x_mm - spline_motion::evaluate(path, t).x_mm;
     if (offset < lo || offset > hi) {
       return t - kDepartureStepS;
     }
@@ -62,7 +62,7 @@ double hand_departure_s(const KeyContact& c, const piano::FingerRange& range,
 // the hand's departure. `preset_strokes`: each contact's stroke_start_s is already the one
 // wanted (a NoteStroke's).
 void order_contacts(std::vector<KeyContact>& contacts, const piano::FingerRange& range,
-                    const motion::HandPath& path, const StrokeTiming& timing,
+                    const spline_motion::HandPath& path, const StrokeTiming& timing,
                     bool preset_strokes) {
   std::sort(contacts.begin(), contacts.end(), [](const KeyContact& a, const KeyContact& b) {
     return a.onset_s != b.onset_s ? a.onset_s < b.onset_s : a.key < b.key;
@@ -129,12 +129,12 @@ void let_go_before_the_other_hand(HandFingerPlan& held, const HandFingerPlan& st
 
 // Fills the moves, shaping and releases of a finger's ordered contacts (order_contacts).
 void time_contacts(std::vector<KeyContact>& merged, double rest_offset_mm,
-                   const motion::HandPath& path, const StrokeTiming& timing) {
+                   const spline_motion::HandPath& path, const StrokeTiming& timing) {
   for (std::size_t j = 0; j < merged.size(); ++j) {
     KeyContact& c = merged[j];
     const KeyContact* prev = j > 0 ? &merged[j - 1] : nullptr;
     const double from_x =
-        prev != nullptr ? prev->x_mm : motion::evaluate(path, c.onset_s).x_mm + rest_offset_mm;
+        prev != nullptr ? prev->x_mm : spline_motion::evaluate(path, c.onset_s).x_mm + rest_offset_mm;
     const double duration =
         std::clamp(timing.move_min_s + timing.move_s_per_mm * std::abs(c.x_mm - from_x),
                    timing.move_min_s, timing.move_max_s);
@@ -145,7 +145,7 @@ void time_contacts(std::vector<KeyContact>& merged, double rest_offset_mm,
       c.shape_start_s = std::max(c.shape_start_s, prev->offset_s);
     }
     // Where the tip is when it leaves: on the previous key, relaxing from it, or at rest.
-    const double rest_at_move = motion::evaluate(path, c.move_start_s).x_mm + rest_offset_mm;
+    const double rest_at_move = spline_motion::evaluate(path, c.move_start_s).x_mm + rest_offset_mm;
     if (prev == nullptr) {
       c.move_from_x_mm = rest_at_move;
     } else if (c.move_start_s <= prev->offset_s) {
@@ -156,7 +156,7 @@ void time_contacts(std::vector<KeyContact>& merged, double rest_offset_mm,
                                                             timing.relax_time_constant_s);
     }
     c.release_end_s = c.offset_s + timing.release_s;
-    c.release_offset_mm = c.x_mm - (motion::evaluate(path, c.offset_s).x_mm + rest_offset_mm);
+    c.release_offset_mm = c.x_mm - (spline_motion::evaluate(path, c.offset_s).x_mm + rest_offset_mm);
     precompute_for_evaluate(c, timing);
   }
 }
@@ -175,9 +175,9 @@ double lands_y_mm(const FingerMotionPlan& plan, std::size_t f, const KeyContact&
 // hand in while such a key is struck and held, and back out when it is let go. Each contact
 // needs the hand in far enough that the finger's pad, bent for its key and at the key bottom,
 // lands on the key: press_in behind its front edge (a black key's begins black_front_y_mm in).
-tutti::motion::PlateauEnvelope plan_hand_reach_in(const HandFingerPlan& side,
+tutti::spline_motion::PlateauEnvelope plan_hand_reach_in(const HandFingerPlan& side,
                                                   const FingerMotionPlan& plan) {
-  std::vector<tutti::motion::EnvelopeNeed> needs;
+  std::vector<tutti::spline_motion::EnvelopeNeed> needs;
   const KeyHeights& keys = plan.keys;
   for (std::size_t f = 0; f < 5; ++f) {
     for (const KeyContact& c : side.fingers[f]) {
@@ -186,7 +186,7 @@ tutti::motion::PlateauEnvelope plan_hand_reach_in(const HandFingerPlan& side,
       needs.push_back({c.shape_start_s, c.release_end_s, target_y - lands_y_mm(plan, f, c)});
     }
   }
-  return tutti::motion::plan_plateau_envelope(std::move(needs), plan.timing.reach_in_s,
+  return tutti::spline_motion::plan_plateau_envelope(std::move(needs), plan.timing.reach_in_s,
                                               plan.timing.reach_in_bridge_s);
 }
 
@@ -209,7 +209,7 @@ void settle_key_beds(HandFingerPlan& side, const FingerMotionPlan& plan,
           strokes_travel_at_rest ? std::clamp(lands_y_mm(plan, f, c), front, keys.pivot_y_mm - 1.0)
                                  : front;
       const double travel_at_front = planned * (keys.pivot_y_mm - front) / (keys.pivot_y_mm - planned_at);
-      const double hand_in = tutti::motion::evaluate_plateau_envelope(side.reach_in, c.onset_s);
+      const double hand_in = tutti::spline_motion::evaluate_plateau_envelope(side.reach_in, c.onset_s);
       // Starting from the planned travel: where the hand is at its rest line that is already
       // the answer (exactly, not to the last rounding of the rounds below).
       double travel = planned;
@@ -231,7 +231,7 @@ void settle_key_beds(HandFingerPlan& side, const FingerMotionPlan& plan,
 
 Result<FingerMotionPlan> plan_finger_motion(
     const music::Score& score, const piano::ScorePlan& score_plan,
-    const motion::HandPath& right_path, const motion::HandPath& left_path,
+    const spline_motion::HandPath& right_path, const spline_motion::HandPath& left_path,
     const piano::Keyboard& keyboard, const piano::HandModel& hand_model,
     const FingerMotionParams& params, std::span<const NoteStroke> strokes) {
   const std::size_t count = score.notes.size();
@@ -301,7 +301,7 @@ Result<FingerMotionPlan> plan_finger_motion(
     side.fingers[static_cast<std::size_t>(finger - 1)].push_back(c);
   }
   for (HandFingerPlan* side : {&plan.right, &plan.left}) {
-    const motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
+    const spline_motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
     const music::Hand hand = side->side == HandSide::left ? music::Hand::left : music::Hand::right;
     for (std::size_t f = 0; f < 5; ++f) {
       order_contacts(side->fingers[f], hand_model.range(hand, static_cast<int>(f) + 1), path,
@@ -312,7 +312,7 @@ Result<FingerMotionPlan> plan_finger_motion(
   let_go_before_the_other_hand(plan.right, plan.left, plan.timing);
   let_go_before_the_other_hand(plan.left, plan.right, plan.timing);
   for (HandFingerPlan* side : {&plan.right, &plan.left}) {
-    const motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
+    const spline_motion::HandPath& path = side->side == HandSide::left ? left_path : right_path;
     for (std::size_t f = 0; f < 5; ++f) {
       time_contacts(side->fingers[f], side->rest_offset_mm[f], path, plan.timing);
       side->onsets_s[f].reserve(side->fingers[f].size());

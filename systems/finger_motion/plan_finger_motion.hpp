@@ -57,7 +57,7 @@ struct NoteStroke {
 // Phalanx lengths and root heights are scaled by hand_model.scale().
 Result<FingerMotionPlan> plan_finger_motion(
     const music::Score& score, const piano::ScorePlan& score_plan,
-    const motion::HandPath& right_path, const motion::HandPath& left_path,
+    const spline_motion::HandPath& right_path, const spline_motion::HandPath& left_path,
     const piano::Keyboard& keyboard, const piano::HandModel& hand_model,
     const FingerMotionParams& params, std::span<const NoteStroke> strokes = {});
 

@@ -22,11 +22,11 @@ struct Need {
 };
 
 // How far a hand travels over [from, to] (mm, along its path).
-double travel_mm(const motion::HandPath& path, double from_s, double to_s, double step_s) {
+double travel_mm(const spline_motion::HandPath& path, double from_s, double to_s, double step_s) {
   double length = 0.0;
-  double x = motion::evaluate(path, from_s).x_mm;
+  double x = spline_motion::evaluate(path, from_s).x_mm;
   for (double t = from_s + step_s; t < to_s + 0.5 * step_s; t += step_s) {
-    const double next = motion::evaluate(path, t).x_mm;
+    const double next = spline_motion::evaluate(path, t).x_mm;
     length += std::abs(next - x);
     x = next;
   }
@@ -37,16 +37,16 @@ double travel_mm(const motion::HandPath& path, double from_s, double to_s, doubl
 // by less than crossed_mm. The hand over the other is the one that crosses it: of the two, the
 // one that travels further from an ease before the span to an ease after it (the right one when
 // neither moves).
-std::vector<Need> needs_from_paths(const motion::HandPath& right_path,
-                                   const motion::HandPath& left_path, double from_s, double to_s,
+std::vector<Need> needs_from_paths(const spline_motion::HandPath& right_path,
+                                   const spline_motion::HandPath& left_path, double from_s, double to_s,
                                    const PassOverParams& params) {
   std::vector<Need> needs;
   const auto steps = static_cast<std::size_t>(std::ceil((to_s - from_s) / params.sample_s));
   bool inside = false;
   for (std::size_t i = 0; i <= steps; ++i) {
     const double t = from_s + static_cast<double>(i) * params.sample_s;
-    const motion::HandState right = motion::evaluate(right_path, t);
-    const motion::HandState left = motion::evaluate(left_path, t);
+    const spline_motion::HandState right = spline_motion::evaluate(right_path, t);
+    const spline_motion::HandState left = spline_motion::evaluate(left_path, t);
     // > 0: the right hand's reference point to the right of the left's, as the hands sit.
     const double gap = right.x_mm - left.x_mm;
     const bool overlap = gap < params.gap_mm && gap > -params.crossed_mm;
@@ -70,8 +70,8 @@ std::vector<Need> needs_from_paths(const motion::HandPath& right_path,
 
 }  // namespace
 
-void plan_pass_over(FingerMotionPlan& plan, const motion::HandPath& right_path,
-                    const motion::HandPath& left_path, const PassOverParams& params) {
+void plan_pass_over(FingerMotionPlan& plan, const spline_motion::HandPath& right_path,
+                    const spline_motion::HandPath& left_path, const PassOverParams& params) {
   plan.right.pass_over.lifts.clear();
   plan.left.pass_over.lifts.clear();
   if (right_path.empty() || left_path.empty() || !(params.lift_mm > 0.0) ||

@@ -10,7 +10,7 @@ namespace tutti::finger_motion {
 
 // Fills plan.right.pass_over and plan.left.pass_over from the paths and the contacts, which must
 // be scheduled already (stroke starts and release ends known).
-void plan_pass_over(FingerMotionPlan& plan, const motion::HandPath& right_path,
-                    const motion::HandPath& left_path, const PassOverParams& params);
+void plan_pass_over(FingerMotionPlan& plan, const spline_motion::HandPath& right_path,
+                    const spline_motion::HandPath& left_path, const PassOverParams& params);
 
 }  // namespace tutti::finger_motion

@@ -29,8 +29,8 @@ namespace tutti::key_action {
 struct HumaneInputs {
   const music::Score* score = nullptr;
   const piano::ScorePlan* fingering = nullptr;
-  const motion::HandPath* right_path = nullptr;
-  const motion::HandPath* left_path = nullptr;
+  const spline_motion::HandPath* right_path = nullptr;
+  const spline_motion::HandPath* left_path = nullptr;
   const piano::Keyboard* keyboard = nullptr;
   const piano::HandModel* hand_model = nullptr;
   const finger_motion::FingerMotionParams* params = nullptr;  // content's, before the style

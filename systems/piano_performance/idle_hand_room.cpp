@@ -24,7 +24,7 @@ bool sorted_and_well_formed(std::span<const piano::HandCorridor> corridors) {
 
 piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corridors,
                                     std::span<const piano::HandCorridor> other_corridors,
-                                    const motion::HandPath& other, music::Hand side,
+                                    const spline_motion::HandPath& other, music::Hand side,
                                     const IdleRoomOptions& options) {
   piano::HandCorridors out(corridors.begin(), corridors.end());
   if (other.empty() || !(options.step_s > 0.0) || !(options.leave_s >= 0.0) ||
@@ -39,7 +39,7 @@ piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corrido
   // The other hand's thumb side at t: its reference point + thumb_mm toward this hand, or its
   // outermost key on that side while it plays, if further.
   const auto other_thumb_side = [&](double t) {
-    const double x = motion::evaluate(other, t).x_mm;
+    const double x = spline_motion::evaluate(other, t).x_mm;
     auto it = std::partition_point(other_corridors.begin(), other_corridors.end(),
                                    [&](const piano::HandCorridor& c) { return c.start_s <= t; });
     const bool playing = it != other_corridors.begin() && std::prev(it)->end_s >= t &&
@@ -53,7 +53,7 @@ piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corrido
   };
   const double room_mm = options.thumb_mm + options.clearance_mm;
   const auto crossed = [&](const piano::HandCorridor& c, double t) {
-    const double x = motion::evaluate(other, t).x_mm;
+    const double x = spline_motion::evaluate(other, t).x_mm;
     return below ? c.lo_mm > x : c.hi_mm < x;
   };
   // Corridors of step_s or less over [from_s, to_s], each keeping the hand room_mm short of the

@@ -34,7 +34,7 @@ struct IdleRoomOptions {
 // (an empty path = nothing added). `side`: this hand.
 piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corridors,
                                     std::span<const piano::HandCorridor> other_corridors,
-                                    const motion::HandPath& other, music::Hand side,
+                                    const spline_motion::HandPath& other, music::Hand side,
                                     const IdleRoomOptions& options = {});
 
 }  // namespace tutti::piano_performance

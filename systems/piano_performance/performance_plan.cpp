@@ -28,7 +28,7 @@ piano::HandCorridors well_formed(const piano::HandCorridors& corridors) {
 
 }  // namespace
 
-motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
+spline_motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
                                   const PerformanceOptions& options, HandReport& report,
                                   const OtherHand& other_hand) {
   const auto start = std::chrono::steady_clock::now();
@@ -40,11 +40,11 @@ motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
                            options.idle_room),
       options.repair);
   auto path = plan_hand_path(report.repair.corridors, options.path);
-  motion::HandPath result;
+  spline_motion::HandPath result;
   if (path) {
     result = std::move(*path);
-    report.against_used = motion::corridor_violations(result, report.repair.corridors);
-    report.against_original = motion::corridor_violations(result, well_formed(corridors));
+    report.against_used = spline_motion::corridor_violations(result, report.repair.corridors);
+    report.against_original = spline_motion::corridor_violations(result, well_formed(corridors));
   } else {
     report.path_error = path.error().message;
   }

@@ -25,7 +25,7 @@ namespace tutti::piano_performance {
 
 struct PerformanceOptions {
   piano::PlanOptions fingering;
-  motion::PlanOptions path;
+  spline_motion::PlanOptions path;
   RepairOptions repair;
   IdleRoomOptions idle_room;  // each hand out of the other's way while it does not play
 };
@@ -38,15 +38,15 @@ struct HandReport {
   // The smoothed path checked against the corridors it was planned through (the repaired ones:
   // zero violations by construction) and against the planner's original corridors (violations
   // there are exactly the repaired jump moments, where the hand leaves early / arrives late).
-  motion::PathReport against_used;
-  motion::PathReport against_original;
+  spline_motion::PathReport against_used;
+  spline_motion::PathReport against_original;
   std::size_t diagnostics = 0;  // fingering diagnostics of this hand
   std::string path_error;       // non-empty = the path could not be planned (path left empty)
   double path_ms = 0.0;         // wall time: repair + path + reports (not deterministic)
 };
 
 struct PerformanceReport {
-  motion::SmoothingMode smoothing = motion::SmoothingMode::monotone_quintic;  // both hands' paths
+  spline_motion::SmoothingMode smoothing = spline_motion::SmoothingMode::monotone_quintic;  // both hands' paths
   HandReport right;
   HandReport left;
   double fingering_ms = 0.0;  // wall time of plan_score (not deterministic)
@@ -54,8 +54,8 @@ struct PerformanceReport {
 
 struct PianoPerformancePlan {
   piano::ScorePlan fingering;
-  motion::HandPath right_path;
-  motion::HandPath left_path;
+  spline_motion::HandPath right_path;
+  spline_motion::HandPath left_path;
   PerformanceReport report;
 };
 
@@ -71,13 +71,13 @@ PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
 // The other hand, for one hand's path: its corridors and its path (null = plan the hand alone).
 struct OtherHand {
   std::span<const piano::HandCorridor> corridors;
-  const motion::HandPath* path = nullptr;
+  const spline_motion::HandPath* path = nullptr;
 };
 
 // One hand's repair + path + reports, from its corridors (exposed for tests and tools). With
 // the other hand's path, this hand's idle gaps keep out of its way (idle_hand_room.hpp,
 // options.idle_room; report.hand says which hand this is).
-motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
+spline_motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
                                   const PerformanceOptions& options, HandReport& report,
                                   const OtherHand& other_hand = {});
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 Error corridor_error(std::size_t index, const std::string& what) {
@@ -78,4 +78,4 @@ Result<std::vector<Portal>> corridor_portals(std::span<const piano::HandCorridor
   return portals;
 }
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -17,7 +17,7 @@
 #include <tutti/core/result.hpp>
 #include <tutti/piano_model/hand_corridor.hpp>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 
 struct Portal {
   double t_s = 0.0;
@@ -36,4 +36,4 @@ Status validate_corridors(std::span<const piano::HandCorridor> corridors);
 // jump) — the message names both corridors, the time and the ranges.
 Result<std::vector<Portal>> corridor_portals(std::span<const piano::HandCorridor> corridors);
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <utility>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 
 const char* to_string(SmoothingMode mode) {
   switch (mode) {
@@ -59,4 +59,4 @@ HandState evaluate(const HandPath& path, double t_s) noexcept {
   return {x, piece.velocity(dt), piece.acceleration(dt)};
 }
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -14,7 +14,7 @@
 
 #include <tutti/spline_motion/polynomial.hpp>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 
 enum class SmoothingMode {
   // DEFAULT. C2 piecewise quintic through the taut string at every corridor start/end, each
@@ -76,4 +76,4 @@ class HandPath {
 // Non-finite t_s is treated as "before the start" (NaN) or clamped (+-inf).
 HandState evaluate(const HandPath& path, double t_s) noexcept;
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 struct Extent {
@@ -86,4 +86,4 @@ PathReport corridor_violations(const HandPath& path, std::span<const piano::Hand
   return report;
 }
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

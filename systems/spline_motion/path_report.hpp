@@ -9,7 +9,7 @@
 #include <tutti/piano_model/hand_corridor.hpp>
 #include <tutti/spline_motion/hand_path.hpp>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 
 struct ReportOptions {
   int samples_per_corridor = 32;  // evaluate() at this many evenly spaced times per corridor
@@ -33,4 +33,4 @@ struct PathReport {
 PathReport corridor_violations(const HandPath& path, std::span<const piano::HandCorridor> corridors,
                                const ReportOptions& options = {});
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <map>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 // 10u^3 - 15u^4 + 6u^5 on u clamped to [0, 1] (as finger_motion's finger_chain.hpp writes it).
@@ -127,4 +127,4 @@ double evaluate_plateau_envelope(const PlateauEnvelope& path, double t_s) noexce
   return in;
 }
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 
 struct EnvelopeNeed {
   double from_s = 0.0;  // the need starts
@@ -36,4 +36,4 @@ PlateauEnvelope plan_plateau_envelope(std::vector<EnvelopeNeed> needs, double ra
 
 double evaluate_plateau_envelope(const PlateauEnvelope& path, double t_s) noexcept;
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

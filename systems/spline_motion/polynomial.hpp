@@ -7,7 +7,7 @@
 #include <cmath>
 #include <utility>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 
 struct Poly5 {
   std::array<double, 6> c{};  // x(dt) = c[0] + c[1] dt + ... + c[5] dt^5
@@ -81,4 +81,4 @@ struct Poly5 {
   }
 };
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

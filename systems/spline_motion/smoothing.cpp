@@ -7,7 +7,7 @@
 #include <sstream>
 #include <vector>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 // Knot slopes for a monotone interpolant: 0 at the ends and where the secants change sign or
@@ -147,4 +147,4 @@ Result<HandPath> plan_hand_path(std::span<const piano::HandCorridor> corridors,
   return smooth_taut_string(string, *portals, options.smoothing);
 }
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

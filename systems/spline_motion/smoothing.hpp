@@ -27,7 +27,7 @@
 #include <tutti/spline_motion/hand_path.hpp>
 #include <tutti/spline_motion/taut_string.hpp>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 
 struct PlanOptions {
   SmoothingMode smoothing = SmoothingMode::monotone_quintic;
@@ -43,4 +43,4 @@ Result<HandPath> plan_hand_path(std::span<const piano::HandCorridor> corridors,
 Result<HandPath> smooth_taut_string(const TautString& string, std::span<const Portal> portals,
                                     SmoothingMode mode);
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <limits>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 // (b - a) x (c - a). For b and c later than a: >= 0 <=> slope(a, c) >= slope(a, b).
@@ -197,4 +197,4 @@ std::vector<PathPoint> sample_at_portals(const TautString& string,
   return samples;
 }
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -24,7 +24,7 @@
 #include <tutti/piano_model/hand_corridor.hpp>
 #include <tutti/spline_motion/corridor_portals.hpp>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 
 struct PathPoint {
   double t_s = 0.0;
@@ -53,4 +53,4 @@ TautString taut_string(std::span<const Portal> portals);
 // The string's position at every portal time, in one O(n) merge (both are sorted).
 std::vector<PathPoint> sample_at_portals(const TautString& string, std::span<const Portal> portals);
 
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

@@ -17,7 +17,7 @@ using namespace tutti;
 struct Fixture {
   music::Score score;
   brass::BreathPlan breaths;
-  std::vector<ensemble::PerformerInput> inputs;
+  std::vector<ensemble_variation::PerformerInput> inputs;
 };
 
 Fixture make_fixture() {
@@ -32,9 +32,9 @@ Fixture make_fixture() {
     f.breaths.events.push_back(e);
   }
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    ensemble::PerformerInput in;
+    ensemble_variation::PerformerInput in;
     in.seed = seed;
-    in.params = ensemble::draw_variation(seed);
+    in.params = ensemble_variation::draw_variation(seed);
     in.lead = seed == 1;
     in.score = &f.score;
     in.breaths = &f.breaths;
@@ -48,19 +48,19 @@ Fixture make_fixture() {
 void BM_PlanQuartet(benchmark::State& state) {
   const Fixture f = make_fixture();
   for (auto _ : state) {
-    auto plan = ensemble::plan_ensemble(f.inputs);
+    auto plan = ensemble_variation::plan_ensemble(f.inputs);
     benchmark::DoNotOptimize(plan);
   }
 }
 
 void BM_EvaluateBodyMotion(benchmark::State& state) {
   const Fixture f = make_fixture();
-  const auto plan = ensemble::plan_ensemble(f.inputs);
+  const auto plan = ensemble_variation::plan_ensemble(f.inputs);
   std::uint64_t x = 12345;
   for (auto _ : state) {
     x = x * 6364136223846793005ull + 1442695040888963407ull;
     const double t = static_cast<double>(x >> 11) * 0x1.0p-53 * 600.0;
-    benchmark::DoNotOptimize(ensemble::evaluate_body_motion(plan->performers[0], t));
+    benchmark::DoNotOptimize(ensemble_variation::evaluate_body_motion(plan->performers[0], t));
   }
 }
 

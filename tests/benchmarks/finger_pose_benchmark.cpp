@@ -19,7 +19,7 @@ using namespace tutti;
 
 struct Fixture {
   finger_motion::FingerMotionPlan plan;
-  motion::HandPath path;
+  spline_motion::HandPath path;
   double end_s = 0.0;
 };
 
@@ -44,11 +44,11 @@ const Fixture& fixture() {
       plan.fingers.push_back(1 + static_cast<int>(rng() % 5));
       plan.hands.push_back(music::Hand::right);
     }
-    motion::Poly5 piece;
+    spline_motion::Poly5 piece;
     piece.c[0] = 700.0;
     piece.c[1] = 0.1;
     Fixture out;
-    out.path = motion::HandPath(motion::SmoothingMode::none, {0.0, 400.0}, {piece}, 740.0, true);
+    out.path = spline_motion::HandPath(spline_motion::SmoothingMode::none, {0.0, 400.0}, {piece}, 740.0, true);
     auto planned = finger_motion::plan_finger_motion(score, plan, out.path, out.path, *keyboard,
                                                      *hand, *params);
     if (!planned) std::abort();

@@ -15,9 +15,9 @@
 
 namespace {
 
-using tutti::motion::HandPath;
-using tutti::motion::PlanOptions;
-using tutti::motion::SmoothingMode;
+using tutti::spline_motion::HandPath;
+using tutti::spline_motion::PlanOptions;
+using tutti::spline_motion::SmoothingMode;
 using tutti::piano::HandCorridor;
 using tutti::piano::HandCorridors;
 
@@ -44,7 +44,7 @@ HandCorridors make_corridors(int count, std::uint64_t seed = 1) {
 void BM_TautString(benchmark::State& state) {
   const HandCorridors corridors = make_corridors(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    auto s = tutti::motion::taut_string(corridors);
+    auto s = tutti::spline_motion::taut_string(corridors);
     benchmark::DoNotOptimize(s.ok());
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
@@ -55,11 +55,11 @@ void BM_PlanHandPath(benchmark::State& state) {
   const HandCorridors corridors = make_corridors(static_cast<int>(state.range(0)));
   const PlanOptions options{static_cast<SmoothingMode>(state.range(1))};
   for (auto _ : state) {
-    auto path = tutti::motion::plan_hand_path(corridors, options);
+    auto path = tutti::spline_motion::plan_hand_path(corridors, options);
     benchmark::DoNotOptimize(path.ok());
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
-  state.SetLabel(tutti::motion::to_string(options.smoothing));
+  state.SetLabel(tutti::spline_motion::to_string(options.smoothing));
 }
 BENCHMARK(BM_PlanHandPath)
     ->Args({1'000, static_cast<int>(SmoothingMode::monotone_quintic)})
@@ -71,14 +71,14 @@ BENCHMARK(BM_PlanHandPath)
 // Random times (cache-cold binary search on big paths) and sequential frames (60 fps playback).
 void BM_EvaluateRandom(benchmark::State& state) {
   const HandCorridors corridors = make_corridors(static_cast<int>(state.range(0)));
-  const HandPath path = tutti::motion::plan_hand_path(corridors).value();
+  const HandPath path = tutti::spline_motion::plan_hand_path(corridors).value();
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(path.start_s(), path.end_s());
   std::vector<double> times(4096);
   for (double& t : times) t = u(rng);
   std::size_t i = 0;
   for (auto _ : state) {
-    const auto s = tutti::motion::evaluate(path, times[i++ & 4095]);
+    const auto s = tutti::spline_motion::evaluate(path, times[i++ & 4095]);
     benchmark::DoNotOptimize(s);
   }
   state.SetItemsProcessed(state.iterations());
@@ -87,10 +87,10 @@ BENCHMARK(BM_EvaluateRandom)->Arg(1'000)->Arg(1'000'000);
 
 void BM_EvaluateFrames(benchmark::State& state) {
   const HandCorridors corridors = make_corridors(static_cast<int>(state.range(0)));
-  const HandPath path = tutti::motion::plan_hand_path(corridors).value();
+  const HandPath path = tutti::spline_motion::plan_hand_path(corridors).value();
   double t = path.start_s();
   for (auto _ : state) {
-    const auto s = tutti::motion::evaluate(path, t);
+    const auto s = tutti::spline_motion::evaluate(path, t);
     benchmark::DoNotOptimize(s);
     t += 1.0 / 60.0;
     if (t > path.end_s()) t = path.start_s();

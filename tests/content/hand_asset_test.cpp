@@ -36,8 +36,8 @@ FingerMotionPlan rest_plan() {
       finger_motion::finger_motion_params_path(content_dir()));
   EXPECT_TRUE(params.ok());
   auto plan =
-      finger_motion::plan_finger_motion(music::Score{}, piano::ScorePlan{}, motion::HandPath{},
-                                        motion::HandPath{}, *keyboard, *hands, *params);
+      finger_motion::plan_finger_motion(music::Score{}, piano::ScorePlan{}, spline_motion::HandPath{},
+                                        spline_motion::HandPath{}, *keyboard, *hands, *params);
   EXPECT_TRUE(plan.ok()) << plan.error().message;
   return *plan;
 }

@@ -49,9 +49,9 @@ const PianoRig& piano_rig(const Stage& stage) { return stage.world().get<PianoRi
 const PianistPlan& pianist_plan(const Stage& stage) {
   return stage.world().get<PianistPlan>(pianist(stage));
 }
-const ensemble::EnsemblePlan* ensemble_of(const Stage& stage) {
+const ensemble_variation::EnsemblePlan* ensemble_of(const Stage& stage) {
   const auto* handle =
-      stage.world().try_get<ensemble::EnsembleMotionHandle>(brass_player(stage, 0));
+      stage.world().try_get<ensemble_variation::EnsembleMotionHandle>(brass_player(stage, 0));
   return handle != nullptr ? handle->plan.get() : nullptr;
 }
 const PlacedModel& placed(const Stage& stage, ecs::Entity instance) {
@@ -116,13 +116,13 @@ TEST(Stage, PoseAtTIsAPureFunctionOfT) {
 TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
   auto stage = build(kSource / "content" / "scenes" / "quartet.json");
   ASSERT_TRUE(stage);
-  const ensemble::EnsemblePlan* plan = ensemble_of(*stage);
+  const ensemble_variation::EnsemblePlan* plan = ensemble_of(*stage);
   ASSERT_TRUE(plan);
   ASSERT_EQ(plan->performers.size(), 4u);
   EXPECT_EQ(plan->lead, 0);  // "Trumpet 1 leads"
   // No cue list in the scene: one cue, at the first entrance.
   ASSERT_EQ(plan->performers[0].cues.size(), 1u);
-  const ensemble::CueMotion& cue = plan->performers[0].cues.front();
+  const ensemble_variation::CueMotion& cue = plan->performers[0].cues.front();
   EXPECT_NEAR(cue.dip_s, plan->entrance_s, 1e-9);
   // The lead's bell at the top of the cue, in the rendered pose: the generated trumpet's bell
   // points along its -Z, which rises in the world as the bell lifts.
@@ -394,16 +394,16 @@ TEST(Stage, AStrainExpressionTightensTheFace) {
   evaluate_stage(*stage, 20.0);
   const auto outside = poses(*stage);
 
-  ensemble::EnsemblePlan edited = *ensemble_of(*stage);
-  ensemble::ExpressionSpan span;
-  span.kind = ensemble::ExpressionKind::strain;
+  ensemble_variation::EnsemblePlan edited = *ensemble_of(*stage);
+  ensemble_variation::ExpressionSpan span;
+  span.kind = ensemble_variation::ExpressionKind::strain;
   span.start_s = 10.0;
   span.end_s = 14.0;
   span.amount = 1.0;
   edited.performers[1].expressions = {span};
-  auto* handle = stage->world().try_get<ensemble::EnsembleMotionHandle>(brass_player(*stage, 1));
+  auto* handle = stage->world().try_get<ensemble_variation::EnsembleMotionHandle>(brass_player(*stage, 1));
   ASSERT_NE(handle, nullptr);
-  handle->plan = std::make_shared<const ensemble::EnsemblePlan>(std::move(edited));
+  handle->plan = std::make_shared<const ensemble_variation::EnsemblePlan>(std::move(edited));
   const float strained = tension(12.0);
   EXPECT_GE(strained, 0.8f - 1e-6f);
   EXPECT_GT(strained, plain) << "the face was already at " << plain;

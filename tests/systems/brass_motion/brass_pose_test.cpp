@@ -176,10 +176,10 @@ TEST(BrassPose, TheBodyIsSetForTheSlidesReachAheadOfItAndSmoothly) {
   const double ramp = setup().params.slide_reach_ramp_s;
   const double dt = 1e-3;
   double fastest = 0.0, slide_fastest = 0.0;
-  double previous = tutti::motion::evaluate_plateau_envelope(plan.slide_reach, 0.0);
+  double previous = tutti::spline_motion::evaluate_plateau_envelope(plan.slide_reach, 0.0);
   double previous_slide = evaluate_brass_pose(plan, 0.0).slide_mm;
   for (double t = dt; t < line.notes.back().offset_s + 0.5; t += dt) {
-    const double reach = tutti::motion::evaluate_plateau_envelope(plan.slide_reach, t);
+    const double reach = tutti::spline_motion::evaluate_plateau_envelope(plan.slide_reach, t);
     const double slide = evaluate_brass_pose(plan, t).slide_mm;
     ASSERT_GE(reach, slide - 1e-3) << t;  // slide_mm is a float
     fastest = std::max(fastest, std::abs(reach - previous) / dt);

@@ -10,7 +10,7 @@
 #include "ensemble_fixture.hpp"
 #include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 namespace {
 
 TEST(EvaluateBodyMotionAllocation, NoAllocationPerCallWithCuesAndExpressions) {
@@ -52,4 +52,4 @@ TEST(EvaluateBodyMotionAllocation, NoAllocationPerCallWithCuesAndExpressions) {
 }
 
 }  // namespace
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

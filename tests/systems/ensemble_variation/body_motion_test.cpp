@@ -14,7 +14,7 @@
 #include <tutti/ensemble_variation/ensemble_plan.hpp>
 #include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 namespace {
 
 using test::breaths;
@@ -201,4 +201,4 @@ TEST(BodyMotion, APerformerWithoutAScoreIsAnError) {
 }
 
 }  // namespace
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

@@ -18,7 +18,7 @@
 #include <tutti/ensemble_variation/ensemble_variation_system.hpp>
 #include <tutti/ensemble_variation/evaluate_body_motion.hpp>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 namespace {
 
 using test::four_four;
@@ -302,4 +302,4 @@ TEST(Expressions, TheSystemShowsTheExpressedStrainOfTheBreath) {
 }
 
 }  // namespace
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

@@ -11,7 +11,7 @@
 #include <tutti/ensemble_variation/ensemble_plan.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::ensemble::test {
+namespace tutti::ensemble_variation::test {
 
 inline music::Score four_four() {
   music::Score score;
@@ -49,4 +49,4 @@ inline PerformerInput player(const music::Score& score, const brass::BreathPlan&
   return in;
 }
 
-}  // namespace tutti::ensemble::test
+}  // namespace tutti::ensemble_variation::test

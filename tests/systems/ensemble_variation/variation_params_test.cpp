@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace tutti::ensemble {
+namespace tutti::ensemble_variation {
 namespace {
 
 std::vector<double> fields(const VariationParams& p) {
@@ -46,4 +46,4 @@ TEST(VariationParams, SceneValuesOverrideOnlyTheirFields) {
 }
 
 }  // namespace
-}  // namespace tutti::ensemble
+}  // namespace tutti::ensemble_variation

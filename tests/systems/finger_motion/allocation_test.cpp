@@ -16,7 +16,7 @@ TEST(EvaluateHandPoseAllocation, NoAllocationPerCall) {
     notes.push_back({48 + (i * 7) % 24, 0.2 * i, 0.2 * i + 0.3, 1 + i % 5});
   }
   const FingerMotionPlan plan = test::plan_notes(notes, 700, 0);
-  const motion::HandPath path = test::constant_path(700);
+  const spline_motion::HandPath path = test::constant_path(700);
   HandPose pose;
   const long before = tutti::test::allocation_count();
   double sum = 0;

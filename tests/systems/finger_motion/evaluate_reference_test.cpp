@@ -112,7 +112,7 @@ FingerPose reference_finger_pose(const FingerMotionPlan& plan, HandSide side, st
   out.key = depth > 0.0 && touching != nullptr ? touching->key : -1;
   out.tip_x_mm = x;
   // The hand in toward the fallboard for black keys a short finger cannot reach otherwise.
-  const double hand_in = tutti::motion::evaluate_plateau_envelope(hand.reach_in, t);
+  const double hand_in = tutti::spline_motion::evaluate_plateau_envelope(hand.reach_in, t);
   out.tip_y_mm = g.root_y_mm + hand_in + reach_y;
   out.tip_z_mm = z + g.pad_drop_mm;
   out.contact_z_mm = z;
@@ -162,12 +162,12 @@ TEST(EvaluateHandPoseReference, PrecomputedPlanGivesTheModelsPose) {
   }
   const double end_s = t + 3.0;
   // A hand that drifts, so rest lines and release offsets move.
-  motion::Poly5 piece;
+  spline_motion::Poly5 piece;
   piece.c[0] = 650.0;
   piece.c[1] = 0.2;
-  const motion::HandPath right(motion::SmoothingMode::none, {0.0, end_s}, {piece},
+  const spline_motion::HandPath right(spline_motion::SmoothingMode::none, {0.0, end_s}, {piece},
                                650.0 + 0.2 * end_s, true);
-  const motion::HandPath left = test::constant_path(350.0);
+  const spline_motion::HandPath left = test::constant_path(350.0);
   const test::TestScore s = test::make_score(notes);
   const Models& m = test::models();
   auto plan = plan_finger_motion(s.score, s.plan, right, left, m.keyboard, m.hand, m.params);
@@ -189,7 +189,7 @@ TEST(EvaluateHandPoseReference, PrecomputedPlanGivesTheModelsPose) {
   std::size_t compared = 0;
   HandPose pose;
   for (const HandFingerPlan* hand : {&plan->right, &plan->left}) {
-    const motion::HandPath& path = hand->side == HandSide::left ? left : right;
+    const spline_motion::HandPath& path = hand->side == HandSide::left ? left : right;
     for (const double time : times) {
       evaluate_hand_pose(*plan, path, hand->side, time, pose);
       for (std::size_t f = 0; f < 5; ++f) {

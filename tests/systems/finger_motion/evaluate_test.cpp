@@ -44,7 +44,7 @@ FingerMotionPlan scale_plan() {
 
 TEST(EvaluateHandPose, SameTimeSameBitsInAnyOrder) {
   const FingerMotionPlan plan = scale_plan();
-  const motion::HandPath path = test::constant_path(test::models().keyboard.x_mm(64));
+  const spline_motion::HandPath path = test::constant_path(test::models().keyboard.x_mm(64));
   HandPose first;
   HandPose again;
   HandPose other;
@@ -67,7 +67,7 @@ TEST(EvaluateHandPose, SameTimeSameBitsInAnyOrder) {
 
 TEST(EvaluateHandPose, EveryNoteIsPressedAtItsOnsetAndValuesAreFinite) {
   const FingerMotionPlan plan = scale_plan();
-  const motion::HandPath path = test::constant_path(test::models().keyboard.x_mm(64));
+  const spline_motion::HandPath path = test::constant_path(test::models().keyboard.x_mm(64));
   HandPose pose;
   for (std::size_t f = 0; f < 5; ++f) {
     for (const KeyContact& c : plan.right.fingers[f]) {
@@ -91,7 +91,7 @@ TEST(EvaluateHandPose, EveryNoteIsPressedAtItsOnsetAndValuesAreFinite) {
 
 TEST(EvaluateHandPose, NonFiniteTimeIsHarmless) {
   const FingerMotionPlan plan = scale_plan();
-  const motion::HandPath path = test::constant_path(600);
+  const spline_motion::HandPath path = test::constant_path(600);
   HandPose pose;
   for (double t :
        {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),

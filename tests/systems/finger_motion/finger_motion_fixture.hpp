@@ -40,10 +40,10 @@ inline const Models& models() {
 }
 
 // A hand that stays at x_mm for 1000 s.
-inline motion::HandPath constant_path(double x_mm) {
-  motion::Poly5 piece;
+inline spline_motion::HandPath constant_path(double x_mm) {
+  spline_motion::Poly5 piece;
   piece.c[0] = x_mm;
-  return motion::HandPath(motion::SmoothingMode::none, {0.0, 1000.0}, {piece}, x_mm, true);
+  return spline_motion::HandPath(spline_motion::SmoothingMode::none, {0.0, 1000.0}, {piece}, x_mm, true);
 }
 
 struct TestNote {

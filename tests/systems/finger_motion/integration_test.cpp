@@ -35,9 +35,9 @@ TEST(FingerMotionIntegration, OdeToJoy) {
   ASSERT_TRUE(model.ok()) << model.error().message;
   auto fingering = piano::plan_score(*score, *model);
   ASSERT_TRUE(fingering.ok()) << fingering.error().message;
-  auto right = motion::plan_hand_path(trimmed(fingering->right.corridors));
+  auto right = spline_motion::plan_hand_path(trimmed(fingering->right.corridors));
   ASSERT_TRUE(right.ok()) << right.error().message;
-  auto left = motion::plan_hand_path(trimmed(fingering->left.corridors));
+  auto left = spline_motion::plan_hand_path(trimmed(fingering->left.corridors));
   ASSERT_TRUE(left.ok()) << left.error().message;
   auto plan = plan_finger_motion(*score, *fingering, *right, *left, model->keyboard, model->hand,
                                  test::models().params);
@@ -45,7 +45,7 @@ TEST(FingerMotionIntegration, OdeToJoy) {
 
   std::size_t contacts = 0;
   for (const HandFingerPlan* hand : {&plan->right, &plan->left}) {
-    const motion::HandPath& path = hand->side == components::HandSide::left ? *left : *right;
+    const spline_motion::HandPath& path = hand->side == components::HandSide::left ? *left : *right;
     HandPose pose;
     for (std::size_t f = 0; f < 5; ++f) {
       for (const KeyContact& c : hand->fingers[f]) {

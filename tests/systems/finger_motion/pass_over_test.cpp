@@ -17,22 +17,22 @@ namespace {
 using components::HandSide;
 
 // Still at from_mm until move_s, then a linear move to to_mm over move_for_s, then still.
-motion::HandPath leap_path(double from_mm, double to_mm, double move_s, double move_for_s) {
-  motion::Poly5 before;
+spline_motion::HandPath leap_path(double from_mm, double to_mm, double move_s, double move_for_s) {
+  spline_motion::Poly5 before;
   before.c[0] = from_mm;
-  motion::Poly5 move;
+  spline_motion::Poly5 move;
   move.c[0] = from_mm;
   move.c[1] = (to_mm - from_mm) / move_for_s;
-  motion::Poly5 after;
+  spline_motion::Poly5 after;
   after.c[0] = to_mm;
-  return motion::HandPath(motion::SmoothingMode::none, {0.0, move_s, move_s + move_for_s, 1000.0},
+  return spline_motion::HandPath(spline_motion::SmoothingMode::none, {0.0, move_s, move_s + move_for_s, 1000.0},
                           {before, move, after}, to_mm, true);
 }
 
 struct Planned {
   FingerMotionPlan plan;
-  motion::HandPath right;
-  motion::HandPath left;
+  spline_motion::HandPath right;
+  spline_motion::HandPath left;
 };
 
 // After the Polonaise op. 1 no. 4 at 15 s: the left hand holds C#4-E4-G4 while the right hand
@@ -114,7 +114,7 @@ TEST(PassOver, AFingerOfTheLiftedHandStillStrikesItsKeyBottom) {
   // Still lifted at the onset: the hands overlap where it lands.
   const double lift = evaluate_pass_over(p.plan.right.pass_over, c.onset_s);
   FingerPose pose;
-  evaluate_finger_pose(p.plan, HandSide::right, 2, motion::evaluate(p.right, c.onset_s).x_mm,
+  evaluate_finger_pose(p.plan, HandSide::right, 2, spline_motion::evaluate(p.right, c.onset_s).x_mm,
                        c.onset_s, pose);
   EXPECT_EQ(pose.key, 54);
   EXPECT_EQ(pose.press_depth, 1.0);

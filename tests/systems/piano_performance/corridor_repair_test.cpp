@@ -20,17 +20,17 @@ using piano::HandCorridor;
 TEST(CorridorRepair, LegatoJumpOpensAGapOnBothSides) {
   // 1 s and 0.1 s corridors touching at t=1 with disjoint ranges.
   const piano::HandCorridors in{{0.0, 1.0, 0.0, 10.0}, {1.0, 1.1, 50.0, 60.0}};
-  ASSERT_FALSE(motion::corridor_portals(in).ok());  // the gap this repair exists for
+  ASSERT_FALSE(spline_motion::corridor_portals(in).ok());  // the gap this repair exists for
   const CorridorRepair r = repair_corridors(in);
   EXPECT_EQ(r.jumps, 1);
   EXPECT_EQ(r.dropped, 0);
   ASSERT_EQ(r.corridors.size(), 2u);
   EXPECT_DOUBLE_EQ(r.corridors[0].end_s, 1.0 - 0.030);    // 30 ms cap
   EXPECT_DOUBLE_EQ(r.corridors[1].start_s, 1.0 + 0.025);  // 25% of 100 ms
-  auto path = motion::plan_hand_path(r.corridors);
+  auto path = spline_motion::plan_hand_path(r.corridors);
   ASSERT_TRUE(path.ok()) << path.error().message;
-  EXPECT_EQ(motion::corridor_violations(*path, r.corridors).violating_corridors, 0u);
-  EXPECT_GT(motion::corridor_violations(*path, in).violating_corridors, 0u);
+  EXPECT_EQ(spline_motion::corridor_violations(*path, r.corridors).violating_corridors, 0u);
+  EXPECT_GT(spline_motion::corridor_violations(*path, in).violating_corridors, 0u);
 }
 
 TEST(CorridorRepair, OverlappingRangesAreLeftAlone) {
@@ -49,7 +49,7 @@ TEST(CorridorRepair, ZeroLengthCorridorStaysValid) {
   EXPECT_EQ(r.jumps, 2);
   ASSERT_EQ(r.corridors.size(), 3u);
   EXPECT_EQ(r.corridors[1].start_s, r.corridors[1].end_s);
-  EXPECT_TRUE(motion::corridor_portals(r.corridors).ok());
+  EXPECT_TRUE(spline_motion::corridor_portals(r.corridors).ok());
 }
 
 TEST(CorridorRepair, TwoZeroLengthDisjointAtOneInstantDropsTheLater) {
@@ -58,7 +58,7 @@ TEST(CorridorRepair, TwoZeroLengthDisjointAtOneInstantDropsTheLater) {
   EXPECT_EQ(r.dropped, 1);
   ASSERT_EQ(r.corridors.size(), 1u);
   EXPECT_EQ(r.origin[0], 0u);
-  EXPECT_TRUE(motion::corridor_portals(r.corridors).ok());
+  EXPECT_TRUE(spline_motion::corridor_portals(r.corridors).ok());
 }
 
 TEST(CorridorRepair, ContractViolationsAreFixed) {
@@ -70,7 +70,7 @@ TEST(CorridorRepair, ContractViolationsAreFixed) {
   EXPECT_EQ(r.dropped, 1);
   EXPECT_GE(r.sanitized, 2);
   ASSERT_EQ(r.corridors.size(), 2u);
-  EXPECT_TRUE(motion::corridor_portals(r.corridors).ok());
+  EXPECT_TRUE(spline_motion::corridor_portals(r.corridors).ok());
   EXPECT_FALSE(r.notes.empty());
 }
 
@@ -81,7 +81,7 @@ TEST(CorridorRepair, MalformedCorridorsStillGiveAPathAndAReport) {
                                 {1.2, 2.0, 100.0, 110.0},
                                 {3.0, 4.0, -inf, 5.0}};
   HandReport report;
-  const motion::HandPath path = plan_hand_motion(in, PerformanceOptions{}, report);
+  const spline_motion::HandPath path = plan_hand_motion(in, PerformanceOptions{}, report);
   EXPECT_TRUE(report.path_error.empty()) << report.path_error;
   EXPECT_FALSE(path.empty());
   EXPECT_EQ(report.against_used.violating_corridors, 0u);

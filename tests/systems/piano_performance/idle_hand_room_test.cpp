@@ -28,10 +28,10 @@ HandCorridor played(double from_s, double to_s, double lo, double hi, double key
   return c;
 }
 
-motion::HandPath path_through(const HandCorridors& corridors) {
-  auto path = motion::plan_hand_path(corridors);
+spline_motion::HandPath path_through(const HandCorridors& corridors) {
+  auto path = spline_motion::plan_hand_path(corridors);
   EXPECT_TRUE(path.ok()) << path.error().message;
-  return path.ok() ? *path : motion::HandPath{};
+  return path.ok() ? *path : spline_motion::HandPath{};
 }
 
 // The left hand plays at 500 mm, rests 1 s, plays at 500 mm again; meanwhile the right hand
@@ -45,18 +45,18 @@ TEST(IdleHandRoom, TheIdleLeftHandMakesRoomForTheRightThumb) {
   const HandCorridors right{played(0.0, 0.6, 700.0, 720.0, 700.0, 760.0),
                             played(0.8, 1.2, 560.0, 560.0, 520.0, 600.0),
                             played(1.4, 2.0, 700.0, 720.0, 700.0, 760.0)};
-  const motion::HandPath right_path = path_through(right);
+  const spline_motion::HandPath right_path = path_through(right);
   const HandCorridors with_room = with_idle_room(left, right, right_path, music::Hand::left);
   ASSERT_GT(with_room.size(), left.size());
   for (std::size_t i = 1; i < with_room.size(); ++i) {
     EXPECT_LE(with_room[i - 1].end_s, with_room[i].start_s) << i;  // still sorted, no overlap
   }
-  const motion::HandPath alone = path_through(left);
-  const motion::HandPath apart = path_through(with_room);
-  EXPECT_NEAR(motion::evaluate(alone, 1.0).x_mm, 500.0, 1e-6);
-  EXPECT_LE(motion::evaluate(apart, 1.0).x_mm, 560.0 - 47.0 - 23.5 - 47.0 + 1e-6);
+  const spline_motion::HandPath alone = path_through(left);
+  const spline_motion::HandPath apart = path_through(with_room);
+  EXPECT_NEAR(spline_motion::evaluate(alone, 1.0).x_mm, 500.0, 1e-6);
+  EXPECT_LE(spline_motion::evaluate(apart, 1.0).x_mm, 560.0 - 47.0 - 23.5 - 47.0 + 1e-6);
   // Its own keys are still reached: every original corridor holds.
-  EXPECT_EQ(motion::corridor_violations(apart, left).violating_corridors, 0u);
+  EXPECT_EQ(spline_motion::corridor_violations(apart, left).violating_corridors, 0u);
 }
 
 // The right hand far above (its thumb side 300 mm away): the left hand's path is unchanged.
@@ -64,11 +64,11 @@ TEST(IdleHandRoom, AFarHandChangesNothing) {
   const HandCorridors left{played(0.0, 0.5, 480.0, 500.0, 500.0, 500.0),
                            played(1.5, 2.0, 500.0, 520.0, 500.0, 500.0)};
   const HandCorridors right{played(0.0, 2.0, 900.0, 920.0, 880.0, 960.0)};
-  const motion::HandPath right_path = path_through(right);
-  const motion::HandPath alone = path_through(left);
-  const motion::HandPath apart = path_through(with_idle_room(left, right, right_path, music::Hand::left));
+  const spline_motion::HandPath right_path = path_through(right);
+  const spline_motion::HandPath alone = path_through(left);
+  const spline_motion::HandPath apart = path_through(with_idle_room(left, right, right_path, music::Hand::left));
   for (double t = 0.0; t <= 2.0; t += 0.05) {
-    EXPECT_NEAR(motion::evaluate(apart, t).x_mm, motion::evaluate(alone, t).x_mm, 1e-6) << t;
+    EXPECT_NEAR(spline_motion::evaluate(apart, t).x_mm, spline_motion::evaluate(alone, t).x_mm, 1e-6) << t;
   }
 }
 
@@ -78,7 +78,7 @@ TEST(IdleHandRoom, ACrossingHandKeepsNoRoom) {
   const HandCorridors left{played(0.0, 3.0, 600.0, 620.0, 560.0, 660.0)};
   const HandCorridors right{played(0.0, 0.5, 900.0, 920.0, 880.0, 960.0),
                             played(1.5, 2.0, 400.0, 420.0, 380.0, 440.0)};
-  const motion::HandPath left_path = path_through(left);
+  const spline_motion::HandPath left_path = path_through(left);
   const HandCorridors with_room = with_idle_room(right, left, left_path, music::Hand::right);
   // Only the room after the crossing's end is not added either (the last corridor is crossed).
   EXPECT_EQ(with_room.size(), right.size());
@@ -88,7 +88,7 @@ TEST(IdleHandRoom, ACrossingHandKeepsNoRoom) {
 // any input without the other hand's path.
 TEST(IdleHandRoom, MalformedInputIsReturnedAsItIs) {
   const HandCorridors right{played(0.0, 2.0, 560.0, 580.0, 520.0, 600.0)};
-  const motion::HandPath right_path = path_through(right);
+  const spline_motion::HandPath right_path = path_through(right);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const HandCorridors& bad :
        {HandCorridors{{1.0, 2.0, 0.0, 10.0}, {0.0, 0.5, 0.0, 10.0}},
@@ -99,7 +99,7 @@ TEST(IdleHandRoom, MalformedInputIsReturnedAsItIs) {
   }
   const HandCorridors left{played(0.0, 0.5, 480.0, 500.0, 500.0, 500.0),
                            played(1.5, 2.0, 500.0, 520.0, 500.0, 500.0)};
-  EXPECT_EQ(with_idle_room(left, right, motion::HandPath{}, music::Hand::left).size(), left.size());
+  EXPECT_EQ(with_idle_room(left, right, spline_motion::HandPath{}, music::Hand::left).size(), left.size());
 }
 
 }  // namespace

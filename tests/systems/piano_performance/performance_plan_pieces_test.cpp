@@ -178,9 +178,9 @@ TEST(PerformancePlanPieces, DefaultSmoothingNeverLeavesACorridorNaturalSplineRep
   TUTTI_REQUIRE_TESTDATA();
   PerformanceOptions quintic;
   quintic.fingering.pins_from_marks = false;
-  quintic.path.smoothing = motion::SmoothingMode::monotone_quintic;
+  quintic.path.smoothing = spline_motion::SmoothingMode::monotone_quintic;
   PerformanceOptions natural = quintic;
-  natural.path.smoothing = motion::SmoothingMode::natural_spline;
+  natural.path.smoothing = spline_motion::SmoothingMode::natural_spline;
 
   std::map<std::string, std::pair<std::size_t, PieceFigures>> per_collection;
   std::vector<std::pair<std::string, PieceFigures>> rows;
@@ -191,7 +191,7 @@ TEST(PerformancePlanPieces, DefaultSmoothingNeverLeavesACorridorNaturalSplineRep
     auto plan = plan_performance(piece.score, model(), quintic);
     ASSERT_TRUE(plan.ok()) << plan.error().message;
     const PerformanceReport& report = plan->report;
-    EXPECT_EQ(report.smoothing, motion::SmoothingMode::monotone_quintic);
+    EXPECT_EQ(report.smoothing, spline_motion::SmoothingMode::monotone_quintic);
     if (report.right.notes + report.left.notes == 0) {
       ++without_notes;
       std::printf("no notes a hand plays: %s (%zu notes)\n", piece.label.c_str(),
@@ -210,11 +210,11 @@ TEST(PerformancePlanPieces, DefaultSmoothingNeverLeavesACorridorNaturalSplineRep
                             right ? &plan->left_path : &plan->right_path};
       HandReport natural_report;
       natural_report.hand = hand->hand;
-      const motion::HandPath natural_path =
+      const spline_motion::HandPath natural_path =
           plan_hand_motion(corridors_of(*plan, hand->hand), natural, natural_report, other);
       EXPECT_EQ(natural_report.events, hand->events);
       if (natural_report.path_error.empty() && !hand->repair.corridors.empty()) {
-        EXPECT_EQ(natural_path.mode(), motion::SmoothingMode::natural_spline);
+        EXPECT_EQ(natural_path.mode(), spline_motion::SmoothingMode::natural_spline);
       }
       f.add(figures(*hand), figures(natural_report));
     }
@@ -281,9 +281,9 @@ TEST(PerformancePlanPieces, DefaultSmoothingStaysInsideUnderOtherSettings) {
       for (const HandReport* hand : {&plan->report.right, &plan->report.left}) {
         expect_inside(*hand);
         if (std::string_view(setting.weights) == "paper") paper_jumps += hand->repair.jumps;
-        for (const motion::SmoothingMode mode :
-             {motion::SmoothingMode::pchip, motion::SmoothingMode::none}) {
-          SCOPED_TRACE(motion::to_string(mode));
+        for (const spline_motion::SmoothingMode mode :
+             {spline_motion::SmoothingMode::pchip, spline_motion::SmoothingMode::none}) {
+          SCOPED_TRACE(spline_motion::to_string(mode));
           PerformanceOptions other = options;
           other.path.smoothing = mode;
           HandReport report;

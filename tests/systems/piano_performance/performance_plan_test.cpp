@@ -97,7 +97,7 @@ TEST(PerformancePlan, Deterministic) {
   EXPECT_EQ(a->fingering.fingers, b->fingering.fingers);
   ASSERT_EQ(a->right_path.knot_times().size(), b->right_path.knot_times().size());
   for (double t = 0.0; t < score->end_s; t += 0.01) {
-    EXPECT_EQ(motion::evaluate(a->right_path, t).x_mm, motion::evaluate(b->right_path, t).x_mm);
+    EXPECT_EQ(spline_motion::evaluate(a->right_path, t).x_mm, spline_motion::evaluate(b->right_path, t).x_mm);
   }
 }
 

@@ -14,7 +14,7 @@
 #include <tutti/spline_motion/corridor_portals.hpp>
 #include <tutti/spline_motion/taut_string.hpp>
 
-namespace tutti::motion::testing {
+namespace tutti::spline_motion::testing {
 
 using piano::HandCorridor;
 using piano::HandCorridors;
@@ -110,4 +110,4 @@ inline std::string certificate(const TautString& s, std::span<const Portal> port
   return "";
 }
 
-}  // namespace tutti::motion::testing
+}  // namespace tutti::spline_motion::testing

@@ -6,7 +6,7 @@
 
 #include <limits>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 using piano::HandCorridor;
@@ -74,4 +74,4 @@ TEST(CorridorPortals, ValidationNamesTheIndex) {
 }
 
 }  // namespace
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

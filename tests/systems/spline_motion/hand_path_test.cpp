@@ -11,7 +11,7 @@
 #include "corridor_cases.hpp"
 #include <tutti/spline_motion/smoothing.hpp>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 using piano::HandCorridors;
@@ -188,4 +188,4 @@ TEST(HandPath, KnotsTooCloseForPolynomialsAreAnError) {
 }
 
 }  // namespace
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

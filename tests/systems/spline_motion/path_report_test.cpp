@@ -8,7 +8,7 @@
 #include "corridor_cases.hpp"
 #include <tutti/spline_motion/smoothing.hpp>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 using piano::HandCorridors;
@@ -92,4 +92,4 @@ TEST(PathReport, NaturalSplineOvershootHandMade) {
 }
 
 }  // namespace
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

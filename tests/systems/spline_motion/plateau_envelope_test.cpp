@@ -10,7 +10,7 @@
 
 #include <tutti/spline_motion/plateau_envelope.hpp>
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 constexpr double kRampS = 0.15;
@@ -79,4 +79,4 @@ TEST(PlateauEnvelope, NeverShortOfAHeldNeedOnRandomNeeds) {
 }
 
 }  // namespace
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion

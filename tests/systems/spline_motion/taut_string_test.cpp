@@ -8,7 +8,7 @@
 
 #include "corridor_cases.hpp"
 
-namespace tutti::motion {
+namespace tutti::spline_motion {
 namespace {
 
 using piano::HandCorridors;
@@ -136,4 +136,4 @@ TEST(TautString, ValidationErrorsPassThrough) {
 }
 
 }  // namespace
-}  // namespace tutti::motion
+}  // namespace tutti::spline_motion
