@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <tutti/finger_motion/finger_motion_params.hpp>
 
+#include <initializer_list>
 #include <utility>
 
 #include <nlohmann/json.hpp>
@@ -22,6 +23,27 @@ Status read_positive(const JsonReader& reader, const nlohmann::json& object,
     return reader.error(path + "/" + key, allow_zero ? "must not be negative" : "must be positive");
   }
   out = *value;
+  return Status::success();
+}
+
+// One number of a table: its key, where it goes, whether 0 is allowed.
+struct Field {
+  const char* key;
+  double* out;
+  bool allow_zero;
+};
+
+// Reads each field of `fields` into place (read_positive); with `optional`, a field the object
+// lacks keeps its default.
+Status read_fields(const JsonReader& reader, const nlohmann::json& object, const std::string& path,
+                   std::initializer_list<Field> fields, bool optional) {
+  for (const Field& field : fields) {
+    if (optional && !object.contains(field.key)) continue;
+    if (auto ok = read_positive(reader, object, path, field.key, *field.out, field.allow_zero);
+        !ok) {
+      return ok;
+    }
+  }
   return Status::success();
 }
 
@@ -70,36 +92,25 @@ Status read_timing(const JsonReader& reader, const nlohmann::json& document, Str
       !ok) {
     return ok;
   }
-  const struct {
-    const char* key;
-    double* out;
-    bool allow_zero;
-  } fields[] = {{"press_lead_s", &t.press_lead_s, false},
-                {"move_min_s", &t.move_min_s, false},
-                {"move_max_s", &t.move_max_s, false},
-                {"move_s_per_mm", &t.move_s_per_mm, true},
-                {"shape_s", &t.shape_s, false},
-                {"release_s", &t.release_s, false},
-                {"relax_time_constant_s", &t.relax_time_constant_s, false}};
-  for (const auto& field : fields) {
-    if (auto ok = read_positive(reader, object, path, field.key, *field.out, field.allow_zero);
-        !ok) {
-      return ok;
-    }
+  if (auto ok = read_fields(reader, object, path,
+                            {{"press_lead_s", &t.press_lead_s, false},
+                             {"move_min_s", &t.move_min_s, false},
+                             {"move_max_s", &t.move_max_s, false},
+                             {"move_s_per_mm", &t.move_s_per_mm, true},
+                             {"shape_s", &t.shape_s, false},
+                             {"release_s", &t.release_s, false},
+                             {"relax_time_constant_s", &t.relax_time_constant_s, false}},
+                            false);
+      !ok) {
+    return ok;
   }
   // Optional (older files have none).
-  const struct {
-    const char* key;
-    double* out;
-    bool allow_zero;
-  } optional_fields[] = {{"reach_in_s", &t.reach_in_s, false},
-                         {"reach_in_bridge_s", &t.reach_in_bridge_s, true}};
-  for (const auto& field : optional_fields) {
-    if (!object.contains(field.key)) continue;
-    if (auto ok = read_positive(reader, object, path, field.key, *field.out, field.allow_zero);
-        !ok) {
-      return ok;
-    }
+  if (auto ok = read_fields(reader, object, path,
+                            {{"reach_in_s", &t.reach_in_s, false},
+                             {"reach_in_bridge_s", &t.reach_in_bridge_s, true}},
+                            true);
+      !ok) {
+    return ok;
   }
   if (t.move_max_s < t.move_min_s) return reader.error(path + "/move_max_s", "below move_min_s");
   return Status::success();
@@ -169,23 +180,13 @@ Status read_pass_over(const JsonReader& reader, const nlohmann::json& document,
       !ok) {
     return ok;
   }
-  const struct {
-    const char* key;
-    double* out;
-    bool allow_zero;
-  } fields[] = {{"lift_mm", &p.lift_mm, true},  // 0: no hand is ever lifted
-                {"gap_mm", &p.gap_mm, false},
-                {"crossed_mm", &p.crossed_mm, false},
-                {"ease_s", &p.ease_s, false},
-                {"sample_s", &p.sample_s, false}};
-  for (const auto& field : fields) {
-    if (!object.contains(field.key)) continue;
-    if (auto ok = read_positive(reader, object, path, field.key, *field.out, field.allow_zero);
-        !ok) {
-      return ok;
-    }
-  }
-  return Status::success();
+  return read_fields(reader, object, path,
+                     {{"lift_mm", &p.lift_mm, true},  // 0: no hand is ever lifted
+                      {"gap_mm", &p.gap_mm, false},
+                      {"crossed_mm", &p.crossed_mm, false},
+                      {"ease_s", &p.ease_s, false},
+                      {"sample_s", &p.sample_s, false}},
+                     true);
 }
 
 }  // namespace
