@@ -11,6 +11,7 @@
 #include <tutti/audio_sync/audio_sync_system.hpp>
 #include <tutti/performance/performance.hpp>
 #include <tutti/export/glb_builder.hpp>
+#include <tutti/stage/contact_recorder.hpp>
 
 namespace tutti::gltf_export {
 namespace {
@@ -46,7 +47,8 @@ struct InstanceSamples {
   std::vector<float> weights;
 };
 
-std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& range) {
+std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& range,
+                                    stage::ContactRecorder& contacts) {
   const std::size_t instances = stage.instances().size();
   std::vector<InstanceSamples> samples(instances);
   const auto frames = static_cast<std::size_t>(range.frame_count);
@@ -68,6 +70,7 @@ std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& rang
     stage.run({});
     // The poses a host reads from tutti::performance (rotations normalised, roots as TRS).
     performance::read_poses(stage, poses);
+    contacts.record(stage, static_cast<double>(k) / range.fps);  // the clip's time
     for (std::size_t i = 0; i < instances; ++i) {
       const performance::ModelPose& pose = poses[i];
       InstanceSamples& s = samples[i];
@@ -94,7 +97,8 @@ class Writer {
 
   ExportSummary run() {
     const std::vector<InstanceLabel> labels = label_instances(stage_);
-    const std::vector<InstanceSamples> samples = sample(stage_, range_);
+    stage::ContactRecorder recorder;
+    const std::vector<InstanceSamples> samples = sample(stage_, range_, recorder);
     ExportSummary summary;
 
     json& asset = builder_.document()["asset"];
@@ -120,6 +124,7 @@ class Writer {
     for (std::size_t i = 0; i < stage_.instances().size(); ++i) {
       write_instance(i, labels[i], samples[i], scene_roots);
     }
+    write_contacts(recorder.contacts(), labels);
     builder_.document()["scenes"] =
         json::array({{{"name", stem_of(stage_.scene().source)}, {"nodes", scene_roots}}});
     builder_.document()["scene"] = 0;
@@ -156,6 +161,41 @@ class Writer {
     int output = 0;
     std::size_t keys = 0;
   };
+
+  // The root `extras.tutti.contacts` (docs/embedding.md): who touches what, where and when, in
+  // the clip's time. Nodes by the name of their instance's root node and their own name, and
+  // by their index in this file.
+  void write_contacts(const std::vector<stage::Contact>& contacts,
+                      const std::vector<InstanceLabel>& labels) {
+    const auto micrometres = [](double m) { return std::round(m * 1e6) / 1e6; };
+    const auto node_name = [this](std::size_t instance, int node) {
+      const ModelAsset& asset = *stage_.models()[stage_.placed(instance).model];
+      return asset.nodes[static_cast<std::size_t>(node)].name;
+    };
+    json out = json::array();
+    for (const stage::Contact& contact : contacts) {
+      if (contact.body_instance >= labels.size() || contact.part_instance >= labels.size()) continue;
+      json spans = json::array();
+      for (const stage::ContactSpan& span : contact.spans) {
+        json item = {{"from_s", span.from_s},
+                     {"to_s", span.to_s},
+                     {"part_point_m", json::array({micrometres(span.part_point_m.x),
+                                                   micrometres(span.part_point_m.y),
+                                                   micrometres(span.part_point_m.z)})}};
+        if (span.midi >= 0) item["midi"] = span.midi;
+        spans.push_back(std::move(item));
+      }
+      out.push_back({{"performer", labels[contact.body_instance].performer},
+                     {"body_root", labels[contact.body_instance].name},
+                     {"body_node", node_name(contact.body_instance, contact.body_node)},
+                     {"body_node_index", instance_root_[contact.body_instance] + 1 + contact.body_node},
+                     {"part_root", labels[contact.part_instance].name},
+                     {"part_node", node_name(contact.part_instance, contact.part_node)},
+                     {"part_node_index", instance_root_[contact.part_instance] + 1 + contact.part_node},
+                     {"spans", std::move(spans)}});
+    }
+    builder_.document()["extras"] = {{"tutti", {{"contacts", std::move(out)}}}};
+  }
 
   const WrittenModel& model_data(std::uint32_t m) {
     WrittenModel& w = written_[m];
@@ -358,6 +398,8 @@ class Writer {
     if (!nodes.is_array()) nodes = json::array();
     const int root = static_cast<int>(nodes.size());
     const int base = root + 1;
+    instance_root_.resize(std::max(instance_root_.size(), i + 1));
+    instance_root_[i] = root;
     const int first_skin = builder_.document().contains("skins")
                                ? static_cast<int>(builder_.document()["skins"].size())
                                : 0;
@@ -569,6 +611,7 @@ class Writer {
   KeyTolerances tolerances_;
   GlbBuilder builder_;
   std::vector<WrittenModel> written_;
+  std::vector<int> instance_root_;  // each instance's root node in the file
   std::map<std::pair<const ModelAsset*, int>, int> textures_;  // (model, texture) -> written
   std::vector<Channel> channels_;
   std::map<std::vector<std::uint32_t>, int> times_;

@@ -23,6 +23,7 @@
 #include <tutti/components/valve.hpp>
 #include <tutti/ensemble_variation/ensemble_variation_system.hpp>
 #include <tutti/stage/model_binding.hpp>
+#include <tutti/stage/touching.hpp>
 
 namespace tutti::brass_family {
 namespace {
@@ -205,7 +206,7 @@ void BrassPlugin::add_systems(ecs::Schedule& schedule) const {
   schedule.add(ecs::Phase::pose, kBrassSkeletonSystemName, brass_skeleton_system,
                ecs::access(ecs::Reads<BrassRig, components::Valve, components::Slide, components::Mouth,
                                       components::Breath, components::BodyMotion>{},
-                           ecs::WritesOwn<stage::PlacedModel>{}));
+                           ecs::WritesOwn<stage::PlacedModel, stage::Touching>{}));
 }
 
 Status BrassPlugin::build(stage::StageBuilder& builder) const {
@@ -273,6 +274,7 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
     ensemble_inputs.push_back(ensemble_input(performer, builder.scores()[performer.music_file], plan));
     rig.phrases = phrases_of(*plan.line);
     world.add<BrassRig>(player, std::move(rig));
+    world.add<stage::Touching>(player, stage::Touching{});
     world.add<BrassPlan>(player, std::move(plan));
     players.push_back(player);
   }

@@ -16,6 +16,7 @@
 #include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/spline_motion/plateau_envelope.hpp>
 #include <tutti/stage/stage.hpp>
+#include <tutti/stage/touching.hpp>
 
 namespace tutti::brass_family {
 namespace {
@@ -307,6 +308,32 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   }
 }
 
+// Where the player holds the instrument: each fingertip set on a node of it (valve buttons, the
+// thumb's rest, a ring), each palm on its grip, and the lips on the mouthpiece while the
+// instrument is up at them.
+void touch_instrument(const BrassRig& rig, double t_s, stage::Touching& touching) {
+  touching.clear();
+  const auto body_node = [&rig](int node) {
+    return rig.body_retarget ? rig.body_retarget->user_node_of(node) : node;
+  };
+  for (int hand = 0; hand < 2; ++hand) {
+    const auto side = static_cast<std::size_t>(hand);
+    if (rig.hold.fingertips_place(hand)) {
+      for (std::size_t f = 0; f < 5; ++f) {
+        touching.add({rig.body, body_node(rig.body_nodes.fingertips[side][f]), rig.horn,
+                      rig.fingertip_on[side][f], -1});
+      }
+    } else {
+      touching.add({rig.body, body_node(hand == 0 ? rig.body_nodes.grip_left : rig.body_nodes.grip_right),
+                    rig.horn, hand == 0 ? rig.grip_left : rig.grip_right, -1});
+    }
+  }
+  const double raised = rig.hold.has_rest ? raised_at(rig.phrases, t_s) : 1.0;
+  if (raised >= 1.0) {
+    touching.add({rig.body, body_node(rig.body_nodes.mouth), rig.horn, rig.mouthpiece, -1});
+  }
+}
+
 }  // namespace
 
 void brass_skeleton_system(ecs::World& world, const ecs::FrameTime& frame) {
@@ -316,6 +343,9 @@ void brass_skeleton_system(ecs::World& world, const ecs::FrameTime& frame) {
       if (auto* user = world.try_get<PlacedModel>(rig.body)) {
         stage::apply_body_retarget(*rig.body_retarget, *user);
       }
+    }
+    if (auto* touching = world.try_get<stage::Touching>(performer)) {
+      touch_instrument(rig, frame.t_s, *touching);
     }
   });
 }

@@ -18,6 +18,7 @@
 #include <tutti/stage/model_binding.hpp>
 #include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/performer_rig.hpp>
+#include <tutti/stage/touching.hpp>
 
 namespace tutti::piano_family {
 namespace {
@@ -197,7 +198,7 @@ void PianoPlugin::add_systems(ecs::Schedule& schedule) const {
   finger_motion::register_finger_motion(schedule);
   schedule.add(ecs::Phase::pose, kPianoSkeletonSystemName, piano_skeleton_system,
                ecs::access(ecs::Reads<PianoRig, components::Hand, components::Finger>{},
-                           ecs::WritesOwn<stage::PlacedModel>{}));
+                           ecs::WritesOwn<stage::PlacedModel, stage::Touching>{}));
 }
 
 Status PianoPlugin::build(stage::StageBuilder& builder) const {
@@ -260,6 +261,7 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
   label(rig.body, "", true);
   label(rig.user_hands, "hands", true);
   world.add<PianoRig>(performer, std::move(rig));
+  world.add<stage::Touching>(performer, stage::Touching{});
   world.add<PianistPlan>(performer, std::move(plan));
   return Status::success();
 }

@@ -20,6 +20,7 @@
 #include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/stage/performer_rig.hpp>
 #include <tutti/stage/stage.hpp>
+#include <tutti/stage/touching.hpp>
 
 namespace tutti::piano_family {
 namespace {
@@ -186,10 +187,43 @@ void pose_pianist(ecs::World& world, PianoRig& rig) {
   stage::apply_body_retarget(*rig.body_retarget, *body);
 }
 
+// Each finger on its key (press depth > 0: the key moves with it), from the model that draws the
+// finger: tutti's hand model, a user's hand models, or a user's character's own hands.
+void touch_keys(ecs::World& world, const PianoRig& rig, stage::Touching& touching) {
+  touching.clear();
+  for (std::size_t side = 0; side < 2; ++side) {
+    const std::size_t body_side = side == 0 ? 1 : 0;  // BodyNodes: [left, right]
+    for (std::size_t f = 0; f < 5; ++f) {
+      const auto* finger = world.try_get<components::Finger>(rig.fingers[side][f]);
+      if (finger == nullptr || finger->key < 0 || finger->key >= 128 || finger->press_depth <= 0.0) {
+        continue;
+      }
+      stage::Touch touch;
+      touch.part = rig.piano;
+      touch.part_node = rig.key_nodes[static_cast<std::size_t>(finger->key)];
+      touch.midi = finger->key;
+      if (!rig.hand_models[side].is_null()) {
+        touch.body = rig.hand_models[side];
+        touch.body_node = rig.finger_tips[side][f];
+      } else if (rig.hands_retarget) {
+        touch.body = rig.user_hands;
+        touch.body_node = rig.hands_retarget->user_node_of(rig.hands_nodes.fingertips[body_side][f]);
+      } else if (rig.body_retarget) {
+        touch.body = rig.body;
+        touch.body_node = rig.body_retarget->user_node_of(rig.body_nodes.fingertips[body_side][f]);
+      }
+      touching.add(touch);
+    }
+  }
+}
+
 }  // namespace
 
 void piano_skeleton_system(ecs::World& world, const ecs::FrameTime&) {
-  world.view<PianoRig>().each([&world](PianoRig& rig) { pose_pianist(world, rig); });
+  world.view<PianoRig>().each([&world](ecs::Entity performer, PianoRig& rig) {
+    pose_pianist(world, rig);
+    if (auto* touching = world.try_get<stage::Touching>(performer)) touch_keys(world, rig, *touching);
+  });
 }
 
 }  // namespace tutti::piano_family

@@ -5,7 +5,8 @@
 #   2. headless Blender imports it with one action set per clip (each performer, the whole
 #      scene) whose frame ranges are the exported frames, armatures with the rig's bones, and the
 #      mouth shape keys.
-#   export_check.sh TUTTI VALIDATOR_DIR SCENE WORK_DIR [validate|blender|both]
+#   3. (contacts) its extras.tutti.contacts agree with its own animation (check_contacts.py).
+#   export_check.sh TUTTI VALIDATOR_DIR SCENE WORK_DIR [validate|blender|both|contacts]
 set -euo pipefail
 tutti="$1"
 validator_dir="$2"
@@ -28,6 +29,10 @@ print("export: %d bytes, %d frames at %d fps, %d of %d samples kept, clips %s in
 
 if [ "$what" = validate ] || [ "$what" = both ]; then
   node "$here/validator/validate_gltf.mjs" "$validator_dir" "$glb" --max-warnings 0
+fi
+
+if [ "$what" = contacts ]; then
+  python3 "$here/check_contacts.py" "$glb" --max-p95-mm 10
 fi
 
 if [ "$what" = blender ] || [ "$what" = both ]; then
