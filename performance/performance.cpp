@@ -23,6 +23,7 @@
 #include <tutti/scene/load_scene.hpp>
 #include <tutti/scene/scene.hpp>
 #include <tutti/stage/contact_detector.hpp>
+#include <tutti/stage/contact_recorder.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::performance {
@@ -77,6 +78,47 @@ void add_contact_events(stage::Stage& stage, const std::map<std::uint64_t, std::
     }
     out.push_back({stop.t_s, kind, it->second, stop.value});
   }
+}
+
+// Where bodies touch instruments (stage/contact_recorder.hpp), recorded on `fps` frames over
+// the stage's range, as spans of the performers they belong to, by start time.
+std::vector<Contact> record_contacts(stage::Stage& stage,
+                                     const std::map<std::uint64_t, std::int32_t>& index_of,
+                                     double fps) {
+  std::vector<Contact> out;
+  if (!(fps > 0.0)) return out;
+  stage::ContactRecorder recorder;
+  const double range_s = stage.end_s() - stage.start_s();
+  const auto frames = static_cast<std::int64_t>(std::floor(std::max(range_s, 0.0) * fps)) + 1;
+  for (std::int64_t k = 0; k < frames; ++k) {
+    const double t = stage.start_s() + static_cast<double>(k) / fps;
+    stage::evaluate_stage(stage, t);
+    recorder.record(stage, t);
+  }
+  for (const stage::Contact& contact : recorder.contacts()) {
+    const auto it = index_of.find(contact.performer.bits());
+    if (it == index_of.end()) continue;
+    for (const stage::ContactSpan& span : contact.spans) {
+      Contact c;
+      c.from_s = span.from_s;
+      c.to_s = span.to_s;
+      c.performer = it->second;
+      c.body_model = static_cast<std::int32_t>(contact.body_instance);
+      c.body_node = contact.body_node;
+      c.part_model = static_cast<std::int32_t>(contact.part_instance);
+      c.part_node = contact.part_node;
+      c.part_point_m = {static_cast<float>(span.part_point_m.x),
+                        static_cast<float>(span.part_point_m.y),
+                        static_cast<float>(span.part_point_m.z)};
+      c.midi = span.midi;
+      out.push_back(c);
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Contact& a, const Contact& b) {
+    return std::tie(a.from_s, a.performer, a.body_model, a.body_node, a.part_model, a.part_node) <
+           std::tie(b.from_s, b.performer, b.body_model, b.body_node, b.part_model, b.part_node);
+  });
+  return out;
 }
 
 }  // namespace
@@ -217,6 +259,7 @@ Status Performance::init(const Options& options) {
   }
   add_contact_events(*stage_, index_of, options.contact_step_s, events_);
   std::sort(events_.begin(), events_.end(), event_before);
+  contacts_ = record_contacts(*stage_, index_of, options.contact_fps);
   return Status::success();
 }
 

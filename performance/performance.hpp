@@ -46,6 +46,9 @@ struct Options {
   // The grid on which key, valve and slide contacts are looked for (their times are placed
   // between grid points); 0 = no contact events.
   double contact_step_s = 0.001;
+  // The frames per second on which the contacts (contacts()) are recorded, from the start to the
+  // end of the stage's range; 0 = none. Recording poses the whole piece once more at open.
+  double contact_fps = 30.0;
 };
 
 // A local transform in glTF's conventions: metres, a unit quaternion (x, y, z, w), scale.
@@ -92,6 +95,23 @@ struct Event {
   std::int32_t value = 0;
 };
 
+// One span of time over which a performer's body node touches a node of their instrument: a
+// fingertip on a key (which stops `midi`), a fingertip on a valve button, a palm on a grip, the
+// lips on the mouthpiece. `part_point_m` is the touching point in the part node's frame: where
+// the body node was there, on average over the span's frames. Nodes are indices into
+// models()[model].nodes.
+struct Contact {
+  double from_s = 0.0;  // seconds of the music: the first and last recorded frame touching
+  double to_s = 0.0;
+  std::int32_t performer = 0;  // index into performers()
+  std::int32_t body_model = 0;
+  std::int32_t body_node = 0;
+  std::int32_t part_model = 0;
+  std::int32_t part_node = 0;
+  std::array<float, 3> part_point_m{0.0f, 0.0f, 0.0f};
+  std::int32_t midi = -1;  // the pitch the contact stops, else -1
+};
+
 struct ModelPose {
   Trs root;  // where the model is on the stage (the scene's frame: metres, +Y up)
   std::vector<Trs> local;
@@ -126,6 +146,9 @@ class Performance {
   const std::vector<Event>& events() const { return events_; }
   // The events with from_s <= t_s < to_s.
   std::span<const Event> events_between(double from_s, double to_s) const;
+  // Every contact span of the piece (Options::contact_fps), by start time (ties: performer,
+  // body model and node, part model and node).
+  const std::vector<Contact>& contacts() const { return contacts_; }
   // Planning diagnostics worth showing (notes out of range, ...).
   const std::vector<std::string>& notes() const;
 
@@ -145,6 +168,7 @@ class Performance {
   std::vector<PerformerInfo> performers_;
   std::vector<ModelInfo> models_;
   std::vector<Event> events_;
+  std::vector<Contact> contacts_;
 };
 
 // The models' poses as the stage's last run left them (what sample(t) and `tutti export` read):

@@ -25,7 +25,7 @@
 /* The version of this header. tutti_version_number() is the library's: a host built against
  * MAJOR.MINOR runs with any library of the same MAJOR.MINOR (0.x: every minor may change the ABI). */
 #define TUTTI_VERSION_MAJOR 0
-#define TUTTI_VERSION_MINOR 2
+#define TUTTI_VERSION_MINOR 3
 #define TUTTI_VERSION_PATCH 0
 #define TUTTI_VERSION_NUMBER \
   (TUTTI_VERSION_MAJOR * 10000 + TUTTI_VERSION_MINOR * 100 + TUTTI_VERSION_PATCH)
@@ -65,6 +65,7 @@ typedef struct tutti_options {
   const char* content_dir; /* NULL or "": $TUTTI_CONTENT_DIR, else the content tutti was built with */
   const char* asset_dir;   /* NULL or "": $TUTTI_ASSET_DIR, else the generated models it was built with */
   double contact_step_s;   /* grid for key / valve / slide contact events; 0 = none */
+  double contact_fps;      /* (0.3) frames per second on which contacts are recorded; 0 = none */
 } tutti_options;
 
 /* glTF conventions: metres, a unit quaternion (x, y, z, w), scale. */
@@ -95,7 +96,25 @@ typedef struct tutti_event {
   int32_t reserved;      /* 0 */
 } tutti_event;
 
-/* Any thread. "0.2.0" and MAJOR * 10000 + MINOR * 100 + PATCH of the library loaded. */
+/* A span of time over which a performer's body node touches a node of their instrument: a
+ * fingertip on a key (which stops `midi`), a fingertip on a valve button, a palm on a grip, the
+ * lips on the mouthpiece. Nodes are indices into their models' nodes (tutti_node_name);
+ * part_point_m is the touching point in the part node's frame (where the body node was there, on
+ * average over the span). */
+typedef struct tutti_contact {
+  double from_s;         /* seconds of the music: the first and last recorded frame touching */
+  double to_s;
+  int32_t performer;
+  int32_t body_model;
+  int32_t body_node;
+  int32_t part_model;
+  int32_t part_node;
+  int32_t midi;          /* the pitch the contact stops, else -1 */
+  float part_point_m[3];
+  int32_t reserved;      /* 0 */
+} tutti_contact;
+
+/* Any thread. "0.3.0" and MAJOR * 10000 + MINOR * 100 + PATCH of the library loaded. */
 TUTTI_API const char* tutti_version(void);
 TUTTI_API int32_t tutti_version_number(void);
 /* Any thread. The message of this thread's last failed call ("" when none): one line naming the
@@ -173,6 +192,13 @@ TUTTI_API tutti_status tutti_model_morph_weights(const tutti_performance* perfor
  * handle or a NaN time, with an error). */
 TUTTI_API int32_t tutti_events(const tutti_performance* performance, double from_s, double to_s,
                                tutti_event* out, int32_t capacity);
+
+/* Any thread. The contact spans that overlap [from_s, to_s) (from_s <= span.to_s and
+ * span.from_s < to_s), by start time: writes up to `capacity` of them into `out` (which may be
+ * NULL when capacity is 0) and returns how many there are (-1 on a null handle or a NaN time,
+ * with an error). Linear in the piece's spans. None when tutti_options.contact_fps was 0. */
+TUTTI_API int32_t tutti_contacts(const tutti_performance* performance, double from_s,
+                                 double to_s, tutti_contact* out, int32_t capacity);
 
 #ifdef __cplusplus
 }

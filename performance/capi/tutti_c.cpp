@@ -176,6 +176,7 @@ void tutti_default_options(tutti_options* options) {
   options->content_dir = nullptr;
   options->asset_dir = nullptr;
   options->contact_step_s = tutti::performance::Options{}.contact_step_s;
+  options->contact_fps = tutti::performance::Options{}.contact_fps;
 }
 
 tutti_status tutti_open(const char* file, const tutti_options* options,
@@ -208,6 +209,12 @@ tutti_status tutti_open(const char* file, const tutti_options* options,
           return fail(TUTTI_INVALID_ARGUMENT, "tutti_open: contact_step_s must be >= 0");
         }
         o.contact_step_s = options->contact_step_s;
+      }
+      if (covers(offsetof(tutti_options, contact_fps), sizeof(double))) {
+        if (!(options->contact_fps >= 0.0) || !std::isfinite(options->contact_fps)) {
+          return fail(TUTTI_INVALID_ARGUMENT, "tutti_open: contact_fps must be >= 0");
+        }
+        o.contact_fps = options->contact_fps;
       }
     }
     auto opened = tutti::performance::Performance::open(file, o);
@@ -470,6 +477,38 @@ int32_t tutti_events(const tutti_performance* p, double from_s, double to_s, tut
       out[i].reserved = 0;
     }
     return static_cast<int32_t>(events.size());
+  });
+}
+
+int32_t tutti_contacts(const tutti_performance* p, double from_s, double to_s, tutti_contact* out,
+                       int32_t capacity) {
+  return guarded<int32_t>("tutti_contacts", -1, [&] {
+    if (std::string e = bad_performance("tutti_contacts", p); !e.empty()) return fail_with(-1, e);
+    if (std::isnan(from_s) || std::isnan(to_s)) {
+      return fail_with(-1, "tutti_contacts: the times must be numbers of seconds, not NaN");
+    }
+    const std::size_t room =
+        out != nullptr && capacity > 0 ? static_cast<std::size_t>(capacity) : 0;
+    std::size_t count = 0;
+    for (const tutti::performance::Contact& c : p->performance->contacts()) {
+      if (c.from_s >= to_s) break;  // by start time: none later overlaps
+      if (c.to_s < from_s) continue;
+      if (count < room) {
+        tutti_contact& o = out[count];
+        o.from_s = c.from_s;
+        o.to_s = c.to_s;
+        o.performer = c.performer;
+        o.body_model = c.body_model;
+        o.body_node = c.body_node;
+        o.part_model = c.part_model;
+        o.part_node = c.part_node;
+        o.midi = c.midi;
+        for (int k = 0; k < 3; ++k) o.part_point_m[k] = c.part_point_m[static_cast<std::size_t>(k)];
+        o.reserved = 0;
+      }
+      ++count;
+    }
+    return static_cast<int32_t>(count);
   });
 }
 

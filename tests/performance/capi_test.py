@@ -29,7 +29,15 @@ class Event(ctypes.Structure):
 class Options(ctypes.Structure):
     _fields_ = [("struct_size", ctypes.c_uint32),
                 ("content_dir", ctypes.c_char_p), ("asset_dir", ctypes.c_char_p),
-                ("contact_step_s", ctypes.c_double)]
+                ("contact_step_s", ctypes.c_double), ("contact_fps", ctypes.c_double)]
+
+
+class Contact(ctypes.Structure):
+    _fields_ = [("from_s", ctypes.c_double), ("to_s", ctypes.c_double),
+                ("performer", ctypes.c_int32), ("body_model", ctypes.c_int32),
+                ("body_node", ctypes.c_int32), ("part_model", ctypes.c_int32),
+                ("part_node", ctypes.c_int32), ("midi", ctypes.c_int32),
+                ("part_point_m", ctypes.c_float * 3), ("reserved", ctypes.c_int32)]
 
 
 OK, BAD_INPUT, INVALID_ARGUMENT = 0, 2, 4
@@ -71,6 +79,7 @@ def load(path):
         "tutti_model_pose": (i32, [p, i32, ctypes.POINTER(Trs), i32]),
         "tutti_model_morph_weights": (i32, [p, i32, ctypes.POINTER(ctypes.c_float), i32]),
         "tutti_events": (i32, [p, f64, f64, ctypes.POINTER(Event), i32]),
+        "tutti_contacts": (i32, [p, f64, f64, ctypes.POINTER(Contact), i32]),
     }
     for name, (restype, argtypes) in signatures.items():
         function = getattr(lib, name)
@@ -171,6 +180,7 @@ def main():
     check(lib.tutti_model_root(p, 999, ctypes.byref(root)) == INVALID_ARGUMENT, "bad model")
     check(lib.tutti_sample(p, float("nan")) == INVALID_ARGUMENT, "NaN time")
     check_lasting_surface(lib, p, scenes)
+    check_contacts(lib, p, scenes)
     lib.tutti_close(p)
     print(f"capi test: passed ({len(performers)} performers, {len(models)} models, "
           f"{total} events, {len(first)} values per pose)")
@@ -269,6 +279,89 @@ def check_lasting_surface(lib, p, scenes):
             check(status == BAD_INPUT and name in message and "\n" not in message and
                   not handle.value, f"{name}: status {status}, {message!r}")
     lib.tutti_close(None)
+
+
+def rotate(q, v):
+    x, y, z, w = q
+    tx, ty, tz = 2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])
+    return (v[0] + w * tx + y * tz - z * ty, v[1] + w * ty + z * tx - x * tz,
+            v[2] + w * tz + x * ty - y * tx)
+
+
+def apply(trs, v):
+    scaled = tuple(trs.scale[k] * v[k] for k in range(3))
+    r = rotate(tuple(trs.rotation), scaled)
+    return tuple(r[k] + trs.translation[k] for k in range(3))
+
+
+def world_point(lib, p, roots, nodes, model, node, point):
+    """A point in node's frame to the stage, by the poses tutti_poses gave (forward kinematics
+    here: the parent chain, then the model's root)."""
+    offset = lib.tutti_node_offset(p, model)
+    v = tuple(point)
+    while node >= 0:
+        v = apply(nodes[offset + node], v)
+        node = lib.tutti_node_parent(p, model, node)
+    return apply(roots[model], v)
+
+
+def check_contacts(lib, p, scenes):
+    """Contacts as data: who touches what, where and when. Each valve press of Trumpet 1's first
+    valve lies inside a span of a fingertip on valve_1; every player's lips touch the mouthpiece;
+    a span's point, carried from its part node to the stage by the poses, lies on its body node."""
+    total = lib.tutti_contacts(p, -1e9, 1e9, None, 0)
+    check(total > 0, f"{total} contacts: {lib.tutti_last_error().decode()}")
+    contacts = (Contact * total)()
+    check(lib.tutti_contacts(p, -1e9, 1e9, contacts, total) == total, "contacts")
+    check(all(contacts[i].from_s <= contacts[i + 1].from_s for i in range(total - 1)),
+          "by start time")
+    name = lambda m, n: lib.tutti_node_name(p, m, n).decode()
+    lips = {c.performer for c in contacts
+            if name(c.body_model, c.body_node) == "mouth"
+            and name(c.part_model, c.part_node) == "mouthpiece"}
+    check(lips == set(range(lib.tutti_performer_count(p))), f"lips of {lips}")
+    valve_1 = [c for c in contacts if c.performer == 0 and name(c.part_model, c.part_node) == "valve_1"]
+    check(valve_1 and all(name(c.body_model, c.body_node) == "index_tip_r" for c in valve_1),
+          "Trumpet 1's index fingertip on valve 1")
+    events = (Event * 4096)()
+    count = lib.tutti_events(p, -1e9, 1e9, events, 4096)
+    downs = [e.t_s for e in events[:count] if e.kind == VALVE_DOWN and e.performer == 0 and e.value == 1]
+    check(downs and all(any(c.from_s <= t <= c.to_s for c in valve_1) for t in downs),
+          "every valve-1 press inside a contact span")
+    # A window: the spans that overlap it.
+    window = lib.tutti_contacts(p, 10.0, 10.5, None, 0)
+    check(window == sum(1 for c in contacts if c.to_s >= 10.0 and c.from_s < 10.5) and window > 0,
+          f"window: {window}")
+    check(lib.tutti_contacts(p, float("nan"), 1.0, None, 0) == -1 and
+          "NaN" in lib.tutti_last_error().decode(), "NaN contact window")
+    check(lib.tutti_contacts(None, 0.0, 1.0, None, 0) == -1, "a null performance")
+    # The point is on its body node in the poses themselves (mid-span, up to 40 spans).
+    models = lib.tutti_model_count(p)
+    total_nodes = lib.tutti_node_total(p)
+    roots, nodes = (Trs * models)(), (Trs * total_nodes)()
+    worst = 0.0
+    for c in contacts[::max(1, total // 40)]:
+        check(lib.tutti_sample(p, 0.5 * (c.from_s + c.to_s)) == OK, "sample")
+        check(lib.tutti_poses(p, roots, models, nodes, total_nodes) == OK, "poses")
+        at = world_point(lib, p, roots, nodes, c.part_model, c.part_node, c.part_point_m)
+        body = world_point(lib, p, roots, nodes, c.body_model, c.body_node, (0.0, 0.0, 0.0))
+        worst = max(worst, 1000.0 * math.dist(at, body))
+    check(worst < 10.0, f"a contact point {worst:.1f} mm from its body node")
+    # contact_fps 0: none recorded.
+    options = Options()
+    lib.tutti_default_options(ctypes.byref(options))
+    check(options.contact_fps > 0, "contacts by default")
+    options.contact_fps = 0.0
+    handle = ctypes.c_void_p()
+    check(lib.tutti_open(os.path.join(scenes, "low_brass.json").encode(), ctypes.byref(options),
+                         ctypes.byref(handle)) == OK, lib.tutti_last_error())
+    check(lib.tutti_contacts(handle, -1e9, 1e9, None, 0) == 0, "no contacts at contact_fps 0")
+    lib.tutti_close(handle)
+    options.contact_fps = -1.0
+    check(lib.tutti_open(os.path.join(scenes, "low_brass.json").encode(), ctypes.byref(options),
+                         ctypes.byref(handle)) == INVALID_ARGUMENT and
+          "contact_fps" in lib.tutti_last_error().decode(), "a negative contact_fps")
+    print(f"capi test: {total} contact spans, point to body node at most {worst:.2f} mm")
 
 
 main()

@@ -207,6 +207,38 @@ TEST(Performance, ThePianistsKeysGoDownForTheirNotes) {
               notes.size(), keys.size(), pressed);
 }
 
+// Contacts as data: each key the pianist presses to its bed is inside a span of a fingertip on
+// that key's node, stopping that pitch; none are recorded at contact_fps 0.
+TEST(Performance, EveryKeyDownIsInsideAFingertipsContactWithThatKey) {
+  auto p = open_scene("piano.json");
+  ASSERT_TRUE(p);
+  const std::vector<Contact>& contacts = p->contacts();
+  ASSERT_FALSE(contacts.empty());
+  EXPECT_TRUE(std::is_sorted(contacts.begin(), contacts.end(),
+                             [](const Contact& a, const Contact& b) { return a.from_s < b.from_s; }));
+  constexpr double kFrame = 1.0 / 30.0;  // Options::contact_fps
+  std::size_t keys = 0;
+  for (const Event& e : p->events()) {
+    if (e.kind != EventKind::key_down) continue;
+    ++keys;
+    const bool covered = std::any_of(contacts.begin(), contacts.end(), [&](const Contact& c) {
+      const ModelInfo& part = p->models()[static_cast<std::size_t>(c.part_model)];
+      const ModelInfo& body = p->models()[static_cast<std::size_t>(c.body_model)];
+      return c.performer == e.performer && c.midi == e.value &&
+             part.nodes[static_cast<std::size_t>(c.part_node)] == "key_" + std::to_string(e.value) &&
+             body.nodes[static_cast<std::size_t>(c.body_node)].find("_tip_") != std::string::npos &&
+             c.from_s - kFrame <= e.t_s && e.t_s <= c.to_s + kFrame;
+    });
+    EXPECT_TRUE(covered) << "key " << e.value << " down at " << e.t_s << " s";
+  }
+  EXPECT_GT(keys, 20u);
+  Options none;
+  none.contact_fps = 0.0;
+  auto q = open_scene("piano.json", none);
+  ASSERT_TRUE(q);
+  EXPECT_TRUE(q->contacts().empty());
+}
+
 TEST(Performance, NoContactEventsWhenAskedForNone) {
   Options options;
   options.contact_step_s = 0.0;
