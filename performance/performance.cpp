@@ -121,6 +121,24 @@ std::vector<Contact> record_contacts(stage::Stage& stage,
   return out;
 }
 
+// Every placed model's pose as a host reads it: rotations normalised, roots as TRS.
+template <typename Placed>
+void read_posed_models(const Placed& placed_model, std::size_t count, std::vector<ModelPose>& out) {
+  out.resize(count);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const stage::PlacedModel& placed = placed_model(i);
+    ModelPose& pose = out[i];
+    pose.root = to_trs(decompose(placed.root));
+    pose.local.resize(placed.pose.local.size());
+    for (std::size_t n = 0; n < pose.local.size(); ++n) {
+      model::NodeTransform local = placed.pose.local[n];
+      local.rotation = glm::normalize(local.rotation);
+      pose.local[n] = to_trs(local);
+    }
+    pose.morph_weights.assign(placed.pose.morph_weights.begin(), placed.pose.morph_weights.end());
+  }
+}
+
 }  // namespace
 
 const char* event_kind_name(EventKind kind) {
@@ -150,19 +168,8 @@ const char* event_kind_name(EventKind kind) {
 }
 
 void read_poses(const stage::Stage& stage, std::vector<ModelPose>& out) {
-  out.resize(stage.instances().size());
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const stage::PlacedModel& placed = stage.placed(i);
-    ModelPose& pose = out[i];
-    pose.root = to_trs(decompose(placed.root));
-    pose.local.resize(placed.pose.local.size());
-    for (std::size_t n = 0; n < pose.local.size(); ++n) {
-      model::NodeTransform local = placed.pose.local[n];
-      local.rotation = glm::normalize(local.rotation);
-      pose.local[n] = to_trs(local);
-    }
-    pose.morph_weights.assign(placed.pose.morph_weights.begin(), placed.pose.morph_weights.end());
-  }
+  read_posed_models([&stage](std::size_t i) -> const stage::PlacedModel& { return stage.placed(i); },
+                    stage.instances().size(), out);
 }
 
 Performance::~Performance() = default;
@@ -271,10 +278,38 @@ std::span<const Event> Performance::events_between(double from_s, double to_s) c
   return {first, last};
 }
 
+struct SampleContext::State {
+  stage::StageContext context;
+};
+
+SampleContext::SampleContext(std::unique_ptr<State> state) : state_(std::move(state)) {}
+SampleContext::SampleContext(SampleContext&&) noexcept = default;
+SampleContext& SampleContext::operator=(SampleContext&&) noexcept = default;
+SampleContext::~SampleContext() = default;
+
+SampleContext Performance::make_context() const {
+  return SampleContext(std::make_unique<SampleContext::State>(
+      SampleContext::State{stage_->make_context()}));
+}
+
+void Performance::sample(SampleContext& context, double t_s, Sample& out,
+                         double events_window_s) const {
+  if (!context.state_) throw std::invalid_argument("Performance::sample: a moved-from context");
+  stage_->run(context.state_->context, {t_s, 0.0});
+  const stage::StageContext& posed = context.state_->context;
+  read_posed_models([&posed](std::size_t i) -> const stage::PlacedModel& { return posed.placed(i); },
+                    stage_->instances().size(), out.models);
+  fill_events(t_s, out, events_window_s);
+}
+
 void Performance::sample(double t_s, Sample& out, double events_window_s) {
   stage_->run({t_s, 0.0});
-  out.t_s = t_s;
   read_poses(*stage_, out.models);
+  fill_events(t_s, out, events_window_s);
+}
+
+void Performance::fill_events(double t_s, Sample& out, double events_window_s) const {
+  out.t_s = t_s;
   out.events.resize(performers_.size());
   for (std::vector<Event>& list : out.events) list.clear();
   const double window = std::max(events_window_s, 0.0);

@@ -124,6 +124,24 @@ struct Sample {
   std::vector<std::vector<Event>> events;  // one list per performer, in time order
 };
 
+class Performance;
+
+// A caller's own sampling state (ozz-animation's sampling context): the scratch space and the
+// world its frames are computed in; the plans stay in the Performance, shared and only read.
+// Made by Performance::make_context; one per thread.
+class SampleContext {
+ public:
+  SampleContext(SampleContext&&) noexcept;
+  SampleContext& operator=(SampleContext&&) noexcept;
+  ~SampleContext();
+
+ private:
+  friend class Performance;
+  struct State;
+  explicit SampleContext(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
+
 class Performance {
  public:
   // Loads the scene file and stages it; a piece of music (.mid, .musicxml, ...) is staged with
@@ -156,6 +174,15 @@ class Performance {
   // within `events_window_s` of t_s (before or after).
   void sample(double t_s, Sample& out, double events_window_s = 0.5);
 
+  // Sampling from many threads: each thread makes a context (on the thread that owns the
+  // performance, while no sample(t) runs), then samples with it; sample(context, ...) is const
+  // and runs beside other contexts' samples. The same t gives the same bytes as sample(t).
+  // Allocation-free after a context's first frame. Throws std::invalid_argument for a context
+  // made by another performance or moved from.
+  SampleContext make_context() const;
+  void sample(SampleContext& context, double t_s, Sample& out,
+              double events_window_s = 0.5) const;
+
   // The staged scene under it (the renderer and the editor work on it).
   stage::Stage& stage() { return *stage_; }
   const stage::Stage& stage() const { return *stage_; }
@@ -163,6 +190,7 @@ class Performance {
  private:
   Performance() = default;
   Status init(const Options& options);
+  void fill_events(double t_s, Sample& out, double events_window_s) const;
 
   std::unique_ptr<stage::Stage> stage_;
   std::vector<PerformerInfo> performers_;

@@ -2,6 +2,8 @@
 #include <tutti/stage/stage.hpp>
 
 #include <cstdlib>
+#include <stdexcept>
+#include <utility>
 
 #include <tutti/components/note.hpp>
 #include <tutti/content/content_dir.hpp>
@@ -74,6 +76,22 @@ std::vector<music::Score> Stage::heard_scores() const {
 }
 
 void Stage::run(const ecs::FrameTime& frame, ecs::Phase last) { schedule_.run(world_, frame, last); }
+
+StageContext::StageContext(const Stage& stage, ecs::World world)
+    : stage_(&stage), world_(std::move(world)) {}
+
+const PlacedModel& StageContext::placed(std::size_t instance) const {
+  return world_.get<PlacedModel>(stage_->instances()[instance]);
+}
+
+StageContext Stage::make_context() const { return StageContext(*this, world_.copy()); }
+
+void Stage::run(StageContext& context, const ecs::FrameTime& frame, ecs::Phase last) const {
+  if (context.stage_ != this) {
+    throw std::invalid_argument("stage: a sampling context runs only on the stage that made it");
+  }
+  schedule_.run(context.world_, frame, last);
+}
 
 void evaluate_stage(Stage& stage, double t_s) { stage.run({t_s, 0.0}); }
 

@@ -73,6 +73,26 @@ struct Seat {
   std::size_t index = 0;
 };
 
+// A caller's own state for computing frames from a shared stage (ozz-animation's sampling
+// context): a copy of the stage's world (its components, with their scratch space) in which
+// Stage::run(context, ...) poses the models. The plans the components point at are shared and
+// only read, so contexts on different threads sample one stage at the same time
+// (Performance.FourThreadsSampleOnePlan). Made by Stage::make_context.
+class StageContext {
+ public:
+  ecs::World& world() { return world_; }
+  const ecs::World& world() const { return world_; }
+  // The stage's instances()[instance] as this context last posed it.
+  const PlacedModel& placed(std::size_t instance) const;
+
+ private:
+  friend class Stage;
+  StageContext(const Stage& stage, ecs::World world);
+
+  const Stage* stage_;
+  ecs::World world_;
+};
+
 class Stage {
  public:
   Stage();
@@ -121,6 +141,16 @@ class Stage {
   // audio_sync::FrameClock), every phase up to `last`: Phase::evaluate for the components,
   // Phase::pose for the models' poses.
   void run(const ecs::FrameTime& frame, ecs::Phase last = ecs::Phase::pose);
+
+  // A context of its own for a caller (a thread) that samples this stage: a copy of the world as
+  // it is now. Make it on the thread that owns the stage; then run(context, ...) from any one
+  // thread per context, at the same time as other contexts. Throws std::logic_error if a
+  // component cannot be copied.
+  StageContext make_context() const;
+  // The frame at `frame` in `context`'s world: const on the stage. Throws std::invalid_argument
+  // for a context made by another stage.
+  void run(StageContext& context, const ecs::FrameTime& frame,
+           ecs::Phase last = ecs::Phase::pose) const;
 
  private:
   friend class StageBuilder;

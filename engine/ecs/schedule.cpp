@@ -2,6 +2,7 @@
 #include <tutti/ecs/schedule.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <utility>
 
@@ -32,24 +33,41 @@ void Schedule::add(Phase phase, std::string name, System system, Access access) 
   if (contains(name)) {
     throw std::invalid_argument("ecs: a system named '" + name + "' is already scheduled");
   }
-  if (running_) {
+  if (runs_.load() > 0) {
     throw std::logic_error("ecs: cannot add system '" + name + "' while the schedule runs");
   }
   phases_[index].push_back(Entry{std::move(name), std::move(system), std::move(access)});
 }
 
-void Schedule::run(World& world, const FrameTime& frame, Phase last) {
+namespace {
+
+// A world's schedule run in progress (a resource of that world): a system that runs the
+// schedule on its own world again is a wiring bug.
+struct ScheduleRunning {
+  bool running = false;
+};
+
+}  // namespace
+
+void Schedule::run(World& world, const FrameTime& frame, Phase last) const {
   struct Running {
+    std::atomic<int>& runs;
     bool& flag;
-    explicit Running(bool& f) : flag(f) {
+    Running(std::atomic<int>& r, bool& f) : runs(r), flag(f) {
       if (flag) throw std::logic_error("ecs: Schedule::run called from one of its own systems");
       flag = true;
+      ++runs;
     }
-    ~Running() { flag = false; }
+    ~Running() {
+      flag = false;
+      --runs;
+    }
     Running(const Running&) = delete;
     Running& operator=(const Running&) = delete;
   };
-  const Running running(running_);
+  ScheduleRunning* in_world = world.resource<ScheduleRunning>();
+  if (in_world == nullptr) in_world = &world.set_resource(ScheduleRunning{});
+  const Running running(runs_, in_world->running);
   world.set_resource<FrameTime>(frame);
   const auto end = std::min(static_cast<std::size_t>(last) + 1, kPhaseCount);
   for (std::size_t p = 0; p < end; ++p) {

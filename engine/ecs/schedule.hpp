@@ -5,6 +5,7 @@
 // (describe()) instead of being implied by call sites.
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -134,7 +135,10 @@ class Schedule {
   // FrameTime resource as the phase starts (the sync phase may have replaced it). An exception
   // from a system or a command propagates and skips the rest of the frame; commands still queued
   // stay queued.
-  void run(World& world, const FrameTime& frame, Phase last = Phase::pose);
+  //
+  // Const, and safe on different worlds from different threads at once (each caller its own
+  // World::copy): the systems share only what the components point at.
+  void run(World& world, const FrameTime& frame, Phase last = Phase::pose) const;
 
   // One line per non-empty phase, in run order, each ending in '\n':
   // "sync: audio_clock\nevaluate: hand_pose, bow\n". Empty string for an empty schedule.
@@ -161,7 +165,7 @@ class Schedule {
   };
 
   std::array<std::vector<Entry>, kPhaseCount> phases_;
-  bool running_ = false;
+  mutable std::atomic<int> runs_{0};  // runs in progress on any world (add() waits for none)
 };
 
 }  // namespace tutti::ecs

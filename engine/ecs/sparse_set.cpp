@@ -95,4 +95,19 @@ void SparseSet::push_entity(Entity e) {
   pages_[page][e.index % kPageSize] = pos;
 }
 
+void SparseSet::copy_entities_from(const SparseSet& other) {
+  pages_.clear();
+  pages_.reserve(other.pages_.size());
+  for (const auto& page : other.pages_) {
+    if (!page) {
+      pages_.emplace_back();
+      continue;
+    }
+    auto copied = std::make_unique<std::uint32_t[]>(kPageSize);
+    std::copy(page.get(), page.get() + kPageSize, copied.get());
+    pages_.push_back(std::move(copied));
+  }
+  dense_ = other.dense_;
+}
+
 }  // namespace tutti::ecs

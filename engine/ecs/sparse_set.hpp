@@ -20,6 +20,8 @@
 #include <limits>
 #include <memory>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -95,8 +97,15 @@ class SparseSet {
   void begin_iteration(IterationFrame& frame) noexcept;
   void end_iteration(IterationFrame& frame) noexcept;
 
+  // A pool holding copies of this one's entities and components (World::copy), no iteration
+  // in progress. Throws std::logic_error for a component type that cannot be copied.
+  [[nodiscard]] virtual std::unique_ptr<SparseSet> copy() const = 0;
+
  protected:
   explicit SparseSet(std::string_view type_name) noexcept : type_name_(type_name) {}
+
+  // This set's entities and sparse pages become `other`'s.
+  void copy_entities_from(const SparseSet& other);
 
   // Appends e, whose component the derived pool has just appended at the same position.
   // Precondition: !contains(e). Strong guarantee: on bad_alloc nothing changed here.
@@ -215,6 +224,17 @@ class Pool final : public SparseSet {
   // Packed components, parallel to entities(). Not available for tags.
   [[nodiscard]] std::span<T> values() noexcept requires(!kTag) { return storage_; }
 
+  [[nodiscard]] std::unique_ptr<SparseSet> copy() const override {
+    if constexpr (std::is_copy_constructible_v<T>) {
+      auto out = std::make_unique<Pool<T>>();
+      if constexpr (!kTag) out->storage_ = std::vector<T>(storage_);  // T need not be assignable
+      out->copy_entities_from(*this);
+      return out;
+    } else {
+      throw_not_copyable();
+    }
+  }
+
  private:
   void swap_and_pop_component(std::size_t pos) override {
     if constexpr (!kTag) {
@@ -238,7 +258,15 @@ class Pool final : public SparseSet {
     if constexpr (!kTag) storage_.clear();
   }
 
+  [[noreturn]] void throw_not_copyable() const;
+
   [[no_unique_address]] std::conditional_t<kTag, T, std::vector<T>> storage_{};
 };
+
+template <typename T>
+void Pool<T>::throw_not_copyable() const {
+  throw std::logic_error("ecs: cannot copy a world holding " + std::string(type_name()) +
+                         " components: the type cannot be copied");
+}
 
 }  // namespace tutti::ecs

@@ -83,6 +83,33 @@ void World::flush() {
   }
 }
 
+World World::copy() const {
+  World out;
+  out.slots_ = slots_;
+  out.free_ = free_;
+  out.alive_ = alive_;
+  out.pools_.resize(pools_.size());
+  for (std::size_t i = 0; i < pools_.size(); ++i) {
+    if (pools_[i] == nullptr) continue;
+    if (pools_[i]->iterating() > 0) {
+      throw std::logic_error("ecs: cannot copy a world while a view iterates " +
+                             std::string(pools_[i]->type_name()));
+    }
+    out.pools_[i] = pools_[i]->copy();
+  }
+  out.resources_.resize(resources_.size());
+  out.resource_copiers_ = resource_copiers_;
+  for (std::size_t i = 0; i < resources_.size(); ++i) {
+    if (resources_[i] != nullptr) out.resources_[i] = resource_copiers_[i](resources_[i].get());
+  }
+  return out;
+}
+
+void World::throw_not_copyable(std::string_view type) {
+  throw std::logic_error("ecs: cannot copy a world holding a " + std::string(type) +
+                         " resource: the type cannot be copied");
+}
+
 void World::throw_not_alive(std::string_view type, Entity e) {
   throw std::invalid_argument("ecs: cannot add " + std::string(type) + " to entity " +
                               to_string(e) + ": the entity is not alive");

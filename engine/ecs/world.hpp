@@ -40,6 +40,13 @@ class World {
   World(World&&) noexcept;
   World& operator=(World&&) noexcept;
 
+  // A world of its own with copies of every entity (same handles), component and resource: the
+  // state a second caller computes frames in while sharing what the components point at
+  // (ozz-animation's per-caller context). Deferred commands are not copied. Throws
+  // std::logic_error, copying nothing, if a view is iterating or a component or resource type
+  // cannot be copied.
+  [[nodiscard]] World copy() const;
+
   // A new entity with no components. Reuses the slot of a destroyed entity (with a higher
   // generation) before growing. Throws std::length_error after 2^32 - 1 slots.
   [[nodiscard]] Entity create();
@@ -168,6 +175,8 @@ class World {
     if (id >= resources_.size()) resources_.resize(id + 1);
     if (resources_[id] == nullptr) {
       resources_[id] = std::make_shared<T>(std::move(value));
+      if (id >= resource_copiers_.size()) resource_copiers_.resize(id + 1, nullptr);
+      resource_copiers_[id] = &copy_resource<T>;
     } else {
       *static_cast<T*>(resources_[id].get()) = std::move(value);
     }
@@ -209,6 +218,16 @@ class World {
   void release(std::uint32_t index);
 
   [[noreturn]] static void throw_not_alive(std::string_view type, Entity e);
+  [[noreturn]] static void throw_not_copyable(std::string_view type);
+  template <typename T>
+  static std::shared_ptr<void> copy_resource(const void* value) {
+    if constexpr (std::is_copy_constructible_v<T>) {
+      return std::make_shared<T>(*static_cast<const T*>(value));
+    } else {
+      throw_not_copyable(ecs::type_name<T>());
+    }
+  }
+  using ResourceCopier = std::shared_ptr<void> (*)(const void*);
 
   std::vector<Slot> slots_;
   std::vector<std::uint32_t> free_;  // dead slots to reuse, most recent last
@@ -216,6 +235,7 @@ class World {
   std::vector<std::unique_ptr<SparseSet>> pools_;  // by type_index<T>()
   std::vector<Command> commands_;
   std::vector<std::shared_ptr<void>> resources_;  // by type_index<T>()
+  std::vector<ResourceCopier> resource_copiers_;  // by type_index<T>(), for copy()
 };
 
 }  // namespace tutti::ecs

@@ -320,3 +320,63 @@ TEST(WorldTest, AResourceIsOnePerWorldAndReplaced) {
 
 }  // namespace
 }  // namespace tutti::ecs
+
+namespace tutti::ecs {
+namespace {
+
+// A copy is a world of its own: the same handles, components and resources; changing one
+// leaves the other as it was (the per-caller sampling contexts are copies of a stage's world).
+TEST(WorldCopyTest, ACopyHasTheSameEntitiesComponentsAndResourcesAndIsIndependent) {
+  World world;
+  const Entity a = world.create();
+  const Entity b = world.create();
+  const Entity gone = world.create();
+  world.destroy(gone);
+  world.add<Position>(a, 1.0F, 2.0F);
+  world.add<Name>(b, "b");
+  world.add<Soloist>(b);
+  world.add<Fixed>(a, 7);  // copyable, not assignable
+  world.set_resource(Velocity{3.0F});
+
+  World copy = world.copy();
+  EXPECT_EQ(copy.alive(), 2U);
+  EXPECT_TRUE(copy.valid(a));
+  EXPECT_FALSE(copy.valid(gone));
+  ASSERT_NE(copy.try_get<Position>(a), nullptr);
+  EXPECT_EQ(copy.get<Position>(a).y, 2.0F);
+  EXPECT_EQ(copy.get<Name>(b).text, "b");
+  EXPECT_TRUE(copy.has<Soloist>(b));
+  EXPECT_EQ(copy.get<Fixed>(a).id, 7);
+  ASSERT_NE(copy.resource<Velocity>(), nullptr);
+  EXPECT_EQ(copy.resource<Velocity>()->dx, 3.0F);
+
+  copy.get<Position>(a).x = 10.0F;
+  copy.resource<Velocity>()->dx = 4.0F;
+  copy.remove<Name>(b);
+  const Entity c = copy.create();
+  EXPECT_EQ(c.index, gone.index);  // the copy reuses the same free slot, with a newer generation
+  EXPECT_EQ(world.get<Position>(a).x, 1.0F);
+  EXPECT_EQ(world.resource<Velocity>()->dx, 3.0F);
+  EXPECT_EQ(world.get<Name>(b).text, "b");
+  EXPECT_FALSE(world.valid(c));
+  int seen = 0;
+  copy.view<const Position>().each([&](const Position& p) { seen += static_cast<int>(p.x); });
+  EXPECT_EQ(seen, 10);
+}
+
+TEST(WorldCopyTest, AComponentThatCannotBeCopiedIsAnErrorNamingIt) {
+  World world;
+  world.add<std::unique_ptr<int>>(world.create(), std::make_unique<int>(1));
+  EXPECT_THAT([&] { (void)world.copy(); },
+              ThrowsMessage<std::logic_error>(HasSubstr("cannot be copied")));
+}
+
+TEST(WorldCopyTest, CopyingWhileAViewIteratesIsRefused) {
+  World world;
+  world.add<Position>(world.create());
+  EXPECT_THROW(world.view<Position>().each([&](Position&) { (void)world.copy(); }),
+               std::logic_error);
+}
+
+}  // namespace
+}  // namespace tutti::ecs

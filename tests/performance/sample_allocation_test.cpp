@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Performance::sample allocates nothing once warmed up: every bundled scene sampled over its whole
-// piece once (the outputs grow to their largest), then again at other times, counting every
-// global operator new. Its own program: tests/allocation_counter.cpp replaces operator new.
+// Performance::sample allocates nothing once warmed up, nor does sampling in a caller's own
+// context: every bundled scene sampled over its whole piece once (the outputs grow to their
+// largest), then again at other times, counting every global operator new. Its own program: tests/allocation_counter.cpp replaces operator new.
 #include <tutti/performance/performance.hpp>
 
 #include <gtest/gtest.h>
@@ -39,6 +39,14 @@ void expect_no_allocation_after_warm_up(Performance& performance, const std::str
   EXPECT_GT(samples, 20) << what;
   EXPECT_EQ(allocations, 0) << what << ": " << allocations << " allocations in " << samples
                             << " samples";
+
+  // The same through a caller's own context (sample(context, t, out), the threads' path).
+  SampleContext context = performance.make_context();
+  Sample own;
+  for (double t = from_s; t <= to_s; t += 0.1) performance.sample(context, t, own);
+  const long before_context = test::allocation_count();
+  for (double t = from_s + 0.05; t <= to_s; t += 0.2) performance.sample(context, t, own);
+  EXPECT_EQ(test::allocation_count() - before_context, 0) << what << ", in a context";
 }
 
 class SampleAllocation : public ::testing::TestWithParam<const char*> {};
