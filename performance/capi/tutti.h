@@ -15,6 +15,7 @@
  *
  * Threads: a performance is used by one thread at a time (tutti_sample writes the pose the getters
  * read); different performances are independent and may be used on different threads at once.
+ * To sample one performance from many threads, give each thread a tutti_context.
  * The calls marked "any thread" take no performance, or only read what tutti_open fixed, and may
  * be called from any thread at any time while the performance is open. */
 #ifndef TUTTI_TUTTI_H
@@ -49,6 +50,8 @@ extern "C" {
 #endif
 
 typedef struct tutti_performance tutti_performance;
+/* (0.3) A caller's own sampling state over a performance's shared plan: one per thread. */
+typedef struct tutti_context tutti_context;
 
 typedef enum tutti_status {
   TUTTI_OK = 0,
@@ -192,6 +195,23 @@ TUTTI_API tutti_status tutti_model_morph_weights(const tutti_performance* perfor
  * handle or a NaN time, with an error). */
 TUTTI_API int32_t tutti_events(const tutti_performance* performance, double from_s, double to_s,
                                tutti_event* out, int32_t capacity);
+
+/* (0.3) Sampling from many threads. A context is a caller's own copy of what a frame writes;
+ * the plans stay in the performance, shared and only read. Make the contexts on the
+ * performance's thread while no tutti_sample runs, give each thread its own, and free them before
+ * tutti_close. tutti_context_sample poses everything at t_s in that context (any thread, one
+ * thread per context at a time, beside other contexts); the same t gives the same transforms
+ * as tutti_sample. tutti_context_poses and tutti_context_morph_weights read its last sample, as
+ * tutti_poses and tutti_model_morph_weights read the performance's. */
+TUTTI_API tutti_status tutti_context_new(const tutti_performance* performance,
+                                         tutti_context** out);
+TUTTI_API void tutti_context_free(tutti_context* context);
+TUTTI_API tutti_status tutti_context_sample(tutti_context* context, double t_s);
+TUTTI_API tutti_status tutti_context_poses(const tutti_context* context, tutti_trs* roots,
+                                           int32_t root_capacity, tutti_trs* nodes,
+                                           int32_t node_capacity);
+TUTTI_API tutti_status tutti_context_morph_weights(const tutti_context* context, int32_t model,
+                                                   float* out, int32_t capacity);
 
 /* Any thread. The contact spans that overlap [from_s, to_s) (from_s <= span.to_s and
  * span.from_s < to_s), by start time: writes up to `capacity` of them into `out` (which may be

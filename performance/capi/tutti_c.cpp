@@ -3,6 +3,7 @@
 // status codes and a thread-local message; nothing throws across the boundary.
 #include "tutti.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -21,6 +22,13 @@ static_assert(TUTTI_VERSION_MAJOR == TUTTI_PROJECT_VERSION_MAJOR &&
 struct tutti_performance {
   std::unique_ptr<tutti::performance::Performance> performance;
   std::vector<int32_t> node_offsets;  // per model, into the nodes of all models; then the total
+  tutti::performance::Sample sample;
+  bool sampled = false;
+};
+
+struct tutti_context {
+  const tutti_performance* owner = nullptr;
+  tutti::performance::SampleContext context;
   tutti::performance::Sample sample;
   bool sampled = false;
 };
@@ -126,6 +134,50 @@ tutti_status pose_of(const char* function, const tutti_performance* p, int32_t m
 }
 
 constexpr int32_t kEventKinds = static_cast<int32_t>(tutti::performance::EventKind::cue) + 1;
+
+// Every model's root and local transforms of `sample` into the caller's buffers (tutti_poses).
+tutti_status write_poses(const std::string& function, const tutti::performance::Sample& sample,
+                         const std::vector<int32_t>& node_offsets, tutti_trs* roots,
+                         int32_t root_capacity, tutti_trs* nodes, int32_t node_capacity) {
+  const std::size_t models = sample.models.size();
+  if (root_capacity != 0 && (roots == nullptr || root_capacity < 0 ||
+                             static_cast<std::size_t>(root_capacity) < models)) {
+    return fail(TUTTI_INVALID_ARGUMENT, function +
+                                            ": the roots buffer holds fewer transforms than " +
+                                            std::to_string(models) + " models");
+  }
+  const int32_t total = node_offsets.back();
+  if (node_capacity < total || (nodes == nullptr && total > 0)) {
+    return fail(TUTTI_INVALID_ARGUMENT, function +
+                                            ": the nodes buffer holds fewer transforms than " +
+                                            std::to_string(total) + " nodes of all models");
+  }
+  for (std::size_t m = 0; m < models; ++m) {
+    const tutti::performance::ModelPose& pose = sample.models[m];
+    if (root_capacity != 0) copy_trs(pose.root, roots[m]);
+    tutti_trs* first = nodes + node_offsets[m];
+    for (std::size_t n = 0; n < pose.local.size(); ++n) copy_trs(pose.local[n], first[n]);
+  }
+  return TUTTI_OK;
+}
+
+// A model's morph weights of `sample` into the caller's buffer (tutti_model_morph_weights).
+tutti_status write_morph_weights(const std::string& function,
+                                 const tutti::performance::Sample& sample, int32_t model,
+                                 float* out, int32_t capacity) {
+  if (std::string e = bad_index(function.c_str(), "model", model, sample.models.size());
+      !e.empty()) {
+    return fail(TUTTI_INVALID_ARGUMENT, e);
+  }
+  const std::vector<float>& weights = sample.models[static_cast<std::size_t>(model)].morph_weights;
+  if (capacity < 0 || static_cast<std::size_t>(capacity) < weights.size() ||
+      (out == nullptr && !weights.empty())) {
+    return fail(TUTTI_INVALID_ARGUMENT, function + ": the buffer holds fewer weights than " +
+                                            std::to_string(weights.size()) + " morph targets");
+  }
+  std::copy(weights.begin(), weights.end(), out);
+  return TUTTI_OK;
+}
 
 }  // namespace
 
@@ -418,26 +470,62 @@ tutti_status tutti_poses(const tutti_performance* p, tutti_trs* roots, int32_t r
       return fail(TUTTI_INVALID_ARGUMENT, e);
     }
     if (!p->sampled) return fail(TUTTI_INVALID_ARGUMENT, "tutti_poses: call tutti_sample first");
-    const std::size_t models = p->sample.models.size();
-    if (root_capacity != 0 && (roots == nullptr || root_capacity < 0 ||
-                               static_cast<std::size_t>(root_capacity) < models)) {
-      return fail(TUTTI_INVALID_ARGUMENT,
-                  "tutti_poses: the roots buffer holds fewer transforms than " +
-                      std::to_string(models) + " models");
+    return write_poses("tutti_poses", p->sample, p->node_offsets, roots, root_capacity, nodes,
+                       node_capacity);
+  });
+}
+
+tutti_status tutti_context_new(const tutti_performance* p, tutti_context** out) {
+  return guarded<tutti_status>("tutti_context_new", TUTTI_INTERNAL, [&]() -> tutti_status {
+    if (out == nullptr) return fail(TUTTI_INVALID_ARGUMENT, "tutti_context_new: out is NULL");
+    *out = nullptr;
+    if (std::string e = bad_performance("tutti_context_new", p); !e.empty()) {
+      return fail(TUTTI_INVALID_ARGUMENT, e);
     }
-    const int32_t total = p->node_offsets.back();
-    if (node_capacity < total || (nodes == nullptr && total > 0)) {
-      return fail(TUTTI_INVALID_ARGUMENT,
-                  "tutti_poses: the nodes buffer holds fewer transforms than " +
-                      std::to_string(total) + " nodes of all models");
-    }
-    for (std::size_t m = 0; m < models; ++m) {
-      const tutti::performance::ModelPose& pose = p->sample.models[m];
-      if (root_capacity != 0) copy_trs(pose.root, roots[m]);
-      tutti_trs* first = nodes + p->node_offsets[m];
-      for (std::size_t n = 0; n < pose.local.size(); ++n) copy_trs(pose.local[n], first[n]);
-    }
+    *out = new tutti_context{p, p->performance->make_context(), {}, false};
     return TUTTI_OK;
+  });
+}
+
+void tutti_context_free(tutti_context* context) { delete context; }
+
+tutti_status tutti_context_sample(tutti_context* c, double t_s) {
+  return guarded<tutti_status>("tutti_context_sample", TUTTI_INTERNAL, [&] {
+    if (c == nullptr) return fail(TUTTI_INVALID_ARGUMENT, "tutti_context_sample: the context is NULL");
+    if (!std::isfinite(t_s)) {
+      return fail(TUTTI_INVALID_ARGUMENT,
+                  "tutti_context_sample: the time must be a finite number of seconds");
+    }
+    c->sampled = false;  // until the sample is whole
+    c->owner->performance->sample(c->context, t_s, c->sample, 0.0);
+    c->sampled = true;
+    return TUTTI_OK;
+  });
+}
+
+tutti_status tutti_context_poses(const tutti_context* c, tutti_trs* roots, int32_t root_capacity,
+                                 tutti_trs* nodes, int32_t node_capacity) {
+  return guarded<tutti_status>("tutti_context_poses", TUTTI_INTERNAL, [&] {
+    if (c == nullptr) return fail(TUTTI_INVALID_ARGUMENT, "tutti_context_poses: the context is NULL");
+    if (!c->sampled) {
+      return fail(TUTTI_INVALID_ARGUMENT, "tutti_context_poses: call tutti_context_sample first");
+    }
+    return write_poses("tutti_context_poses", c->sample, c->owner->node_offsets, roots,
+                       root_capacity, nodes, node_capacity);
+  });
+}
+
+tutti_status tutti_context_morph_weights(const tutti_context* c, int32_t model, float* out,
+                                         int32_t capacity) {
+  return guarded<tutti_status>("tutti_context_morph_weights", TUTTI_INTERNAL, [&] {
+    if (c == nullptr) {
+      return fail(TUTTI_INVALID_ARGUMENT, "tutti_context_morph_weights: the context is NULL");
+    }
+    if (!c->sampled) {
+      return fail(TUTTI_INVALID_ARGUMENT,
+                  "tutti_context_morph_weights: call tutti_context_sample first");
+    }
+    return write_morph_weights("tutti_context_morph_weights", c->sample, model, out, capacity);
   });
 }
 
@@ -448,14 +536,7 @@ tutti_status tutti_model_morph_weights(const tutti_performance* p, int32_t model
     if (tutti_status s = pose_of("tutti_model_morph_weights", p, model, &pose); s != TUTTI_OK) {
       return s;
     }
-    if (capacity < 0 || static_cast<std::size_t>(capacity) < pose->morph_weights.size() ||
-        (out == nullptr && !pose->morph_weights.empty())) {
-      return fail(TUTTI_INVALID_ARGUMENT,
-                  "tutti_model_morph_weights: the buffer holds fewer weights than " +
-                      std::to_string(pose->morph_weights.size()) + " morph targets");
-    }
-    for (std::size_t k = 0; k < pose->morph_weights.size(); ++k) out[k] = pose->morph_weights[k];
-    return TUTTI_OK;
+    return write_morph_weights("tutti_model_morph_weights", p->sample, model, out, capacity);
   });
 }
 

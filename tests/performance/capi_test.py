@@ -8,12 +8,15 @@ Opens the quartet, reads its performers, models, nodes and morphs, samples poses
 valve node goes down after its valve_down event and that the same t gives the same pose, reads
 the events, and checks the error paths (a missing scene, a bad index, a short buffer). Then the
 lasting surface: version numbers, event kinds by name, options with their struct_size, every
-failing call's message, all models' poses in one call, and a piece of music opened directly."""
+failing call's message, all models' poses in one call, and a piece of music opened directly.
+Last the contacts (tutti_contacts) and four threads sampling one performance in contexts of
+their own (tutti_context_*)."""
 import ctypes
 import math
 import os
 import sys
 import tempfile
+import threading
 
 
 class Trs(ctypes.Structure):
@@ -80,6 +83,11 @@ def load(path):
         "tutti_model_morph_weights": (i32, [p, i32, ctypes.POINTER(ctypes.c_float), i32]),
         "tutti_events": (i32, [p, f64, f64, ctypes.POINTER(Event), i32]),
         "tutti_contacts": (i32, [p, f64, f64, ctypes.POINTER(Contact), i32]),
+        "tutti_context_new": (i32, [p, ctypes.POINTER(p)]),
+        "tutti_context_free": (None, [p]),
+        "tutti_context_sample": (i32, [p, f64]),
+        "tutti_context_poses": (i32, [p, ctypes.POINTER(Trs), i32, ctypes.POINTER(Trs), i32]),
+        "tutti_context_morph_weights": (i32, [p, i32, ctypes.POINTER(ctypes.c_float), i32]),
     }
     for name, (restype, argtypes) in signatures.items():
         function = getattr(lib, name)
@@ -181,6 +189,7 @@ def main():
     check(lib.tutti_sample(p, float("nan")) == INVALID_ARGUMENT, "NaN time")
     check_lasting_surface(lib, p, scenes)
     check_contacts(lib, p, scenes)
+    check_contexts(lib, p)
     lib.tutti_close(p)
     print(f"capi test: passed ({len(performers)} performers, {len(models)} models, "
           f"{total} events, {len(first)} values per pose)")
@@ -303,6 +312,64 @@ def world_point(lib, p, roots, nodes, model, node, point):
         v = apply(nodes[offset + node], v)
         node = lib.tutti_node_parent(p, model, node)
     return apply(roots[model], v)
+
+
+def check_contexts(lib, p):
+    """Sampling from many threads: four Python threads (ctypes lets go of the GIL in each call),
+    each with its own context, pose the quartet at different times at once and get the bytes
+    tutti_sample and tutti_poses give on one thread."""
+    models, total = lib.tutti_model_count(p), lib.tutti_node_total(p)
+    body = next(m for m in range(models) if lib.tutti_model_name(p, m) == b"Trumpet 1")
+    morphs = lib.tutti_morph_count(p, body)
+    times = [lib.tutti_start_s(p) + 0.37 * k for k in range(40)]
+
+    def pose_bytes(sample, poses, weights):
+        roots, nodes = (Trs * models)(), (Trs * total)()
+        check(sample() == OK, lib.tutti_last_error())
+        check(poses(roots, models, nodes, total) == OK, lib.tutti_last_error())
+        w = (ctypes.c_float * morphs)()
+        check(weights(body, w, morphs) == OK, lib.tutti_last_error())
+        return bytes(roots) + bytes(nodes) + bytes(w)
+
+    expected = [pose_bytes(lambda t=t: lib.tutti_sample(p, t),
+                           lambda *a: lib.tutti_poses(p, *a),
+                           lambda *a: lib.tutti_model_morph_weights(p, *a)) for t in times]
+    contexts = []
+    for _ in range(4):
+        c = ctypes.c_void_p()
+        check(lib.tutti_context_new(p, ctypes.byref(c)) == OK, lib.tutti_last_error())
+        contexts.append(c)
+    check(lib.tutti_context_poses(contexts[0], None, 0, None, 0) == INVALID_ARGUMENT and
+          "tutti_context_sample first" in lib.tutti_last_error().decode(), "poses before sample")
+    got = [None] * len(times)
+    errors = []
+
+    def work(k):
+        try:
+            c = contexts[k]
+            for i in range(len(times) - 1 - k, -1, -4):
+                got[i] = pose_bytes(lambda: lib.tutti_context_sample(c, times[i]),
+                                    lambda *a: lib.tutti_context_poses(c, *a),
+                                    lambda *a: lib.tutti_context_morph_weights(c, *a))
+        except SystemExit as e:  # check() exits: report it from the main thread
+            errors.append(str(e))
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    check(not errors, errors)
+    differing = [round(times[i], 2) for i in range(len(times)) if got[i] != expected[i]]
+    check(not differing, f"contexts differ from tutti_sample at {differing}")
+    check(lib.tutti_context_sample(None, 1.0) == INVALID_ARGUMENT and
+          "NULL" in lib.tutti_last_error().decode(), "a null context")
+    check(lib.tutti_context_sample(contexts[0], float("inf")) == INVALID_ARGUMENT, "an infinite time")
+    check(lib.tutti_context_new(None, ctypes.byref(ctypes.c_void_p())) == INVALID_ARGUMENT,
+          "a context of no performance")
+    for c in contexts:
+        lib.tutti_context_free(c)
+    lib.tutti_context_free(None)
+    print(f"capi test: 4 threads, {len(times)} times, each pose as one thread's")
 
 
 def check_contacts(lib, p, scenes):
