@@ -172,6 +172,13 @@ void read_poses(const stage::Stage& stage, std::vector<ModelPose>& out) {
                     stage.instances().size(), out);
 }
 
+void read_poses(const stage::Stage& stage, const stage::StageContext& context,
+                std::vector<ModelPose>& out) {
+  read_posed_models(
+      [&context](std::size_t i) -> const stage::PlacedModel& { return context.placed(i); },
+      stage.instances().size(), out);
+}
+
 Performance::~Performance() = default;
 
 double Performance::start_s() const { return stage_->start_s(); }
@@ -296,9 +303,7 @@ void Performance::sample(SampleContext& context, double t_s, Sample& out,
                          double events_window_s) const {
   if (!context.state_) throw std::invalid_argument("Performance::sample: a moved-from context");
   stage_->run(context.state_->context, {t_s, 0.0});
-  const stage::StageContext& posed = context.state_->context;
-  read_posed_models([&posed](std::size_t i) -> const stage::PlacedModel& { return posed.placed(i); },
-                    stage_->instances().size(), out.models);
+  read_poses(*stage_, context.state_->context, out.models);
   fill_events(t_s, out, events_window_s);
 }
 

@@ -34,6 +34,7 @@ struct Scene;
 }
 namespace tutti::stage {
 class Stage;
+class StageContext;
 }
 
 namespace tutti::performance {
@@ -202,5 +203,8 @@ class Performance {
 // The models' poses as the stage's last run left them (what sample(t) and `tutti export` read):
 // rotations normalised, roots decomposed into TRS. `out` is resized to the stage's instances.
 void read_poses(const stage::Stage& stage, std::vector<ModelPose>& out);
+// The same as a context of the stage was last posed (Stage::run(context, ...)).
+void read_poses(const stage::Stage& stage, const stage::StageContext& context,
+                std::vector<ModelPose>& out);
 
 }  // namespace tutti::performance

@@ -31,9 +31,8 @@ void ContactRecorder::close(Open& entry) const {
   entry.open = false;
 }
 
-void ContactRecorder::record(const Stage& stage, double at_s) {
+void ContactRecorder::record(const Stage& stage, const ecs::World& world, double at_s) {
   ++frame_;
-  const ecs::World& world = stage.world();
   const std::vector<ecs::Entity>& instances = stage.instances();
   const auto instance_of = [&instances](ecs::Entity entity) {
     return static_cast<std::size_t>(std::find(instances.begin(), instances.end(), entity) -

@@ -42,7 +42,9 @@ class ContactRecorder {
  public:
   // Reads every performer's Touching after `stage` was posed (Phase::pose) for the frame at
   // `at_s`. Frames must come in time order; a touch missing from a frame ends its span.
-  void record(const Stage& stage, double at_s);
+  void record(const Stage& stage, double at_s) { record(stage, stage.world(), at_s); }
+  // The same for a frame posed in a context's world (Stage::run(context, ...)).
+  void record(const Stage& stage, const ecs::World& world, double at_s);
   // The contacts recorded so far, open spans closed at the last frame.
   std::vector<Contact> contacts() const;
 

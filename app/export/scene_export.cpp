@@ -8,7 +8,6 @@
 #include <set>
 
 #include <tutti/audio_sync/audio_clock.hpp>
-#include <tutti/audio_sync/audio_sync_system.hpp>
 #include <tutti/performance/performance.hpp>
 #include <tutti/export/glb_builder.hpp>
 #include <tutti/stage/contact_recorder.hpp>
@@ -47,7 +46,7 @@ struct InstanceSamples {
   std::vector<float> weights;
 };
 
-std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& range,
+std::vector<InstanceSamples> sample(const stage::Stage& stage, const ExportRange& range,
                                     stage::ContactRecorder& contacts) {
   const std::size_t instances = stage.instances().size();
   std::vector<InstanceSamples> samples(instances);
@@ -58,19 +57,17 @@ std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& rang
     samples[i].locals.reserve(frames * placed.pose.local.size());
     samples[i].weights.reserve(frames * placed.pose.morph_weights.size());
   }
-  // Frame k's time comes from the offline frame clock (the sync phase).
-  audio_sync::FrameClock clock;
-  clock.source = audio_sync::FrameClock::Source::offline;
-  clock.start_s = stage.start_s();
-  clock.fps = range.fps;
+  // Frame k is posed at the render's time for it (the offline frame clock), in a context of
+  // the export's own: the stage itself is left as it was.
+  stage::StageContext context = stage.make_context();
   std::vector<performance::ModelPose> poses;
   for (std::int64_t k = 0; k < range.frame_count; ++k) {
-    clock.frame = range.first_frame + k;
-    stage.world().set_resource(clock);
-    stage.run({});
+    const double t =
+        audio_sync::offline_frame_time(stage.start_s(), range.fps, range.first_frame + k);
+    stage.run(context, {t, 1.0 / range.fps});
     // The poses a host reads from tutti::performance (rotations normalised, roots as TRS).
-    performance::read_poses(stage, poses);
-    contacts.record(stage, static_cast<double>(k) / range.fps);  // the clip's time
+    performance::read_poses(stage, context, poses);
+    contacts.record(stage, context.world(), static_cast<double>(k) / range.fps);  // clip time
     for (std::size_t i = 0; i < instances; ++i) {
       const performance::ModelPose& pose = poses[i];
       InstanceSamples& s = samples[i];
@@ -79,7 +76,6 @@ std::vector<InstanceSamples> sample(stage::Stage& stage, const ExportRange& rang
       s.weights.insert(s.weights.end(), pose.morph_weights.begin(), pose.morph_weights.end());
     }
   }
-  stage.world().set_resource(audio_sync::FrameClock{});
   return samples;
 }
 
@@ -92,7 +88,7 @@ struct WrittenModel {
 
 class Writer {
  public:
-  Writer(stage::Stage& stage, const ExportRange& range, const KeyTolerances& tolerances)
+  Writer(const stage::Stage& stage, const ExportRange& range, const KeyTolerances& tolerances)
       : stage_(stage), range_(range), tolerances_(tolerances) {}
 
   ExportSummary run() {
@@ -606,7 +602,7 @@ class Writer {
     return summary;
   }
 
-  stage::Stage& stage_;
+  const stage::Stage& stage_;
   ExportRange range_;
   KeyTolerances tolerances_;
   GlbBuilder builder_;
@@ -620,7 +616,7 @@ class Writer {
 
 }  // namespace
 
-Result<ExportSummary> export_performance(stage::Stage& stage, const ExportRange& range,
+Result<ExportSummary> export_performance(const stage::Stage& stage, const ExportRange& range,
                                          const KeyTolerances& tolerances) {
   if (range.frame_count <= 0) return Error{stage.scene().source + ": nothing to export"};
   if (range.fps <= 0) return Error{stage.scene().source + ": fps must be positive"};

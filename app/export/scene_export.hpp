@@ -54,9 +54,9 @@ struct ExportSummary {
   double duration_s = 0.0;  // the clip length: (frame_count - 1) / fps
 };
 
-// Errors: an empty range. Evaluates the stage at every exported frame (the stage is left posed at
-// the last one).
-Result<ExportSummary> export_performance(stage::Stage& stage, const ExportRange& range,
+// Errors: an empty range. Poses every exported frame in a context of its own
+// (Stage::make_context): the stage itself is left as it was.
+Result<ExportSummary> export_performance(const stage::Stage& stage, const ExportRange& range,
                                          const KeyTolerances& tolerances = {});
 
 }  // namespace tutti::gltf_export
