@@ -21,7 +21,7 @@
 #include <tutti/audio/wav_file.hpp>
 #include <tutti/image/png.hpp>
 #include <tutti/render/frame_target.hpp>
-#include <tutti/audio_sync/audio_sync_system.hpp>
+#include <tutti/audio_sync/audio_clock.hpp>
 #include <tutti/render/model_renderer.hpp>
 #include <tutti/render/offscreen_target.hpp>
 #include <tutti/render/vulkan_context.hpp>
@@ -249,19 +249,13 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     pending_frame = -1;
     return Status::success();
   };
-  // Frame k's time comes from the offline frame clock (the sync phase); a still shows its time.
-  audio_sync::FrameClock clock;
-  if (o.still.empty()) {
-    clock.source = audio_sync::FrameClock::Source::offline;
-    clock.start_s = st.start_s();
-    clock.fps = fps;
-    clock.tempo_factor = o.tempo;
-  }
+  // Frame k is posed at its time on the offline frame clock (where the rendered sound has it),
+  // given as the frame's time; a still shows its own time.
   for (std::int64_t k = range.first; k < range.end; ++k) {
-    clock.frame = k;
-    st.world().set_resource(clock);
-    st.run({o.still.empty() ? 0.0 : std::strtod(o.still.c_str(), nullptr), 0.0});
-    const double t = st.world().resource<ecs::FrameTime>()->t_s;
+    const double t = o.still.empty()
+                         ? audio_sync::offline_frame_time(st.start_s(), fps, k, o.tempo)
+                         : std::strtod(o.still.c_str(), nullptr);
+    st.run({t, o.still.empty() ? o.tempo / fps : 0.0});
     auto frame = (*target)->begin_frame();
     if (!frame) return fail(frame.error());
     if (Status s = (*renderer)->record(
