@@ -6,7 +6,7 @@
 #include <array>
 #include <cstdint>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 inline constexpr std::array<std::array<std::uint8_t, 5>, 10> kDigits3x5{{
     {0b111, 0b101, 0b101, 0b101, 0b111},  // 0
@@ -21,4 +21,4 @@ inline constexpr std::array<std::array<std::uint8_t, 5>, 10> kDigits3x5{{
     {0b111, 0b101, 0b111, 0b001, 0b111},  // 9
 }};
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

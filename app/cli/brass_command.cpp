@@ -20,7 +20,7 @@
 #include <tutti/music/load_score.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::string lower(std::string text) {
@@ -272,4 +272,4 @@ void register_brass_command(Commands& commands) {
       [options](std::ostream& out, std::ostream& err) { return run_brass(*options, out, err); });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -11,7 +11,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct BrassOptions {
   std::filesystem::path file;
@@ -26,4 +26,4 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
 // Adds `tutti brass` and its options to `tutti`, and its run to `commands`.
 void register_brass_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

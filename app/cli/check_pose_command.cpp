@@ -11,7 +11,7 @@
 #include <tutti/cli/pose_check.hpp>
 #include <tutti/cli/stage_scene.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 int run_check_pose(const CheckPoseOptions& o, std::ostream& out, std::ostream& err) {
   const Fail fail{err};
@@ -92,4 +92,4 @@ void register_check_pose_command(Commands& commands) {
   });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -10,7 +10,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct CheckPoseOptions {
   std::filesystem::path scene;
@@ -29,4 +29,4 @@ int run_check_pose(const CheckPoseOptions& options, std::ostream& out, std::ostr
 // Adds `tutti check-pose` and its options to `commands`.
 void register_check_pose_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

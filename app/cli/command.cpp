@@ -6,7 +6,7 @@
 #include <tutti/core/exit_codes.hpp>
 #include <tutti/core/did_you_mean.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 Command& Command::flag(std::string names, bool& target, std::string help) {
   options_.push_back({std::move(names), std::move(help), OptionTarget(&target), true, false});
@@ -131,4 +131,4 @@ int Commands::run(int argc, const char* const* argv, const std::string& descript
   return kExitBadInput;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

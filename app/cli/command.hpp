@@ -15,7 +15,7 @@
 #include <variant>
 #include <vector>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 // Runs a parsed subcommand with the options it was given. Returns the exit code
 // (exit_codes.hpp).
@@ -80,4 +80,4 @@ class Commands {
   std::deque<Command> commands_;
 };
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

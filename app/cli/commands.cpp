@@ -14,7 +14,7 @@
 #include <tutti/cli/render_command.hpp>
 #include <tutti/cli/sync_report_command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 void register_commands(Commands& commands) {
   register_info_command(commands);
@@ -32,4 +32,4 @@ void register_commands(Commands& commands) {
   register_play_command(commands);
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

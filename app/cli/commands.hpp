@@ -5,9 +5,9 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 // Adds each subcommand, with its options and its run, to `commands`.
 void register_commands(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

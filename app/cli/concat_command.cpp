@@ -18,7 +18,7 @@
 #include <tutti/performance/families.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -185,4 +185,4 @@ void register_concat_command(Commands& commands) {
   });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

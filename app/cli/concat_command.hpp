@@ -14,7 +14,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct ConcatOptions {
   std::filesystem::path scene;  // the scene the slices were rendered from (for the sound)
@@ -30,4 +30,4 @@ int run_concat(const ConcatOptions& options, std::ostream& out, std::ostream& er
 // Adds `tutti concat` and its options to `tutti`, and its run to `commands`.
 void register_concat_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

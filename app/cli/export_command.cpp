@@ -14,7 +14,7 @@
 #include <tutti/cli/stage_scene.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   const Fail fail{err};
@@ -108,4 +108,4 @@ void register_export_command(Commands& commands) {
       [options](std::ostream& out, std::ostream& err) { return run_export(*options, out, err); });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -12,7 +12,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct ExportOptions {
   std::filesystem::path scene;
@@ -29,4 +29,4 @@ int run_export(const ExportOptions& options, std::ostream& out, std::ostream& er
 // Adds `tutti export` and its options to `tutti`, and its run to `commands`.
 void register_export_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

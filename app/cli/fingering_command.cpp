@@ -16,7 +16,7 @@
 #include <tutti/music/pig/pig_format.hpp>
 #include <tutti/piano_performance/performance_plan.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -191,4 +191,4 @@ void register_fingering_command(Commands& commands) {
   });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

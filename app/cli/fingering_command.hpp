@@ -12,7 +12,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct FingeringOptions {
   std::filesystem::path input{};
@@ -37,4 +37,4 @@ int run_fingering(const FingeringOptions& options, std::ostream& out, std::ostre
 // Adds `tutti fingering` and its options to `tutti`, and its run to `commands`.
 void register_fingering_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

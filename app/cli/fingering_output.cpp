@@ -10,7 +10,7 @@
 #include <tutti/music/midi/midi_writer.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 const char* hand_name(music::Hand hand) {
@@ -160,4 +160,4 @@ std::vector<std::uint8_t> fingering_midi(const music::Score& fingered) {
   return music::write_midi(score);
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

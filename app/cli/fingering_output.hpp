@@ -18,7 +18,7 @@
 #include <tutti/music/score.hpp>
 #include <tutti/piano_performance/performance_plan.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 // The score with Note::finger and Note::hand from the plan (substitutions cleared).
 music::Score fingered_score(const music::Score& score, const piano::ScorePlan& plan);
@@ -47,4 +47,4 @@ int apply_finger_labels(music::Score& score);
 // input tutti wrote) are replaced, not duplicated.
 std::vector<std::uint8_t> fingering_midi(const music::Score& fingered);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

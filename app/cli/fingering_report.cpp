@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 // snprintf into a string of the needed size (a natural-spline path's peaks can be huge numbers).
@@ -60,4 +60,4 @@ std::string fingering_report_text(const music::Score& score,
   return text;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -9,10 +9,10 @@
 #include <tutti/music/score.hpp>
 #include <tutti/piano_performance/performance_plan.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 std::string fingering_report_text(const music::Score& score,
                                   const piano_performance::PianoPerformancePlan& plan,
                                   int max_diagnostic_lines = 5);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -11,7 +11,7 @@
 #include <tutti/fingering_planner/weight_fitting.hpp>
 #include <tutti/music/load_score.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 namespace {
 
@@ -84,4 +84,4 @@ void register_fit_fingering_command(Commands& commands) {
   });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

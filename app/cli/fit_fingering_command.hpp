@@ -14,7 +14,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct FitFingeringOptions {
   std::vector<std::filesystem::path> inputs;
@@ -31,4 +31,4 @@ int run_fit_fingering(const FitFingeringOptions& options, std::ostream& out, std
 // Adds `tutti fit-fingering` and its options to `tutti`, and its run to `commands`.
 void register_fit_fingering_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

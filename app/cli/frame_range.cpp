@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 Result<double> parse_number(const std::string& text, const std::string& what) {
@@ -76,4 +76,4 @@ Result<FrameRange> parse_seconds_range(const std::string& text, double start_s, 
   return range;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -9,7 +9,7 @@
 #include <tutti/audio_sync/audio_clock.hpp>
 #include <tutti/core/result.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct FrameRange {
   std::int64_t first = 0;  // inclusive
@@ -31,4 +31,4 @@ inline double frame_time(double start_s, int fps, std::int64_t frame, double tem
   return audio_sync::offline_frame_time(start_s, fps, frame, tempo_factor);
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -22,7 +22,7 @@
 #include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 namespace {
 
@@ -92,4 +92,4 @@ void register_info_command(Commands& commands) {
       [options](std::ostream& out, std::ostream& err) { return run_info(*options, out, err); });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

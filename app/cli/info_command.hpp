@@ -9,7 +9,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct InfoOptions {
   std::filesystem::path file;
@@ -23,4 +23,4 @@ int run_info(const InfoOptions& options, std::ostream& out, std::ostream& err);
 // Adds `tutti info` and its options to `tutti`, and its run to `commands`.
 void register_info_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -8,8 +8,8 @@
 #include <tutti/cli/commands.hpp>
 
 int main(int argc, char** argv) {
-  tutti::app::Commands commands;
-  tutti::app::register_commands(commands);
+  tutti::cli::Commands commands;
+  tutti::cli::register_commands(commands);
   return commands.run(argc, argv, "tutti: music to animated performances",
                       std::string("tutti ") + TUTTI_VERSION, std::cout, std::cerr);
 }

@@ -15,7 +15,7 @@
 #include <tutti/piano_model/content_dir.hpp>
 #include <tutti/piano_performance/performance_plan.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 nlohmann::json notes_json(const music::Score& score,
@@ -142,4 +142,4 @@ void register_perform_command(Commands& commands) {
       [options](std::ostream& out, std::ostream& err) { return run_perform(*options, out, err); });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -14,7 +14,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct PerformOptions {
   std::filesystem::path input;
@@ -31,4 +31,4 @@ int run_perform(const PerformOptions& options, std::ostream& out, std::ostream& 
 // Adds `tutti perform` and its options to `tutti`, and its run to `commands`.
 void register_perform_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -8,7 +8,7 @@
 #include <tutti/cli/bitmap_font.hpp>
 #include <tutti/image/png.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 struct Rgb {
@@ -230,4 +230,4 @@ Status write_png(const std::filesystem::path& path, const PlotImage& image) {
                           static_cast<std::uint32_t>(image.height), 3);
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -20,7 +20,7 @@
 #include <tutti/piano_model/keyboard.hpp>
 #include <tutti/piano_performance/performance_plan.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct PlotWindow {
   double start_s = 0.0;
@@ -47,4 +47,4 @@ PlotImage plot_piano_roll(const music::Score& fingered,
 // The plot as a PNG file (image/png.hpp: deterministic, written atomically).
 Status write_png(const std::filesystem::path& path, const PlotImage& image);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

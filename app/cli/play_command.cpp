@@ -32,7 +32,7 @@
 #include <tutti/runtime/view_stats.hpp>
 #include <tutti/scene/load_scene.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 // A whole string as a finite number (seconds, a scale); nullopt otherwise.
@@ -404,4 +404,4 @@ void register_play_command(Commands& commands) {
       [options](std::ostream& out, std::ostream& err) { return run_play(*options, out, err); });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -12,7 +12,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct PlayOptions {
   std::filesystem::path scene;
@@ -45,4 +45,4 @@ int run_play(const PlayOptions& options, std::ostream& out, std::ostream& err);
 // Adds `tutti play` and its options to `tutti`, and its run to `commands`.
 void register_play_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -6,7 +6,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/live/alsa_midi_source.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 Result<std::unique_ptr<LivePlay>> LivePlay::open(const LivePlayOptions& options,
                                                  const scene::Scene& scene) {
@@ -86,4 +86,4 @@ std::string LivePlay::describe() const {
   return "play: live input: " + text + (synth_ ? ", sound on " + synth_->device() : "");
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -19,7 +19,7 @@
 #include <tutti/scene/scene.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct LivePlayOptions {
   std::string midi_in;  // "" = none; "auto", "none" (open, connect nothing), "client:port", name
@@ -59,4 +59,4 @@ class LivePlay {
   int notes_ = 0;
 };
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

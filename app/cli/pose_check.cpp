@@ -26,7 +26,7 @@
 #include <tutti/piano/hand_capsules.hpp>
 #include <tutti/piano/piano_components.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 constexpr const char* kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
@@ -811,4 +811,4 @@ std::string format_pose_report(const PoseReport& report) {
   return out;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

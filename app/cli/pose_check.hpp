@@ -14,7 +14,7 @@
 #include <tutti/core/result.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct PoseCheckOptions {
   double from_s = 0.0;  // music time of the first frame
@@ -73,4 +73,4 @@ Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& optio
 // The report as a table, one measure a line: samples, median, p95, max, limit, ok.
 std::string format_pose_report(const PoseReport& report);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -32,7 +32,7 @@
 #include <tutti/performance/families.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 enum class OutputKind { video, png, folder };
@@ -332,4 +332,4 @@ void register_render_command(Commands& commands) {
   });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -11,7 +11,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct RenderOptions {
   std::filesystem::path scene;
@@ -40,4 +40,4 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
 // Adds `tutti render` and its options to `tutti`, and its run to `commands`.
 void register_render_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -15,7 +15,7 @@
 #include <tutti/scene/asset_mapping.hpp>
 #include <tutti/stage/model_binding.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::string axis_name(const glm::vec3& v) {
@@ -181,4 +181,4 @@ void register_rig_command(Commands& commands) {
   });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

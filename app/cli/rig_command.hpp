@@ -11,7 +11,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct RigOptions {
   std::filesystem::path model;
@@ -24,4 +24,4 @@ int run_rig(const RigOptions& options, std::ostream& out, std::ostream& err);
 
 void register_rig_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

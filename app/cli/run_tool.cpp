@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 Result<std::string> run_tool(const std::vector<std::string>& args, const std::string& what) {
   if (args.empty()) return Error{what + ": no program to run"};
@@ -73,4 +73,4 @@ Result<std::string> run_tool(const std::vector<std::string>& args, const std::st
   return out;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -10,9 +10,9 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 // args[0] is the program. Its stdout is returned (capped at 1 MiB).
 Result<std::string> run_tool(const std::vector<std::string>& args, const std::string& what);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -8,7 +8,7 @@
 #include <tutti/audio/synth_events.hpp>
 #include <tutti/runtime/scene_sound.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::int64_t audio_frame_of_video_frame(std::int64_t k, int fps, int sample_rate) {
@@ -47,4 +47,4 @@ Result<audio::AudioBuffer> render_scene_audio(const stage::Stage& stage, int fps
   return slice;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -12,7 +12,7 @@
 #include <tutti/core/result.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct SceneAudioOptions {
   std::filesystem::path sound_font;  // empty: find_sound_font()'s search
@@ -27,4 +27,4 @@ Result<audio::AudioBuffer> render_scene_audio(const stage::Stage& stage, int fps
                                               std::int64_t first_frame, std::int64_t end_frame,
                                               const SceneAudioOptions& options = {});
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

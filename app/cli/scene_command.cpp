@@ -10,7 +10,7 @@
 #include <tutti/performance/draft_scene.hpp>
 #include <tutti/scene/load_scene.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 int run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
   const Fail fail{err};
@@ -66,4 +66,4 @@ void register_scene_command(Commands& commands) {
   });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

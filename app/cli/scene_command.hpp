@@ -11,7 +11,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct SceneOptions {
   std::string action;  // "new"
@@ -24,4 +24,4 @@ int run_scene(const SceneOptions& options, std::ostream& out, std::ostream& err)
 
 void register_scene_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

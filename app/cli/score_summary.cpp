@@ -9,7 +9,7 @@
 #include <tutti/music/general_midi.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 ScoreSummary summarize(const music::Score& score, const std::string& format) {
   ScoreSummary summary;
@@ -164,4 +164,4 @@ std::string summary_json(const ScoreSummary& s) {
   return root.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -8,7 +8,7 @@
 
 #include <tutti/music/score.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct PartSummary {
   std::string id;
@@ -47,4 +47,4 @@ std::string summary_text(const ScoreSummary& summary);
 // Keys in a fixed order; the same score always gives the same bytes.
 std::string summary_json(const ScoreSummary& summary);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 Result<Size> parse_size_option(const std::string& text, int min_width, int min_height,
                                bool even) {
@@ -19,4 +19,4 @@ Result<Size> parse_size_option(const std::string& text, int min_width, int min_h
   return size;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -8,7 +8,7 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct Size {
   int width = 0;
@@ -18,4 +18,4 @@ struct Size {
 Result<Size> parse_size_option(const std::string& text, int min_width, int min_height,
                                bool even);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

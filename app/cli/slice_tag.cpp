@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 std::string format_slice_tag(const SliceTag& tag) {
   char text[200];
@@ -37,4 +37,4 @@ std::optional<SliceTag> parse_slice_tag(std::string_view text) {
   return SliceTag{first, end, fps, tempo, width, height, lossless == 1};
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct SliceTag {
   std::int64_t first = 0;  // frames [first, end) of the scene
@@ -26,4 +26,4 @@ std::string format_slice_tag(const SliceTag& tag);
 // nullopt: not a tutti slice tag (or a malformed one).
 std::optional<SliceTag> parse_slice_tag(std::string_view text);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

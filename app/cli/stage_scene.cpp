@@ -4,7 +4,7 @@
 #include <tutti/performance/draft_scene.hpp>
 #include <tutti/performance/families.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 Result<std::unique_ptr<stage::Stage>> stage_scene_file(const std::filesystem::path& scene_file,
                                                        const std::filesystem::path& assets) {
@@ -17,4 +17,4 @@ Result<std::unique_ptr<stage::Stage>> stage_scene_file(const std::filesystem::pa
   return std::move(*staged);
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

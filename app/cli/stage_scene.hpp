@@ -14,10 +14,10 @@
 #include <tutti/scene/scene.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 // `assets`: the folder of the generated .glb files; empty: the build's or the installation's.
 Result<std::unique_ptr<stage::Stage>> stage_scene_file(const std::filesystem::path& scene_file,
                                                        const std::filesystem::path& assets);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -9,7 +9,7 @@
 #include <tutti/fingering_planner/streaming_report.hpp>
 #include <tutti/music/load_score.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::string percent(int part, int whole) {
@@ -81,4 +81,4 @@ int run_stream_report(const StreamReportOptions& o, std::ostream& out, std::ostr
   return kExitOk;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct StreamReportOptions {
   std::vector<std::filesystem::path> inputs;
@@ -19,4 +19,4 @@ struct StreamReportOptions {
 
 int run_stream_report(const StreamReportOptions& options, std::ostream& out, std::ostream& err);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "The streaming fingering planner against the exact one: per file and lookahead, the share "
       "of notes with the exact plan's finger and the cost ratio (Markdown table)"};
-  tutti::app::StreamReportOptions options;
+  tutti::cli::StreamReportOptions options;
   app.add_option("FILES", options.inputs, "scores (MusicXML, MIDI, PIG)")->required();
   app.add_option("--lookahead", options.lookaheads, "future events each decision waits for")
       ->delimiter(',');
@@ -21,5 +21,5 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  return tutti::app::run_stream_report(options, std::cout, std::cerr);
+  return tutti::cli::run_stream_report(options, std::cout, std::cerr);
 }

@@ -10,7 +10,7 @@
 #include <tutti/components/performer.hpp>
 #include <tutti/stage/contact_detector.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::string performer_name(const ecs::World& world, ecs::Entity entity, const char* fallback) {
@@ -147,4 +147,4 @@ SyncFigures measure_sync(const std::vector<Contact>& contacts, const audio::Audi
   return figures;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

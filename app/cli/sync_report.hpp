@@ -18,7 +18,7 @@
 #include <tutti/audio/onset_detection.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 enum class ContactKind { key_bottom, valve_down, valve_up, slide_arrives, tongue };
 const char* contact_kind_name(ContactKind kind);
@@ -67,4 +67,4 @@ struct SyncOptions {
 SyncFigures measure_sync(const std::vector<Contact>& contacts, const audio::AudioBuffer& audio,
                          double audio_start_s, const SyncOptions& options);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

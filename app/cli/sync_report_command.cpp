@@ -19,7 +19,7 @@
 #include <tutti/audio/wav_file.hpp>
 #include <tutti/cli/stage_scene.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::string format(const char* pattern, double value) {
@@ -190,4 +190,4 @@ void register_sync_report_command(Commands& commands) {
   });
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

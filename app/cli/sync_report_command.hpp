@@ -10,7 +10,7 @@
 
 #include <tutti/cli/command.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct SyncReportOptions {
   std::filesystem::path scene;
@@ -37,4 +37,4 @@ int run_sync_report(const SyncReportOptions& options, std::ostream& out, std::os
 // Adds `tutti sync-report` and its options to `tutti`, and its run to `commands`.
 void register_sync_report_command(Commands& commands);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

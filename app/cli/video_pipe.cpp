@@ -12,7 +12,7 @@
 #include <sstream>
 #include <vector>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 Result<std::unique_ptr<VideoPipe>> VideoPipe::open(const std::filesystem::path& path,
                                                    std::uint32_t width, std::uint32_t height,
@@ -133,4 +133,4 @@ Status VideoPipe::finish() {
   return Status::success();
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -15,7 +15,7 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 struct VideoEncoding {
   // x264 at -qp 0: every decoded frame is exactly the frame given (in yuv420p), so slices
@@ -50,4 +50,4 @@ class VideoPipe {
   std::filesystem::path log_;
 };
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -4,7 +4,7 @@
 #include <tutti/fingering_planner/cost_weights.hpp>
 #include <tutti/piano_model/content_dir.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 namespace fs = std::filesystem;
 
@@ -24,4 +24,4 @@ Result<piano::FingeringModel> load_model_with_weights(const std::string& weights
   return model;
 }
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

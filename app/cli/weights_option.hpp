@@ -10,11 +10,11 @@
 #include <tutti/core/result.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 
 // content_dir empty = piano::default_content_dir(); hand_size empty = hands.json's default.
 Result<piano::FingeringModel> load_model_with_weights(const std::string& weights,
                                                       const std::string& hand_size,
                                                       const std::filesystem::path& content_dir);
 
-}  // namespace tutti::app
+}  // namespace tutti::cli

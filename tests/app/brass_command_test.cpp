@@ -16,7 +16,7 @@
 #include <tutti/music/midi/midi_writer.hpp>
 #include "testdata.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 struct BrassRun {
@@ -124,9 +124,9 @@ TEST(BrassCommandTest, BadUsageIsOneLineAndExitTwo) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 // A MIDI file with one part on General MIDI program `program` (0-based) and these notes, one
@@ -196,4 +196,4 @@ TEST(BrassCommandTest, AMidiTrumpetIsABFlatTrumpet) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

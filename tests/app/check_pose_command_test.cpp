@@ -11,7 +11,7 @@
 
 #include "command_run.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes";
@@ -54,4 +54,4 @@ TEST(CheckPoseCommand, BadInputIsOneLineAndExitTwo) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 struct Outcome {
@@ -83,4 +83,4 @@ TEST(ExitCodes, EachKindOfErrorHasItsCode) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

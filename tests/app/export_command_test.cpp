@@ -16,7 +16,7 @@
 #include <tutti/core/file_io.hpp>
 #include "testdata.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -96,4 +96,4 @@ TEST(ExportCommand, BadInputIsOneLineAndLeavesTheOldFile) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -21,7 +21,7 @@
 #include <tutti/music/pig/pig_format.hpp>
 #include "testdata.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -400,4 +400,4 @@ TEST_F(FingeringCommandTest, PlotHasTheDocumentedSizeAndIsDeterministic) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

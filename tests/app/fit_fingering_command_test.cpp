@@ -11,7 +11,7 @@
 #include <tutti/fingering_planner/cost_weights.hpp>
 #include "testdata.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -83,4 +83,4 @@ TEST(FitFingeringCommandTest, FilesWithoutMarksAndBadOptionsAreOneLineErrors) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -15,7 +15,7 @@
 #include <tutti/core/exit_codes.hpp>
 #include "testdata.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -132,9 +132,9 @@ TEST_F(InfoCommandTest, AgreesWithMidoOnEveryValidMidiFile) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 // `tutti info --schedule SCENE`: the frame's phases with their systems, in run order, and what
@@ -182,4 +182,4 @@ TEST(InfoSchedule, ABrokenSceneIsOneLine) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

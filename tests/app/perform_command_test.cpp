@@ -16,7 +16,7 @@
 #include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -123,4 +123,4 @@ TEST(PerformCommand, BadInputIsAOneLineError) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -29,7 +29,7 @@
 #include "scratch_dir.hpp"
 #include "testdata.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 using performance::build_stage;
@@ -551,4 +551,4 @@ TEST(PoseCheck, AnEmptyRangeIsAnError) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -19,7 +19,7 @@
 #include <tutti/audio/wav_file.hpp>
 #include <tutti/render/vulkan_context.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::filesystem::path scene_path() {
@@ -341,4 +341,4 @@ TEST_F(RenderCommandTest, BadOptionsAreOneLineErrors) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -23,7 +23,7 @@
 std::vector<std::uint8_t> decode_png_for_test(const std::vector<std::uint8_t>& png, int& width,
                                               int& height);
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::vector<std::uint8_t> read_file(const std::filesystem::path& path) {
@@ -146,4 +146,4 @@ INSTANTIATE_TEST_SUITE_P(Scenes, RenderGoldenTest,
                          });
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -24,7 +24,7 @@
 #include "command_run.hpp"
 #include "scratch_dir.hpp"
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 const std::filesystem::path kAssets(TUTTI_APP_TEST_ASSET_DIR);
@@ -158,4 +158,4 @@ TEST(RigCommand, BrokenRigsAreOneLineNamingTheProblem) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 TEST(SliceTag, RoundTrips) {
@@ -28,4 +28,4 @@ TEST(SliceTag, AnythingElseIsNotATag) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

@@ -20,7 +20,7 @@
 #include <tutti/cli/sync_report_command.hpp>
 #include <tutti/scene/load_scene.hpp>
 
-namespace tutti::app {
+namespace tutti::cli {
 namespace {
 
 std::filesystem::path scene_file(const char* name) {
@@ -217,4 +217,4 @@ TEST(SyncReport, BadOptionsAreOneLineErrors) {
 }
 
 }  // namespace
-}  // namespace tutti::app
+}  // namespace tutti::cli

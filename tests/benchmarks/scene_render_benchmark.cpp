@@ -80,11 +80,11 @@ void run_frames(benchmark::State& state, const char* scene_name, Work work) {
   auto fixture = make_fixture(state, scene_name, samples);
   if (!fixture) return;
   tutti::stage::Stage& stage = *fixture->stage;
-  std::unique_ptr<tutti::app::VideoPipe> video;
+  std::unique_ptr<tutti::cli::VideoPipe> video;
   const std::filesystem::path video_path =
       std::filesystem::temp_directory_path() / "tutti_scene_render_benchmark.mp4";
   if (work == Work::encode) {
-    auto opened = tutti::app::VideoPipe::open(video_path, kWidth, kHeight, kFps);
+    auto opened = tutti::cli::VideoPipe::open(video_path, kWidth, kHeight, kFps);
     if (!opened) {
       state.SkipWithError(opened.error().message.c_str());
       return;

@@ -25,10 +25,10 @@
 namespace tutti::performance {
 namespace {
 
-using app::check_pose;
-using app::PoseCheckOptions;
-using app::PoseMeasure;
-using app::PoseReport;
+using cli::check_pose;
+using cli::PoseCheckOptions;
+using cli::PoseMeasure;
+using cli::PoseReport;
 
 const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
 
