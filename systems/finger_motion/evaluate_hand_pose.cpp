@@ -56,6 +56,14 @@ Baseline baseline(const FingerMotionPlan& plan, const FingerGeometry& g, const K
 }
 
 // The cached shape when the bend is one of the planned values, else computed.
+// The most a holding finger bends to keep its pad on its spot (about 92°: past it the finger
+// would stand on its nail).
+constexpr double kMostHoldingBendRad = 1.6;
+// How far a holding finger takes up the hand's move in or out (mm), and the least share of its
+// reach into the keys it keeps doing so.
+constexpr double kMostHeldInMm = 10.0;
+constexpr double kLeastHeldReachShare = 0.8;
+
 ChainShape shape_for(const FingerMotionPlan& plan, std::size_t f, double bend_rad) {
   if (bend_rad == plan.white_shape[f].bend_rad) return plan.white_shape[f];
   if (bend_rad == plan.black_shape[f].bend_rad) return plan.black_shape[f];
@@ -136,10 +144,35 @@ void evaluate_finger_pose(const FingerMotionPlan& plan, components::HandSide sid
 
   // z is where the finger meets the key (its pad); the fingertip is held pad_drop above it.
   const double root_z = g.root_z_mm + lift;
-  const ChainShape shape = lift > 0.0
-                               ? reaching_shape(g, shape_for(plan, f, bend), root_z - (z + g.pad_drop_mm))
-                               : shape_for(plan, f, bend);
-  const StrokeSolution stroke = solve_stroke(shape, root_z - (z + g.pad_drop_mm));
+  ChainShape shape = lift > 0.0
+                         ? reaching_shape(g, shape_for(plan, f, bend), root_z - (z + g.pad_drop_mm))
+                         : shape_for(plan, f, bend);
+  StrokeSolution stroke = solve_stroke(shape, root_z - (z + g.pad_drop_mm));
+  // A finger holding its key keeps its pad where it landed: when the hand reaches in or out
+  // meanwhile (for a black key under another finger), the finger straightens or flexes rather
+  // than sliding along the key (it slid up to 12 mm, tests/export/check_contacts.py).
+  // As the key rises the finger eases back to its own shape (minimum jerk over the release):
+  // it is leaving the key, and a sudden return would snap the joints.
+  // Fingers 2-5 only, and not while the hand passes over the other one (its fingers reach down
+  // straighter then: reaching_shape). The thumb lies along the keys on its side: flexing its
+  // MCP and IP to take up a move dips it toward the other hand's thumb.
+  if (touching != nullptr && f != 0 && lift == 0.0 && t_s > touching->onset_s &&
+      t_s < touching->release_end_s) {
+    const double letting_go =
+        t_s <= touching->offset_s ? 0.0 : min_jerk((t_s - touching->offset_s) * touching->inv_release_s);
+    const double moved_in =
+        (1.0 - letting_go) *
+        (tutti::spline_motion::evaluate_plateau_envelope(hand.reach_in, t_s) -
+         tutti::spline_motion::evaluate_plateau_envelope(hand.reach_in, touching->onset_s));
+    if (moved_in != 0.0) {
+      // Up to a centimetre, and never pulling the tip in under the knuckle (its spread would
+      // swing as the reach shrinks): beyond that the pad slides.
+      const double reach = std::max(stroke.reach_y_mm - std::clamp(moved_in, -kMostHeldInMm, kMostHeldInMm),
+                                    kLeastHeldReachShare * stroke.reach_y_mm);
+      shape = shape_reaching_y(g, root_z - (z + g.pad_drop_mm), reach, kMostHoldingBendRad);
+      stroke = solve_stroke(shape, root_z - (z + g.pad_drop_mm));
+    }
+  }
   const double mirror = side == components::HandSide::left ? -1.0 : 1.0;
   out.spread_rad = spread_angle_rad(x - rest_x, stroke.reach_y_mm, mirror);
   if (f == 0) {  // thumb: strikes by abduction; the bend is its MCP and IP

@@ -96,6 +96,25 @@ inline ChainShape reaching_shape(const FingerGeometry& g, const ChainShape& plan
   return chain_shape(g, straight);
 }
 
+// The shape whose stroke over `drop_mm` reaches `reach_y_mm` into the keys: a finger holding its
+// key while the hand moves in or out flexes or straightens to keep its pad where it landed.
+// Bisection over the bend between straight and `most_bend_rad` (a bend flexes the tip back toward
+// the palm: the reach falls as the bend grows); a reach out of that range gets the nearest end.
+inline ChainShape shape_reaching_y(const FingerGeometry& g, double drop_mm, double reach_y_mm,
+                                   double most_bend_rad) noexcept {
+  double straight = 0.0;
+  double bent = most_bend_rad;
+  for (int round = 0; round < 16; ++round) {
+    const double mid = 0.5 * (straight + bent);
+    if (solve_stroke(chain_shape(g, mid), drop_mm).reach_y_mm > reach_y_mm) {
+      straight = mid;
+    } else {
+      bent = mid;
+    }
+  }
+  return chain_shape(g, 0.5 * (straight + bent));
+}
+
 // The spread angle: the direction of the horizontal root->tip line, atan(d / y), where d is the
 // tip's lateral offset (keyboard x) from the finger's rest line and y its reach into the keys.
 // `mirror` = +1 for the right hand, -1 for the left, so > 0 always means toward the little finger.

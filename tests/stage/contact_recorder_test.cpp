@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
@@ -117,6 +120,47 @@ TEST(ContactRecorder, APointIsWhereItsBodyNodeWasInThePartsFrame) {
       EXPECT_LT(span.part_point_m.z, 0.2);
     }
   }
+}
+
+// Where a finger holds its key down, its tip stays on its spot on the key while the hand moves
+// in or out for other fingers (it slid up to 12 mm along the key before the fingers took up the
+// hand's move). Fingers 2-5, from 100 ms after a span starts to 100 ms before it ends (the
+// stroke and the release move the tip with the key).
+TEST(ContactRecorder, AFingerHoldingItsKeyStaysOnItsSpot) {
+  auto stage = build("piano.json");
+  ASSERT_NE(stage, nullptr);
+  const double seconds = stage->end_s() - stage->start_s();
+  const std::vector<Contact> contacts = record(*stage, seconds);
+  std::vector<glm::mat4> body_world, part_world;
+  double worst = 0.0;
+  std::size_t held = 0;
+  for (int k = 0; k < static_cast<int>(seconds * kFps); ++k) {
+    const double t = stage->start_s() + k / kFps;
+    bool posed = false;
+    for (const Contact& c : contacts) {
+      if (node_name(*stage, c.body_instance, c.body_node).rfind("thumb", 0) == 0) continue;
+      for (const ContactSpan& span : c.spans) {
+        if (t < span.from_s + 0.1 || t > span.to_s - 0.1) continue;
+        if (!posed) {
+          evaluate_stage(*stage, t);
+          posed = true;
+        }
+        const PlacedModel& body = stage->placed(c.body_instance);
+        const PlacedModel& part = stage->placed(c.part_instance);
+        body_world.resize(body.asset->nodes.size());
+        part_world.resize(part.asset->nodes.size());
+        model::compute_world_matrices(*body.asset, body.pose, body.root, body_world);
+        model::compute_world_matrices(*part.asset, part.pose, part.root, part_world);
+        const glm::dvec3 at(part_world[static_cast<std::size_t>(c.part_node)] *
+                            glm::vec4(glm::vec3(span.part_point_m), 1.0f));
+        const glm::dvec3 tip(body_world[static_cast<std::size_t>(c.body_node)][3]);
+        worst = std::max(worst, 1000.0 * glm::distance(at, tip));
+        ++held;
+      }
+    }
+  }
+  EXPECT_GT(held, 500U);
+  EXPECT_LT(worst, 3.0) << "a held fingertip " << worst << " mm off its spot";
 }
 
 TEST(ContactRecorder, TheSameFramesGiveTheSameContacts) {
