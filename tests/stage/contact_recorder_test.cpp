@@ -13,22 +13,14 @@
 
 #include <glm/glm.hpp>
 
-#include <tutti/performance/families.hpp>
-#include <tutti/scene/load_scene.hpp>
+#include "bundled_stage.hpp"
 #include <tutti/stage/contact_detector.hpp>
 
 namespace tutti::stage {
 namespace {
 
-const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
-
 std::unique_ptr<Stage> build(const char* scene_name) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / scene_name);
-  EXPECT_TRUE(scene) << scene.error().message;
-  if (!scene) return nullptr;
-  auto stage = performance::build_stage(*scene, {});
-  EXPECT_TRUE(stage) << stage.error().message;
-  return stage ? std::move(*stage) : nullptr;
+  return test::stage_bundled_scene(scene_name);
 }
 
 constexpr double kFps = 60.0;

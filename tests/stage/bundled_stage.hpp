@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// A bundled scene (content/scenes/NAME) staged with the default families, for the stage's tests;
+// a failure to load or stage is a test failure and gives nullptr.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+
+#include <tutti/performance/families.hpp>
+#include <tutti/scene/load_scene.hpp>
+#include <tutti/stage/stage.hpp>
+
+namespace tutti::stage::test {
+
+inline std::unique_ptr<Stage> stage_bundled_scene(const char* scene_name) {
+  const std::filesystem::path scenes = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes";
+  auto scene = scene::load_scene(scenes / scene_name);
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return nullptr;
+  auto stage = performance::build_stage(*scene, {});
+  EXPECT_TRUE(stage) << stage.error().message;
+  return stage ? std::move(*stage) : nullptr;
+}
+
+}  // namespace tutti::stage::test
