@@ -5,7 +5,8 @@
 #   2. headless Blender imports it with one action set per clip (each performer, the whole
 #      scene) whose frame ranges are the exported frames, armatures with the rig's bones, and the
 #      mouth shape keys.
-#   3. (contacts) its extras.tutti.contacts agree with its own animation (check_contacts.py).
+#   3. (contacts) its extras.tutti.contacts agree with its own animation (check_contacts.py),
+#      and no joint of a body turns faster than its limit in it (check_joint_speeds.py).
 #   export_check.sh TUTTI VALIDATOR_DIR SCENE WORK_DIR [validate|blender|both|contacts]
 set -euo pipefail
 tutti="$1"
@@ -33,6 +34,7 @@ fi
 
 if [ "$what" = contacts ]; then
   python3 "$here/check_contacts.py" "$glb" --max-p95-mm 10
+  python3 "$here/check_joint_speeds.py" "$glb"
 fi
 
 if [ "$what" = blender ] || [ "$what" = both ]; then
