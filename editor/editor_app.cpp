@@ -79,8 +79,12 @@ class Editor final : public ScriptHost {
     }
   }
   void select(PlayerRef player) override {
-    // Lanes: the brass players in scene order, then the pianist.
-    ui_.selected_lane = player.pianist ? session_->timeline().lanes.size() - 1 : player.performer;
+    const auto& lanes = session_->timeline().lanes;
+    for (std::size_t i = 0; i < lanes.size(); ++i) {
+      if (lanes[i].pianist == player.pianist && lanes[i].performer == player.performer) {
+        ui_.selected_lane = i;
+      }
+    }
   }
   Status draw_frames(int count) override {
     for (int i = 0; i < count; ++i) {

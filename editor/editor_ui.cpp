@@ -194,8 +194,7 @@ void draw_variation(Session& session, UiState& ui, PlayerRef player,
 
 // The pianist's hand: the allowed positions of each event (bands) and the path through them,
 // over the few seconds around the playhead.
-void draw_hand_area(const Session& session, const UiState& ui) {
-  const Timeline& timeline = session.timeline();
+void draw_hand_area(const TimelineLane& timeline, const UiState& ui) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size(kInspectorWidth - 24, 150);
   ImGui::InvisibleButton("hand_area", size);
@@ -277,25 +276,27 @@ void draw_inspector(Session& session, UiState& ui) {
       }
       ImGui::PopID();
     }
-  } else if (scene.pianist) {
-    ImGui::Text("Pianist (%s hands)", scene.pianist->hand_size.c_str());
+  } else if (lane.performer < scene.pianists.size()) {
+    const scene::Pianist& pianist = scene.pianists[lane.performer];
+    ImGui::Text("%s (%s hands)", lane.name.c_str(), pianist.hand_size.c_str());
     ImGui::TextUnformatted("Click a note on the timeline to pin a finger.");
-    for (const scene::FingerPin& pin : scene.pianist->pins) {
+    for (const scene::FingerPin& pin : pianist.pins) {
       ImGui::PushID(&pin);
       ImGui::Text("key %d at %.3f s: finger %d", pin.key, pin.time_s, pin.finger);
       ImGui::SameLine();
       const scene::FingerPin copy = pin;
       if (ImGui::SmallButton("unpin")) {
         ImGui::PopID();
-        apply(session, ui, unpin_finger(session.document().json(), copy.time_s, copy.key));
+        apply(session, ui,
+              unpin_finger(session.document().json(), copy.time_s, copy.key, lane.performer));
         break;
       }
       ImGui::PopID();
     }
     ImGui::Separator();
-    draw_hand_area(session, ui);
+    draw_hand_area(lane, ui);
     ImGui::Separator();
-    draw_variation(session, ui, {true, 0}, scene.pianist->variation, scene.pianist->seed);
+    draw_variation(session, ui, {true, lane.performer}, pianist.variation, pianist.seed);
   }
   ImGui::End();
 }
@@ -576,12 +577,14 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
         for (int f = 1; f <= 5; ++f) {
           if (f > 1) ImGui::SameLine();
           if (ImGui::Button(std::to_string(f).c_str())) {
-            apply(session, ui, pin_finger(session.document().json(), note.start_s, note.key, f));
+            apply(session, ui, pin_finger(session.document().json(), note.start_s, note.key, f,
+                                          lane.performer));
             ImGui::CloseCurrentPopup();
           }
         }
         if (note.pinned && ImGui::Button("Unpin")) {
-          apply(session, ui, unpin_finger(session.document().json(), note.start_s, note.key));
+          apply(session, ui, unpin_finger(session.document().json(), note.start_s, note.key,
+                                          lane.performer));
           ImGui::CloseCurrentPopup();
         }
       }

@@ -18,15 +18,34 @@ std::string seconds(double t) {
   return text;
 }
 
-std::string player_pointer(PlayerRef player) {
-  return player.pianist ? "/pianist" : "/performers/" + std::to_string(player.performer);
+// A scene written before two pianos could be has one "pianist" object; newer ones a "pianists"
+// array. Edits go where the pianist is written.
+std::string pianist_pointer(const Json& document, std::size_t index) {
+  return document.contains("pianist") ? std::string("/pianist")
+                                      : "/pianists/" + std::to_string(index);
+}
+
+std::string performer_pointer(std::size_t performer) {
+  return "/performers/" + std::to_string(performer);
+}
+
+std::string player_pointer(const Json& document, PlayerRef player) {
+  return player.pianist ? pianist_pointer(document, player.performer)
+                        : performer_pointer(player.performer);
+}
+
+Result<const Json*> pianist_json(const Json& document, std::size_t index) {
+  if (document.contains("pianist") && index == 0) return &document["pianist"];
+  if (document.contains("pianists") && document["pianists"].is_array() &&
+      index < document["pianists"].size()) {
+    return &document["pianists"][index];
+  }
+  return Error{index == 0 ? std::string("the scene has no pianist")
+                          : "the scene has no pianist " + std::to_string(index + 1)};
 }
 
 Result<const Json*> player_json(const Json& document, PlayerRef player) {
-  if (player.pianist) {
-    if (!document.contains("pianist")) return Error{"the scene has no pianist"};
-    return &document["pianist"];
-  }
+  if (player.pianist) return pianist_json(document, player.performer);
   if (!document.contains("performers") || player.performer >= document["performers"].size()) {
     return Error{"no performer " + std::to_string(player.performer)};
   }
@@ -34,7 +53,9 @@ Result<const Json*> player_json(const Json& document, PlayerRef player) {
 }
 
 std::string player_name(const Json& player, PlayerRef ref) {
-  if (ref.pianist) return "the pianist";
+  if (ref.pianist && !(player.contains("name") && player["name"].is_string())) {
+    return ref.performer == 0 ? "the pianist" : "pianist " + std::to_string(ref.performer + 1);
+  }
   return player.contains("name") && player["name"].is_string() ? player["name"].get<std::string>()
                                                                : "performer";
 }
@@ -116,7 +137,7 @@ Result<BreathLists> breath_lists(const Json& document, std::size_t performer) {
 Edit breath_edit(const BreathLists& lists, std::size_t performer, std::string label) {
   Edit edit;
   edit.label = std::move(label);
-  edit.changes.push_back(replace(*lists.performer, player_pointer({false, performer}), "breaths",
+  edit.changes.push_back(replace(*lists.performer, performer_pointer(performer), "breaths",
                                  breaths_object(lists.add, lists.remove)));
   return edit;
 }
@@ -181,10 +202,10 @@ Edit shots_edit(const Json& document, Json shots, std::string label) {
   return edit;
 }
 
-Result<Json> pin_list(const Json& document) {
-  if (!document.contains("pianist")) return Error{"the scene has no pianist"};
-  const Json& pianist = document["pianist"];
-  return pianist.contains("pins") ? pianist["pins"] : Json::array();
+Result<Json> pin_list(const Json& document, std::size_t pianist) {
+  auto object = pianist_json(document, pianist);
+  if (!object) return object.error();
+  return (*object)->contains("pins") ? (**object)["pins"] : Json::array();
 }
 
 bool same_note(const Json& pin, double time_s, int key) {
@@ -192,10 +213,12 @@ bool same_note(const Json& pin, double time_s, int key) {
          std::abs(pin.value("time_s", -1e9) - time_s) < 1e-3;
 }
 
-Edit pins_edit(const Json& document, const Json& pins, std::string label) {
+// Precondition: pin_list(document, pianist) succeeded.
+Edit pins_edit(const Json& document, std::size_t pianist, const Json& pins, std::string label) {
   Edit edit;
   edit.label = std::move(label);
-  edit.changes.push_back(replace(document["pianist"], "/pianist", "pins",
+  edit.changes.push_back(replace(**pianist_json(document, pianist),
+                                 pianist_pointer(document, pianist), "pins",
                                  pins.empty() ? std::nullopt : std::optional<Json>(pins)));
   return edit;
 }
@@ -209,7 +232,7 @@ Result<Edit> set_variation(const Json& document, PlayerRef player, std::string_v
   if (!known) return Error{"unknown variation parameter \"" + std::string(field) + "\""};
   auto object = player_json(document, player);
   if (!object) return object.error();
-  const std::string pointer = player_pointer(player);
+  const std::string pointer = player_pointer(document, player);
   Json variation = (*object)->contains("variation") ? (**object)["variation"] : Json::object();
   if (value) {
     variation[std::string(field)] = *value;
@@ -229,7 +252,7 @@ Result<Edit> set_seed(const Json& document, PlayerRef player, std::uint64_t seed
   if (!object) return object.error();
   Edit edit;
   edit.label = "new seed for " + player_name(**object, player);
-  edit.changes.push_back(replace(**object, player_pointer(player), "seed", Json(seed)));
+  edit.changes.push_back(replace(**object, player_pointer(document, player), "seed", Json(seed)));
   return edit;
 }
 
@@ -302,7 +325,7 @@ Result<Edit> add_expression(const Json& document, std::size_t performer,
   edit.label = "add \"" + std::string(scene::expression_name(expression.kind)) + "\" for " +
                player_name(**object, {false, performer});
   edit.changes.push_back(
-      replace(**object, player_pointer({false, performer}), "expressions", std::move(list)));
+      replace(**object, performer_pointer(performer), "expressions", std::move(list)));
   return edit;
 }
 
@@ -318,7 +341,7 @@ Result<Edit> delete_expression(const Json& document, std::size_t performer,
   Edit edit;
   edit.label = "delete \"" + std::string(scene::expression_name(expression.kind)) + "\" of " +
                player_name(**object, {false, performer});
-  edit.changes.push_back(replace(**object, player_pointer({false, performer}), "expressions",
+  edit.changes.push_back(replace(**object, performer_pointer(performer), "expressions",
                                  list.empty() ? std::nullopt : std::optional<Json>(list)));
   return edit;
 }
@@ -339,7 +362,7 @@ Result<Edit> move_expression(const Json& document, std::size_t performer,
   edit.label = "move \"" + std::string(scene::expression_name(expression.kind)) + "\" of " +
                player_name(**object, {false, performer}) + " to " + seconds(new_start_s);
   edit.changes.push_back(
-      replace(**object, player_pointer({false, performer}), "expressions", std::move(list)));
+      replace(**object, performer_pointer(performer), "expressions", std::move(list)));
   return edit;
 }
 
@@ -373,8 +396,9 @@ Result<Edit> delete_shot(const Json& document, std::size_t index) {
   return shots_edit(document, std::move(*shots), "delete the cut at " + seconds(t));
 }
 
-Result<Edit> pin_finger(const Json& document, double time_s, int key, int finger) {
-  auto pins = pin_list(document);
+Result<Edit> pin_finger(const Json& document, double time_s, int key, int finger,
+                        std::size_t pianist) {
+  auto pins = pin_list(document, pianist);
   if (!pins) return pins.error();
   Json pin = Json::object();
   pin["time_s"] = time_s;
@@ -387,20 +411,20 @@ Result<Edit> pin_finger(const Json& document, double time_s, int key, int finger
   } else {
     pins->push_back(pin);
   }
-  return pins_edit(document, *pins,
+  return pins_edit(document, pianist, *pins,
                    "pin finger " + std::to_string(finger) + " on key " + std::to_string(key) +
                        " at " + seconds(time_s));
 }
 
-Result<Edit> unpin_finger(const Json& document, double time_s, int key) {
-  auto pins = pin_list(document);
+Result<Edit> unpin_finger(const Json& document, double time_s, int key, std::size_t pianist) {
+  auto pins = pin_list(document, pianist);
   if (!pins) return pins.error();
   const auto it = std::find_if(pins->begin(), pins->end(),
                                [&](const Json& p) { return same_note(p, time_s, key); });
   if (it == pins->end())
     return Error{"no pin on key " + std::to_string(key) + " at " + seconds(time_s)};
   pins->erase(it);
-  return pins_edit(document, *pins, "unpin key " + std::to_string(key) + " at " + seconds(time_s));
+  return pins_edit(document, pianist, *pins, "unpin key " + std::to_string(key) + " at " + seconds(time_s));
 }
 
 }  // namespace tutti::editor

@@ -22,7 +22,8 @@
 
 namespace tutti::editor {
 
-// Who an edit is about: a brass performer (index into Scene::performers) or the pianist.
+// Who an edit is about: a brass performer (index into Scene::performers) or a pianist (pianist
+// true, performer an index into Scene::pianists).
 struct PlayerRef {
   bool pianist = false;
   std::size_t performer = 0;
@@ -67,8 +68,10 @@ Result<Edit> add_shot(const Json& document, std::string_view camera, double star
 Result<Edit> move_shot(const Json& document, std::size_t index, double start_s);
 Result<Edit> delete_shot(const Json& document, std::size_t index);
 
-// The pianist plays the note of `key` at time_s with `finger` (replaces a pin on that note).
-Result<Edit> pin_finger(const Json& document, double time_s, int key, int finger);
-Result<Edit> unpin_finger(const Json& document, double time_s, int key);
+// Pianist `pianist` (index into Scene::pianists) plays the note of `key` at time_s with `finger`
+// (replaces a pin on that note).
+Result<Edit> pin_finger(const Json& document, double time_s, int key, int finger,
+                        std::size_t pianist = 0);
+Result<Edit> unpin_finger(const Json& document, double time_s, int key, std::size_t pianist = 0);
 
 }  // namespace tutti::editor

@@ -30,7 +30,7 @@ const std::map<std::string, Action>& actions() {
       {"add-cue", {1, 1, "add-cue TIME"}},
       {"add-expression", {4, 5, "add-expression PERFORMER strain|relaxed START END [AMOUNT]"}},
       {"cut", {2, 2, "cut CAMERA TIME"}},
-      {"pin", {3, 3, "pin TIME KEY FINGER"}},
+      {"pin", {3, 4, "pin TIME KEY FINGER [PIANIST]"}},
       {"select", {1, 1, "select PERFORMER|pianist"}},
       {"undo", {0, 0, "undo"}},
       {"redo", {0, 0, "redo"}},
@@ -173,7 +173,14 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     return ScriptStep::next;
   };
   auto who = [&](std::size_t i) -> Result<PlayerRef> {
-    if (command.words[i] == "pianist") return PlayerRef{true, 0};
+    const auto& pianists = session.document().scene().pianists;
+    for (std::size_t p = 0; p < pianists.size(); ++p) {
+      if (pianists[p].name == command.words[i]) return PlayerRef{true, p};
+    }
+    if (command.words[i] == "pianist") {  // the first, whatever their name
+      if (pianists.empty()) return at(script, command, "the scene has no pianist");
+      return PlayerRef{true, 0};
+    }
     auto index = performer(script, command, session, command.words[i]);
     if (!index) return index.error();
     return PlayerRef{false, *index};
@@ -189,7 +196,7 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     auto player = who(1);
     if (!player) return player.error();
     const scene::Scene& scene = session.document().scene();
-    const std::uint64_t seed = player->pianist ? (scene.pianist ? scene.pianist->seed : 0)
+    const std::uint64_t seed = player->pianist ? scene.pianists.at(player->performer).seed
                                                : scene.performers[player->performer].seed;
     return edit_result(session.apply(set_seed(json, *player, reroll_seed(seed))));
   }
@@ -227,9 +234,16 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     return edit_result(session.apply(add_shot(json, command.words[1], number(command, 2))));
   }
   if (action == "pin") {
+    std::size_t pianist = 0;
+    if (command.words.size() > 4) {
+      auto player = who(4);
+      if (!player) return player.error();
+      if (!player->pianist) return at(script, command, command.words[4] + " is not a pianist");
+      pianist = player->performer;
+    }
     return edit_result(
         session.apply(pin_finger(json, number(command, 1), static_cast<int>(number(command, 2)),
-                                 static_cast<int>(number(command, 3)))));
+                                 static_cast<int>(number(command, 3)), pianist)));
   }
   if (action == "select") {
     auto player = who(1);

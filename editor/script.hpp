@@ -13,6 +13,7 @@
 //   add-expression "Trumpet 1" strain 4 6 [0.8]
 //   cut close 12.5                                a camera cut to camera "close" at 12.5 s
 //   pin 1.5 64 3                                  the pianist plays key 64 at 1.5 s with finger 3
+//   pin 1.5 64 3 "pianist 2"                      ... or the pianist of that name
 //   undo | redo
 //   select "Trombone 1"                           show that player in the inspector (or pianist)
 //   seek 12.0 | play | pause | frames 30          the transport; draw 30 frames

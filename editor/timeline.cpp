@@ -39,7 +39,9 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
   lane.pianist = seat.family == "piano";
   lane.performer = seat.index;
   const auto* about = world.try_get<components::Performer>(performer);
-  lane.name = lane.pianist ? "Pianist" : about != nullptr ? about->name : std::string();
+  lane.name = about != nullptr ? about->name : std::string();
+  // The first pianist's lane reads "Pianist", as before a scene could have two.
+  if (lane.pianist && lane.name == "pianist") lane.name = "Pianist";
   for (std::size_t s = 0; s < stage.scores().size(); ++s) {
     for (std::size_t i = 0; i < stage.scores()[s].notes.size(); ++i) {
       const auto* note = world.try_get<components::Note>(stage.note_entity(s, i));
@@ -74,8 +76,8 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
   if (!lane.pianist && lane.performer < scene.performers.size()) {
     lane.expressions = scene.performers[lane.performer].expressions;
   }
-  if (lane.pianist && scene.pianist) {
-    for (const scene::FingerPin& pin : scene.pianist->pins) {
+  if (lane.pianist && lane.performer < scene.pianists.size()) {
+    for (const scene::FingerPin& pin : scene.pianists[lane.performer].pins) {
       for (TimelineNote& n : lane.notes) {
         if (n.key == pin.key && std::abs(n.start_s - pin.time_s) < 1e-3) n.pinned = true;
       }
@@ -85,7 +87,7 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
 }
 
 // The pianist's allowed hand areas and the hand paths planned through them.
-void add_hand_paths(const stage::Stage& stage, ecs::Entity pianist, Timeline& out) {
+void add_hand_paths(const stage::Stage& stage, ecs::Entity pianist, TimelineLane& out) {
   const ecs::World& world = stage.world();
   if (const auto* plan = world.try_get<piano_family::PianistPlan>(pianist)) {
     const piano::HandPlan* hands[2] = {&plan->fingering.right, &plan->fingering.left};
@@ -117,7 +119,7 @@ Timeline build_timeline(const stage::Stage& stage) {
   const ecs::World& world = stage.world();
   for (ecs::Entity performer : stage.performers()) {
     out.lanes.push_back(performer_lane(stage, performer));
-    if (out.lanes.back().pianist) add_hand_paths(stage, performer, out);
+    if (out.lanes.back().pianist) add_hand_paths(stage, performer, out.lanes.back());
     if (const auto* ensemble = world.try_get<ensemble_variation::EnsembleMotionHandle>(performer);
         ensemble != nullptr && ensemble->plan && out.cues_s.empty()) {
       out.cues_s = ensemble->plan->cue_entrances_s;

@@ -34,20 +34,23 @@ struct TimelineBreath {
   bool catch_breath = false;
 };
 
+// The allowed hand positions of one event and where the hand actually is (keyboard x, mm).
+struct HandCorridorView {
+  double start_s = 0.0, end_s = 0.0, lo_mm = 0.0, hi_mm = 0.0;
+};
+
 struct TimelineLane {
   std::string name;
   bool pianist = false;
-  std::size_t performer = 0;  // into Scene::performers (brass lanes)
+  std::size_t performer = 0;  // into Scene::performers (brass lanes) or Scene::pianists
   std::vector<TimelineNote> notes;
   std::vector<TimelineBreath> breaths;
   std::vector<scene::Expression> expressions;
   int lowest_key = 127;
   int highest_key = 0;
-};
-
-// The allowed hand positions of one event and where the hand actually is (keyboard x, mm).
-struct HandCorridorView {
-  double start_s = 0.0, end_s = 0.0, lo_mm = 0.0, hi_mm = 0.0;
+  std::array<std::vector<HandCorridorView>, 2> corridors;  // a pianist's: right, left
+  // The planned hand path through them, sampled every kHandPathStep_s: (time, keyboard x mm).
+  std::array<std::vector<std::array<double, 2>>, 2> hand_path;
 };
 
 struct Timeline {
@@ -55,7 +58,7 @@ struct Timeline {
   double end_s = 0.0;
   std::vector<double> bars_s;       // bar lines
   std::vector<double> beats_s;      // every beat (bar lines included)
-  std::vector<TimelineLane> lanes;  // brass players in scene order, then the pianist
+  std::vector<TimelineLane> lanes;  // the stage's performers in order (brass, then pianists)
   std::vector<double> cues_s;       // the lead's cues as planned (the entrance times)
   bool cues_automatic = true;       // the scene lists none
   struct Shot {
@@ -63,9 +66,6 @@ struct Timeline {
     std::string camera;
   };
   std::vector<Shot> shots;
-  std::array<std::vector<HandCorridorView>, 2> corridors;  // pianist: right, left
-  // The planned hand path through them, sampled every kHandPathStep_s: (time, keyboard x mm).
-  std::array<std::vector<std::array<double, 2>>, 2> hand_path;
 };
 
 inline constexpr double kHandPathStep_s = 0.02;

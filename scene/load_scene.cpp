@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <string_view>
 #include <system_error>
 
@@ -20,6 +21,14 @@ namespace tutti::scene {
 namespace {
 
 namespace fs = std::filesystem;
+
+// Two pianos' benches at least this far apart on the floor: the generated upright is 1.35 m wide.
+// A coarse rule (it does not test the cases' outlines), so that two pianists never share a piano.
+constexpr double kPianoSpacing_m = 1.4;
+
+double floor_distance_m(const Vec3& a, const Vec3& b) {
+  return std::hypot(a.x - b.x, a.z - b.z);
+}
 using nlohmann::json;
 
 std::string lower(std::string_view text) {
@@ -55,6 +64,7 @@ class SceneParser {
                          Performer& performer);
   Status parse_pianist(const json& object, const Scene& scene, Pianist& pianist) const;
   Status parse_pianist_style(const json& object, Pianist& pianist) const;
+  Status parse_pianists(const json& document, Scene& scene) const;
   Status parse_variation(const json& object, const std::string& path, Variation& variation) const;
   Status parse_mapping(const json& object, const std::string& path, const char* key,
                        AssetKind expected, fs::path& out) const;
@@ -264,20 +274,26 @@ Status SceneParser::parse_performer(const json& object, const std::string& path,
 }
 
 Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianist& pianist) const {
-  const std::string path = "/pianist";
+  const std::string& path = pianist.pointer;
+  if (!object.is_object()) return reader_.error(path, "expected an object");
   if (auto ok = reader_.json().check_keys(
           object, path,
-          {"parts", "music_file", "hand_size", "position_m", "facing_deg", "seed", "variation",
+          {"name", "parts", "music_file", "hand_size", "position_m", "facing_deg", "seed", "variation",
            "character", "hands", "pins", "style", "sound"});
       !ok) {
     return ok;
   }
-  if (!object.contains("parts")) return reader_.error("/pianist/parts", "missing");
+  if (object.contains("name")) {
+    auto name = reader_.string(object, path, "name");
+    if (!name) return name.error();
+    pianist.name = *name;
+  }
+  if (!object.contains("parts")) return reader_.error(path + "/parts", "missing");
   const json& parts = object.at("parts");
-  if (!parts.is_array()) return reader_.error("/pianist/parts", "expected an array of part names");
-  if (parts.empty()) return reader_.error("/pianist/parts", "must name at least one part");
+  if (!parts.is_array()) return reader_.error(path + "/parts", "expected an array of part names");
+  if (parts.empty()) return reader_.error(path + "/parts", "must name at least one part");
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    const std::string where = "/pianist/parts/" + std::to_string(i);
+    const std::string where = path + "/parts/" + std::to_string(i);
     if (!parts[i].is_string()) return reader_.error(where, "expected a string");
     if (parts[i].get<std::string>().empty()) return reader_.error(where, "must not be empty");
     pianist.parts.push_back(parts[i].get<std::string>());
@@ -301,7 +317,7 @@ Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianis
   auto hand_size = reader_.string_or(object, path, "hand_size", fallback);
   if (!hand_size) return hand_size.error();
   if (std::find(presets.begin(), presets.end(), *hand_size) == presets.end()) {
-    return reader_.error("/pianist/hand_size", "unknown hand size \"" + *hand_size +
+    return reader_.error(path + "/hand_size", "unknown hand size \"" + *hand_size +
                                                    "\" (hands.json has: " + join(presets) + ")");
   }
   pianist.hand_size = *hand_size;
@@ -319,7 +335,7 @@ Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianis
     pianist.seed_given = true;
   }
   if (object.contains("variation")) {
-    if (auto ok = parse_variation(object.at("variation"), "/pianist/variation", pianist.variation);
+    if (auto ok = parse_variation(object.at("variation"), path + "/variation", pianist.variation);
         !ok) {
       return ok;
     }
@@ -336,12 +352,55 @@ Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianis
 
 // "style": a style of content/piano/styles.json; "sound": "score" (as written) or "keys" (as
 // the simulated keys sound it).
+Status SceneParser::parse_pianists(const json& document, Scene& scene) const {
+  if (document.contains("pianist") && document.contains("pianists")) {
+    return reader_.error("/pianists", "give \"pianists\" or the older \"pianist\", not both");
+  }
+  std::vector<const json*> objects;
+  std::vector<std::string> pointers;
+  if (document.contains("pianist")) {
+    objects.push_back(&document.at("pianist"));
+    pointers.emplace_back("/pianist");
+  } else if (document.contains("pianists")) {
+    const json& pianists = document.at("pianists");
+    if (!pianists.is_array()) return reader_.error("/pianists", "expected an array");
+    if (pianists.empty()) return reader_.error("/pianists", "must list at least one pianist");
+    for (std::size_t i = 0; i < pianists.size(); ++i) {
+      objects.push_back(&pianists[i]);
+      pointers.push_back("/pianists/" + std::to_string(i));
+    }
+  }
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    Pianist pianist;
+    pianist.pointer = pointers[i];
+    pianist.name = i == 0 ? "pianist" : "pianist " + std::to_string(i + 1);
+    if (auto ok = parse_pianist(*objects[i], scene, pianist); !ok) return ok;
+    for (const Pianist& other : scene.pianists) {
+      if (other.name == pianist.name) {
+        return reader_.error(pianist.pointer + "/name", "duplicate pianist name \"" +
+                                                            pianist.name + "\" (also " +
+                                                            other.pointer + ")");
+      }
+      if (floor_distance_m(other.position_m, pianist.position_m) < kPianoSpacing_m) {
+        return reader_.error(pianist.pointer + "/position_m",
+                             "the piano stands on " + other.pointer + "'s (benches " +
+                                 format_number(floor_distance_m(other.position_m, pianist.position_m)) +
+                                 " m apart; two pianos need " + format_number(kPianoSpacing_m) +
+                                 " m)");
+      }
+    }
+    if (!pianist.seed_given) pianist.seed = derive_seed(scene.seed, pianist_seed_stream(i));
+    scene.pianists.push_back(std::move(pianist));
+  }
+  return {};
+}
+
 Status SceneParser::parse_pianist_style(const json& object, Pianist& pianist) const {
-  const std::string path = "/pianist";
+  const std::string& path = pianist.pointer;
   auto sound = reader_.string_or(object, path, "sound", "score");
   if (!sound) return sound.error();
   if (*sound != "score" && *sound != "keys") {
-    return reader_.error("/pianist/sound",
+    return reader_.error(path + "/sound",
                          "expected \"score\" or \"keys\", not \"" + *sound + "\"");
   }
   pianist.sound_from_keys = *sound == "keys";
@@ -356,7 +415,7 @@ Status SceneParser::parse_pianist_style(const json& object, Pianist& pianist) co
     for (const auto& item : styles->at("styles").items()) names.push_back(item.key());
   }
   if (std::find(names.begin(), names.end(), *style) == names.end()) {
-    return reader_.error("/pianist/style", "unknown performance style \"" + *style +
+    return reader_.error(path + "/style", "unknown performance style \"" + *style +
                                                "\" (styles.json has: " + join(names) + ")");
   }
   pianist.style = *style;
@@ -539,7 +598,7 @@ Status SceneParser::parse_output(const json& document, Output& output) const {
 Result<Scene> SceneParser::parse(const json& document) {
   if (auto ok = reader_.json().check_keys(document, "",
                                           {"description", "music", "seed", "performers", "pianist",
-                                           "cameras", "shots", "lights", "output", "cues"});
+                                           "pianists", "cameras", "shots", "lights", "output", "cues"});
       !ok) {
     return ok.error();
   }
@@ -585,13 +644,8 @@ Result<Scene> SceneParser::parse(const json& document) {
       scene.performers.push_back(std::move(performer));
     }
   }
-  if (document.contains("pianist")) {
-    Pianist pianist;
-    if (auto ok = parse_pianist(document.at("pianist"), scene, pianist); !ok) return ok.error();
-    if (!pianist.seed_given) pianist.seed = derive_seed(scene.seed, 0);
-    scene.pianist = std::move(pianist);
-  }
-  if (scene.performers.empty() && !scene.pianist) {
+  if (auto ok = parse_pianists(document, scene); !ok) return ok.error();
+  if (scene.performers.empty() && scene.pianists.empty()) {
     return reader_.error("", "a scene needs performers, a pianist, or both");
   }
   if (auto ok = parse_cameras(document, scene); !ok) return ok.error();
@@ -669,12 +723,17 @@ Status check_scene_parts(const Scene& scene, std::span<const music::Score> score
       return ok;
     }
   }
-  if (scene.pianist) {
-    for (std::size_t i = 0; i < scene.pianist->parts.size(); ++i) {
-      if (auto ok = check(scene.pianist->parts[i], scene.pianist->music_file,
-                          "/pianist/parts/" + std::to_string(i));
-          !ok) {
-        return ok;
+  // A note has one player: two pianists never share a part.
+  std::map<std::pair<std::size_t, int>, std::string> played_by;
+  for (const Pianist& pianist : scene.pianists) {
+    for (std::size_t i = 0; i < pianist.parts.size(); ++i) {
+      const std::string where = pianist.pointer + "/parts/" + std::to_string(i);
+      if (auto ok = check(pianist.parts[i], pianist.music_file, where); !ok) return ok;
+      const int part = find_part(scores[pianist.music_file], pianist.parts[i]);
+      const auto [it, added] = played_by.emplace(std::pair{pianist.music_file, part}, where);
+      if (!added && it->second.rfind(pianist.pointer + "/", 0) != 0) {
+        return reader.error(where, "part \"" + pianist.parts[i] + "\" is already played by " +
+                                       it->second);
       }
     }
   }

@@ -112,7 +112,12 @@ struct Performer {
   friend bool operator==(const Performer&, const Performer&) = default;
 };
 
+// A pianist at a piano. A scene has any number: "pianists" (an array), or "pianist" (one object,
+// the format before two pianos could be written; still read).
 struct Pianist {
+  // Unique among the scene's players, non-empty; "pianist", then "pianist 2", ... when not given.
+  std::string name;
+  std::string pointer;             // where it is in the file ("/pianist", "/pianists/1")
   std::vector<std::string> parts;  // score parts the pianist plays (name or id), at least one
   std::size_t music_file = 0;      // index into Scene::music
   std::string hand_size;  // a preset of content/piano/hands.json (default: its default_preset)
@@ -179,7 +184,7 @@ struct Scene {
   std::vector<std::filesystem::path> music;  // at least one; resolved, each an existing file
   std::uint64_t seed = 0;
   std::vector<Performer> performers;
-  std::optional<Pianist> pianist;  // a scene has performers, a pianist, or both
+  std::vector<Pianist> pianists;   // a scene has performers, pianists, or both
   std::vector<Camera> cameras;     // at least one
   std::vector<Shot> shots;         // at least one; first at 0 s, start_s strictly increasing
   Lights lights;
@@ -196,10 +201,13 @@ struct Scene {
   int find_camera(std::string_view name) const;
 };
 
-// Seed of a performer (stream k + 1 for performers[k]) or of the pianist (stream 0) when the
-// scene file gives none: splitmix64 of the scene seed and the stream, so adding a performer at
-// the end leaves the others' seeds unchanged.
+// Seed of a performer (stream k + 1 for performers[k]) or of a pianist (pianist_seed_stream)
+// when the scene file gives none: splitmix64 of the scene seed and the stream, so adding a
+// performer at the end leaves the others' seeds unchanged.
 std::uint64_t derive_seed(std::uint64_t scene_seed, std::uint64_t stream);
+// pianists[0]: stream 0 (as when a scene had one pianist); pianists[k]: a stream of their own,
+// far above any performer's.
+std::uint64_t pianist_seed_stream(std::size_t index);
 
 std::string_view stance_name(Stance stance);
 std::string_view expression_name(ExpressionKind kind);

@@ -67,7 +67,8 @@ struct PlacedModel {
 };
 
 // Component on every performer entity: the family that plays it and which of the family's
-// performers it is (a brass player's index in the scene's `performers`, 0 for the pianist).
+// performers it is (its index in the family's scene section: a brass player's in `performers`, a
+// pianist's in `pianists`).
 struct Seat {
   std::string family;
   std::size_t index = 0;

@@ -602,11 +602,12 @@ class Checker {
     hands_apart(who);
     // The keys: how far each is down, and whether a note of it sounds (or is being struck or
     // released: 0.1 s before the onset to 0.1 s after the offset).
+    KeyTally& tally = key_tallies_[who];
     for (int key = 0; key < 128; ++key) {
       const int node = rig.key_nodes[static_cast<std::size_t>(key)];
       const double dip = rig.key_dip_rad[static_cast<std::size_t>(key)];
       if (node < 0 || dip <= 0.0) continue;
-      all_key_seconds_ += dt_s;
+      tally.all_seconds += dt_s;
       const glm::quat& r = piano->pose.local[static_cast<std::size_t>(node)].rotation;
       const double angle = 2.0 * std::asin(std::min(
                                      1.0, static_cast<double>(glm::length(glm::vec3(r.x, r.y, r.z)))));
@@ -619,18 +620,17 @@ class Checker {
         sounding = sounding || note->sounding;
         striking = striking || (t_s >= note->onset_s - 0.1 && t_s <= note->offset_s + 0.1);
       }
-      key_seconds_ += dt_s;
+      tally.down_seconds += dt_s;
       if (down > 0.25 && down < 0.75 && !sounding) {
-        key_mid_silent_ += dt_s;
+        tally.mid_silent += dt_s;
         if (!striking) {
-          key_mid_resting_ += dt_s;
-          if (hanging_key_ < 0) hanging_key_ = key, hanging_at_s_ = t_s;
+          tally.mid_resting += dt_s;
+          if (tally.hanging_key < 0) tally.hanging_key = key, tally.hanging_at_s = t_s;
         }
       }
     }
     head_tips_ = tips;
     if (body != nullptr) head_clearance(who, rig.body_nodes.head, head_tips_);
-    pianist_ = who;
   }
 
   // The pianist's hand `side` as capsules (world space): each finger's bones, knuckle to tip, and
@@ -689,18 +689,22 @@ class Checker {
   }
 
   void finish() {
-    if (key_seconds_ <= 0.0) return;
-    // Of every animated key's seconds (all the piano's keys over the range): the figure.
-    measure(pianist_ + ": keys half down (25-75 %), no note sounding, of all keys' seconds", "%",
-            1.0)
-        .add(100.0 * key_mid_silent_ / all_key_seconds_, t_s_);
-    // Of the seconds keys are off their rest (stricter, informational): a key passes through half
-    // travel before its hammer escapes and after its damper falls, on every stroke and release.
-    measure(pianist_ + ": key-seconds half down (25-75 %) with no note of the key sounding", "%")
-        .add(100.0 * key_mid_silent_ / key_seconds_, t_s_);
-    measure(pianist_ + ": ... of them outside the keys' strokes (a key left hanging)", "%", 1.0)
-        .add(100.0 * key_mid_resting_ / key_seconds_, hanging_at_s_,
-             hanging_key_ < 0 ? std::string() : "the first: key " + std::to_string(hanging_key_));
+    for (const auto& [who, tally] : key_tallies_) {
+      if (tally.down_seconds <= 0.0) continue;
+      // Of every animated key's seconds (all the piano's keys over the range): the figure.
+      measure(who + ": keys half down (25-75 %), no note sounding, of all keys' seconds", "%",
+              1.0)
+          .add(100.0 * tally.mid_silent / tally.all_seconds, t_s_);
+      // Of the seconds keys are off their rest (stricter, informational): a key passes through
+      // half travel before its hammer escapes and after its damper falls, on every stroke and
+      // release.
+      measure(who + ": key-seconds half down (25-75 %) with no note of the key sounding", "%")
+          .add(100.0 * tally.mid_silent / tally.down_seconds, t_s_);
+      measure(who + ": ... of them outside the keys' strokes (a key left hanging)", "%", 1.0)
+          .add(100.0 * tally.mid_resting / tally.down_seconds, tally.hanging_at_s,
+               tally.hanging_key < 0 ? std::string()
+                                     : "the first: key " + std::to_string(tally.hanging_key));
+    }
   }
 
  private:
@@ -711,16 +715,22 @@ class Checker {
   std::vector<glm::vec3> head_tips_;
   stage::FingerJointLimits limits_;
   std::vector<std::pair<ecs::Entity, const components::Note*>> notes_;
-  double key_seconds_ = 0.0, all_key_seconds_ = 0.0, key_mid_silent_ = 0.0, key_mid_resting_ = 0.0;
-  int hanging_key_ = -1;  // the first key seen left hanging, and when
-  double hanging_at_s_ = 0.0;
-  std::string pianist_;
+  // Each pianist's keys over the checked range (seconds summed over keys).
+  struct KeyTally {
+    double all_seconds = 0.0;   // every animated key
+    double down_seconds = 0.0;  // keys off their rest
+    double mid_silent = 0.0;    // half down with no note of the key sounding
+    double mid_resting = 0.0;   // ... and not being struck or released
+    int hanging_key = -1;       // the first key seen left hanging, and when
+    double hanging_at_s = 0.0;
+  };
+  std::map<std::string, KeyTally> key_tallies_;
   double t_s_ = 0.0;
   double dt_s_ = 1.0 / 30.0;
   std::map<const stage::PlacedModel*, std::vector<glm::quat>> last_rotations_;
   std::vector<std::uint8_t> joint_kind_;
   std::map<std::uint64_t, double> last_slide_mm_;  // per performer entity
-  std::array<std::vector<HandCapsule>, 2> hand_capsules_;  // the pianist's right, left
+  std::array<std::vector<HandCapsule>, 2> hand_capsules_;  // the pianist posed: right, left
   std::map<const model::ModelAsset*, DeskPanel> desk_panels_;
 };
 

@@ -46,7 +46,9 @@ int run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
   for (const std::string& note : drafted->notes) err << "note: " << note << "\n";
   out << "scene: wrote " << o.output.string() << " (" << scene->performers.size()
       << " brass player" << (scene->performers.size() == 1 ? "" : "s")
-      << (scene->pianist ? ", a pianist" : "") << ", " << scene->cameras.size() << " cameras, "
+      << (scene->pianists.empty()   ? ""
+          : scene->pianists.size() == 1 ? ", a pianist"
+                                        : ", " + std::to_string(scene->pianists.size()) + " pianists") << ", " << scene->cameras.size() << " cameras, "
       << scene->shots.size() << " shots)\n";
   return kExitOk;
 }

@@ -80,6 +80,9 @@ struct PianoRig {
   std::array<float, 128> key_pivot_behind_m{};
   glm::mat4 keyboard_to_world{1.0f};  // the piano's `keyboard` node (metres, glTF axes)
   // Bones of each hand model, [finger 0..4][segment 0..2]; -1 = missing.
+  // The pianist's hand preset's size over the generated hand models' (made at hands.json's
+  // default preset): the hand models are drawn at the size the fingers were planned for.
+  float hand_scale = 1.0f;
   std::array<std::array<std::array<int, 3>, 5>, 2> finger_bones{};
   std::array<int, 2> hand_root{-1, -1};
   // Each hand model's fingertip nodes ([side][finger]; -1 = missing), and each key's top at rest

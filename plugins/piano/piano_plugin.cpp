@@ -95,11 +95,24 @@ KeyOutlineMm key_outline_mm(const model::ModelAsset& piano, int node) {
   return {1000.0 * static_cast<double>(x_max), 1000.0 * static_cast<double>(z_max)};
 }
 
+// Where the piano stands: the generated piano is made for a bench at scene::Pianist's default
+// spot (the keys' front at z = 0, the bench 0.6 m in front); a bench elsewhere takes the piano
+// with it. At the default spot the piano's root is exactly the identity.
+glm::mat4 piano_root(const scene::Pianist& pianist) {
+  const scene::Pianist defaults;
+  if (pianist.position_m == defaults.position_m && pianist.facing_deg == defaults.facing_deg) {
+    return glm::mat4(1.0f);
+  }
+  return stage::placement_matrix(pianist.position_m, pianist.facing_deg) *
+         glm::inverse(stage::placement_matrix(defaults.position_m, defaults.facing_deg));
+}
+
 Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
-                  const key_action::KeyAction& action, bool draw_hands, PianoRig& rig) {
+                  const key_action::KeyAction& action, bool draw_hands, const glm::mat4& root,
+                  PianoRig& rig) {
   auto piano_model = builder.generated_model("piano.glb");
   if (!piano_model) return piano_model.error();
-  rig.piano = builder.place(*piano_model, glm::mat4(1.0f));
+  rig.piano = builder.place(*piano_model, root);
   const model::ModelAsset& piano = builder.model(*piano_model);
   rig.key_nodes.fill(-1);
   rig.key_dip_rad.fill(0.0);
@@ -121,7 +134,7 @@ Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
   }
   {
     std::vector<glm::mat4> world(piano.nodes.size());
-    model::compute_world_matrices(piano, builder.placed(rig.piano).pose, glm::mat4(1.0f), world);
+    model::compute_world_matrices(piano, builder.placed(rig.piano).pose, root, world);
     const int keyboard_node = piano.find_node("keyboard");
     if (keyboard_node >= 0) rig.keyboard_to_world = world[static_cast<std::size_t>(keyboard_node)];
     rig.world_to_keyboard = glm::inverse(rig.keyboard_to_world);
@@ -202,10 +215,15 @@ void PianoPlugin::add_systems(ecs::Schedule& schedule) const {
 }
 
 Status PianoPlugin::build(stage::StageBuilder& builder) const {
-  const scene::Scene& scene = builder.scene();
-  if (!scene.pianist) return Status::success();
-  const scene::Pianist& pianist = *scene.pianist;
-  auto planned = plan_pianist(builder);
+  for (std::size_t i = 0; i < builder.scene().pianists.size(); ++i) {
+    if (Status s = build_pianist(builder, i); !s) return s;
+  }
+  return Status::success();
+}
+
+Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t index) const {
+  const scene::Pianist& pianist = builder.scene().pianists[index];
+  auto planned = plan_pianist(builder, index);
   if (!planned) return planned.error();
   PianistPlan& plan = *planned;
   for (const std::string& note : plan.plan_notes) builder.note(note);
@@ -217,13 +235,17 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
 
   ecs::World& world = builder.world();
   const ecs::Entity performer =
-      builder.add_performer(name(), 0, components::Performer{"pianist", pianist.seed});
+      builder.add_performer(name(), index, components::Performer{pianist.name, pianist.seed});
   claim_notes(builder, pianist.music_file, plan, performer, pianist.sound_from_keys);
   world.add<components::Transform>(
       performer, stage::stage_transform(pianist.position_m, pianist.facing_deg));
   world.add<finger_motion::PianistMotionHandle>(performer,
                                                 finger_motion::PianistMotionHandle{plan.motion});
   PianoRig rig;
+  // The generated hand models are made at hands.json's default preset (content/generator).
+  auto default_hands = piano::load_fingering_model("default", "", builder.content_dir());
+  if (!default_hands) return default_hands.error();
+  rig.hand_scale = static_cast<float>(model->hand.scale() / default_hands->hand.scale());
   for (int side = 0; side < 2; ++side) {
     const auto hand_side = side == 0 ? components::HandSide::right : components::HandSide::left;
     const ecs::Entity hand = world.create();
@@ -244,10 +266,11 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
   }
   // tutti's hand models are drawn unless a user's hands play: a character's own, or hand models.
   const bool users_hands = !pianist.character_mapping.empty() || !pianist.hands_mapping.empty();
-  if (Status s = bind_piano(builder, model->keyboard, *action, !users_hands, rig); !s) return s;
+  if (Status s = bind_piano(builder, model->keyboard, *action, !users_hands,
+                                piano_root(pianist), rig); !s) return s;
   if (Status s = bind_pianist_body(builder, pianist, rig); !s) return s;
   if (Status s = bind_user_hands(builder, pianist, rig); !s) return s;
-  // Export names: "piano", "<pianist> hand_r", "<pianist> hand_l", the pianist's body.
+  // Export names: "piano" (see below), "<pianist> hand_r", "<pianist> hand_l", the pianist's body.
   const auto label = [&](ecs::Entity instance, std::string text, bool after_performer) {
     if (instance.is_null()) return;
     stage::PlacedModel& placed = builder.placed(instance);
@@ -255,7 +278,8 @@ Status PianoPlugin::build(stage::StageBuilder& builder) const {
     placed.label = std::move(text);
     placed.after_performer = after_performer;
   };
-  label(rig.piano, "piano", false);
+  // The pianos: "piano", then "piano 2", ... (export node names are unique).
+  label(rig.piano, index == 0 ? "piano" : "piano " + std::to_string(index + 1), false);
   label(rig.hand_models[0], "hand_r", true);
   label(rig.hand_models[1], "hand_l", true);
   label(rig.body, "", true);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The piano family: the scene's pianist (plan_pianist.hpp), their hands and fingers as entities
+// The piano family: each of the scene's pianists (plan_pianist.hpp), at a piano of their own, their hands and fingers as entities
 // driven by the finger-motion system, and the piano, hand models, bench and performer rig posed
 // by piano_skeleton_system (pose_piano.hpp).
 //
@@ -16,6 +16,9 @@ class PianoPlugin final : public stage::FamilyPlugin {
   std::string_view name() const override { return "piano"; }
   void add_systems(ecs::Schedule& schedule) const override;
   Status build(stage::StageBuilder& builder) const override;
+
+ private:
+  Status build_pianist(stage::StageBuilder& builder, std::size_t index) const;
 };
 
 }  // namespace tutti::piano_family

@@ -54,7 +54,8 @@ Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianis
     if (pinned == nullptr) {
       char time[32];
       std::snprintf(time, sizeof time, "%.3f", pin.time_s);
-      return Error{scene.source + ": /pianist/pins/" + std::to_string(i) + ": no note of key " +
+      return Error{scene.source + ": " + pianist.pointer + "/pins/" + std::to_string(i) +
+                   ": no note of key " +
                    std::to_string(pin.key) + " starts at " + time +
                    " s in the pianist's parts of " +
                    scene.music[pianist.music_file].filename().string()};
@@ -72,7 +73,9 @@ Result<key_action::HumanePerformance> perform_in_style(
   auto styles = key_action::load_styles(key_action::styles_path(content_dir));
   if (!styles) return styles.error();
   auto style = styles->find(pianist.style.empty() ? "precise" : pianist.style);
-  if (!style) return Error{scene.source + ": /pianist/style: " + style.error().message};
+  if (!style) {
+    return Error{scene.source + ": " + pianist.pointer + "/style: " + style.error().message};
+  }
   auto action = key_action::load_key_action(key_action::key_action_path(content_dir));
   if (!action) return action.error();
   key_action::HumaneInputs in;
@@ -108,9 +111,9 @@ Result<piano::ScorePlan> plan_rolling_wide_chords(const music::Score& unpinned,
 
 }  // namespace
 
-Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
+Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index) {
   const scene::Scene& scene = builder.scene();
-  const scene::Pianist& pianist = *scene.pianist;
+  const scene::Pianist& pianist = scene.pianists.at(index);
   const std::filesystem::path& content_dir = builder.content_dir();
   const music::Score& full = builder.scores()[pianist.music_file];
   PianistPlan plan;
@@ -120,7 +123,7 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
   for (const std::string& name : pianist.parts) {
     const int part = scene::find_part(full, name);
     if (part < 0) {
-      return Error{scene.source + ": pianist: no part \"" + name + "\" in " +
+      return Error{scene.source + ": " + pianist.name + ": no part \"" + name + "\" in " +
                    scene.music[pianist.music_file].filename().string()};
     }
     played[static_cast<std::size_t>(part)] = true;
@@ -149,7 +152,7 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
   plan.plan_key = pianist_plan_key(scene, pianist);
   const stage::Stage* reuse = builder.previous();
   const ecs::Entity previous_entity =
-      reuse != nullptr ? reuse->find_performer("piano", 0) : ecs::Entity::null;
+      reuse != nullptr ? reuse->find_performer("piano", index) : ecs::Entity::null;
   const PianistPlan* previous =
       previous_entity.is_null() ? nullptr : reuse->world().try_get<PianistPlan>(previous_entity);
   if (previous != nullptr && previous->plan_key == plan.plan_key && previous->motion) {
@@ -169,10 +172,10 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
       auto planned = plan_rolling_wide_chords(unpinned, *model, plan.rolls);
       if (!planned) return planned.error();
       plan.base_fingering = std::move(*planned);
-      builder.replanned("pianist fingering");
+      builder.replanned(pianist.name + " fingering");
     }
     if (plan.rolls.chords > 0) {
-      plan.plan_notes.push_back("pianist: " + std::to_string(plan.rolls.chords) +
+      plan.plan_notes.push_back(pianist.name + ": " + std::to_string(plan.rolls.chords) +
                                 (plan.rolls.chords == 1 ? " chord" : " chords") +
                                 " too wide for the hand rolled");
     }
@@ -184,7 +187,7 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
                                                    pinned_notes, &span);
       if (!replanned) return replanned.error();
       plan.fingering = std::move(*replanned);
-      builder.replanned("pianist fingering around the pins (" +
+      builder.replanned(pianist.name + " fingering around the pins (" +
                         std::to_string(span.searched_events) + " of " +
                         std::to_string(span.event_count) + " events)");
     }
@@ -192,7 +195,7 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
         piano_performance::plan_performance_paths(plan.fingering);
     for (const piano_performance::HandReport* hand :
          {&performance.report.right, &performance.report.left}) {
-      if (!hand->path_error.empty()) plan.plan_notes.push_back("pianist: " + hand->path_error);
+      if (!hand->path_error.empty()) plan.plan_notes.push_back(pianist.name + ": " + hand->path_error);
     }
     auto params = finger_motion::load_finger_motion_params(
         finger_motion::finger_motion_params_path(content_dir));
@@ -216,7 +219,7 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder) {
       planned_motion->left_path = std::move(performance.left_path);
       plan.motion = std::move(planned_motion);
     }
-    builder.replanned("pianist motion");
+    builder.replanned(pianist.name + " motion");
   }
   plan.score = std::move(score);
   return plan;

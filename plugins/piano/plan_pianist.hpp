@@ -10,7 +10,8 @@
 
 namespace tutti::piano_family {
 
-// The pianist's plan for builder.scene(). Adds what it planned afresh to builder.replanned().
-Result<PianistPlan> plan_pianist(stage::StageBuilder& builder);
+// The plan of builder.scene().pianists[index]. Adds what it planned afresh to
+// builder.replanned().
+Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index);
 
 }  // namespace tutti::piano_family

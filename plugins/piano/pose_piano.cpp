@@ -97,11 +97,16 @@ void pose_pianist(ecs::World& world, PianoRig& rig) {
     hand_model->root =
         rig.keyboard_to_world *
         glm::translate(glm::mat4(1.0f), keyboard_point(hand->x_mm, hand->y_mm, hand->z_mm));
-    wrists[static_cast<std::size_t>(side)] =
-        glm::vec3(rig.keyboard_to_world *
-                  glm::vec4(keyboard_point(hand->x_mm, hand->y_mm - kWristBehindKnuckleMm,
-                                           hand->z_mm + kWristAboveKnuckleMm),
-                            1.0f));
+    // Only a preset other than the default's scales (the default's poses stay bit for bit).
+    if (rig.hand_scale != 1.0f) {
+      hand_model->root *= glm::scale(glm::mat4(1.0f), glm::vec3(rig.hand_scale));
+    }
+    const double wrist_scale = rig.hand_scale;
+    wrists[static_cast<std::size_t>(side)] = glm::vec3(
+        rig.keyboard_to_world *
+        glm::vec4(keyboard_point(hand->x_mm, hand->y_mm - kWristBehindKnuckleMm * wrist_scale,
+                                 hand->z_mm + kWristAboveKnuckleMm * wrist_scale),
+                  1.0f));
     const float mirror = side == 0 ? 1.0f : -1.0f;
     for (std::size_t f = 0; f < 5; ++f) {
       const auto* finger =

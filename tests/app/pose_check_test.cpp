@@ -319,6 +319,28 @@ TEST(PoseCheck, APolonaisesTenthIsRolledHeardAsStruckWithThePadsOnTheKeys) {
 // lift switched off (content's "pass_over": {"lift_mm": 0}) the measure shows the right hand
 // passing through the left; with it, the hands are apart. Each pressing pad lies on its key's
 // top.
+// Two pianists at two pianos: each is measured on their own (their pads on their own keys, their
+// keys, their hands), and every limit holds for both.
+TEST(PoseCheck, TwoPianistsAreMeasuredEachOnTheirOwn) {
+  const PoseReport report = check("piano_duo.json");
+  for (const std::string who : {"pianist", "pianist 2"}) {
+    const PoseMeasure& pads =
+        get(report, who + ": pressing fingertip's pad above its key's top at key bottom");
+    EXPECT_GT(pads.samples.size(), 100u) << who;
+    EXPECT_TRUE(pads.within_limit()) << who;
+    EXPECT_TRUE(get(report, who + ": pressing pad off its key's top (0 = on it)").within_limit())
+        << who;
+    const PoseMeasure& apart = get(report, who + ": one hand inside the other (depth; 0 = apart)");
+    EXPECT_GT(apart.samples.size(), 300u) << who;
+    EXPECT_EQ(apart.worst(), 0.0) << who;
+    const PoseMeasure& keys =
+        get(report, who + ": keys half down (25-75 %), no note sounding, of all keys' seconds");
+    EXPECT_EQ(keys.samples.size(), 1u) << who;
+    EXPECT_TRUE(keys.within_limit()) << who;
+  }
+  for (const PoseMeasure& m : report.measures) EXPECT_TRUE(m.within_limit()) << m.name;
+}
+
 TEST(PoseCheck, OneHandInsideTheOtherIsMeasured) {
   for (const char* scene : {"piano.json", "piano_beginner.json"}) {
     const PoseReport report = check(scene);

@@ -120,12 +120,36 @@ TEST(SceneEditsPiano, PinAndUnpin) {
   ASSERT_TRUE(doc) << doc.error().message;
   ASSERT_TRUE(doc->apply(*pin_finger(doc->json(), 1.5, 64, 3)));
   ASSERT_TRUE(doc->apply(*pin_finger(doc->json(), 1.5, 64, 2)));  // the same note: replaced
-  ASSERT_EQ(doc->scene().pianist->pins.size(), 1u);
-  EXPECT_EQ(doc->scene().pianist->pins[0], (scene::FingerPin{1.5, 64, 2}));
+  ASSERT_EQ(doc->scene().pianists.front().pins.size(), 1u);
+  EXPECT_EQ(doc->scene().pianists.front().pins[0], (scene::FingerPin{1.5, 64, 2}));
   ASSERT_TRUE(doc->apply(*unpin_finger(doc->json(), 1.5, 64)));
-  EXPECT_TRUE(doc->scene().pianist->pins.empty());
+  EXPECT_TRUE(doc->scene().pianists.front().pins.empty());
   EXPECT_FALSE(doc->json()["pianist"].contains("pins"));
   EXPECT_FALSE(unpin_finger(doc->json(), 1.5, 64));
+}
+
+// With two pianists, each pin, seed and variation goes to the pianist it is about, at
+// "/pianists/<index>", and the other pianist's entry is left as it was.
+TEST(SceneEditsPiano, TwoPianistsEachTheirOwn) {
+  ScratchDir dir;
+  auto doc = Document::open(dir.copy_scene("piano_duo.json"));
+  ASSERT_TRUE(doc) << doc.error().message;
+  const Json first = doc->json()["pianists"][0];
+  auto pin = pin_finger(doc->json(), 0.0, 64, 2, 1);  // Piano II's first note, E4
+  ASSERT_TRUE(pin) << pin.error().message;
+  ASSERT_EQ(pin->changes.size(), 1u);
+  EXPECT_EQ(pin->changes[0].pointer, "/pianists/1/pins");
+  ASSERT_TRUE(doc->apply(std::move(*pin)));
+  EXPECT_TRUE(doc->scene().pianists[0].pins.empty());
+  ASSERT_EQ(doc->scene().pianists[1].pins.size(), 1u);
+  EXPECT_EQ(doc->scene().pianists[1].pins[0], (scene::FingerPin{0.0, 64, 2}));
+  auto seed = set_seed(doc->json(), {true, 1}, 99);
+  ASSERT_TRUE(seed) << seed.error().message;
+  EXPECT_EQ(seed->label, "new seed for pianist 2");
+  ASSERT_TRUE(doc->apply(std::move(*seed)));
+  EXPECT_EQ(doc->scene().pianists[1].seed, 99u);
+  EXPECT_EQ(doc->json()["pianists"][0], first);
+  EXPECT_FALSE(pin_finger(doc->json(), 0.0, 64, 2, 2)) << "there is no third pianist";
 }
 
 }  // namespace

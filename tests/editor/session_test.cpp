@@ -80,11 +80,11 @@ TEST(Session, PinningAFingerReplansTheFingering) {
   EXPECT_EQ(s.stage().replanned()[0].rfind("pianist fingering around the pins (", 0), 0u)
       << s.stage().replanned()[0];
   EXPECT_EQ(s.stage().replanned()[1], "pianist motion");
-  EXPECT_FALSE(s.timeline().corridors[0].empty());
+  EXPECT_FALSE(s.timeline().lanes.back().corridors[0].empty());
   // The hand's path, as the panel draws it, keeps to the allowed areas.
   int inside = 0, samples = 0;
-  for (const auto& [t, x] : s.timeline().hand_path[0]) {
-    for (const HandCorridorView& c : s.timeline().corridors[0]) {
+  for (const auto& [t, x] : s.timeline().lanes.back().hand_path[0]) {
+    for (const HandCorridorView& c : s.timeline().lanes.back().corridors[0]) {
       if (t < c.start_s || t > c.end_s) continue;
       ++samples;
       inside += x >= c.lo_mm - 1.0 && x <= c.hi_mm + 1.0 ? 1 : 0;

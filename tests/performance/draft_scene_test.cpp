@@ -60,8 +60,8 @@ int onsets_for_camera(const Drafted& d, const std::string& camera, double from, 
       parts.insert(scene::find_part(d.score, p.part));
     }
   }
-  if (d.scene.pianist && camera.rfind("piano", 0) == 0) {
-    for (const std::string& part : d.scene.pianist->parts) {
+  if (!d.scene.pianists.empty() && camera.rfind("piano", 0) == 0) {
+    for (const std::string& part : d.scene.pianists.front().parts) {
       parts.insert(scene::find_part(d.score, part));
     }
   }
@@ -94,7 +94,7 @@ TEST(DraftScene, AChoraleWithTrumpetsGetsThreeTrumpetersAndNamesTheVoicesItLeave
     EXPECT_EQ(d.scene.performers[i].part, "Trumpet " + std::to_string(i + 1));
     EXPECT_EQ(d.scene.performers[i].lead, i == 0);
   }
-  EXPECT_FALSE(d.scene.pianist) << "Soprano, Alto, ... are not piano parts (their program is 0 "
+  EXPECT_TRUE(d.scene.pianists.empty()) << "Soprano, Alto, ... are not piano parts (their program is 0 "
                                    "only because the file states none)";
   const std::string notes = joined_notes(d.draft);
   for (const char* part : {"Soprano", "Alto", "Tenor", "Bass", "Timpani"}) {
@@ -152,15 +152,15 @@ TEST(DraftScene, APianoPieceGoesToThePianistWithThePianosCameras) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/pianoplayer/mozart_sonfacile.mxl");
   EXPECT_TRUE(d.scene.performers.empty());
-  ASSERT_TRUE(d.scene.pianist);
-  EXPECT_EQ(d.scene.pianist->parts.size(), 2u);
+  ASSERT_EQ(d.scene.pianists.size(), 1u);
+  EXPECT_EQ(d.scene.pianists.front().parts.size(), 2u);
   EXPECT_GE(d.scene.find_camera("piano_hands"), 0);
   EXPECT_TRUE(d.draft.notes.empty()) << joined_notes(d.draft);
   expect_cuts_follow_the_players(d);
 
   const Drafted bach = draft_of("midi/tonejs/bach_846.mid");
-  ASSERT_TRUE(bach.scene.pianist);
-  EXPECT_EQ(bach.scene.pianist->parts.front(), "Piano right");
+  ASSERT_EQ(bach.scene.pianists.size(), 1u);
+  EXPECT_EQ(bach.scene.pianists.front().parts.front(), "Piano right");
 }
 
 TEST(DraftScene, BrassAndPianoTogetherSitSideBySide) {
@@ -169,8 +169,8 @@ TEST(DraftScene, BrassAndPianoTogetherSitSideBySide) {
   ASSERT_EQ(d.scene.performers.size(), 2u);
   EXPECT_EQ(d.scene.performers[0].instrument, "trumpet_bb");
   EXPECT_EQ(d.scene.performers[1].instrument, "horn_double");
-  ASSERT_TRUE(d.scene.pianist);
-  EXPECT_EQ(d.scene.pianist->parts, std::vector<std::string>{"Piano"});
+  ASSERT_EQ(d.scene.pianists.size(), 1u);
+  EXPECT_EQ(d.scene.pianists.front().parts, std::vector<std::string>{"Piano"});
   for (const scene::Performer& p : d.scene.performers) {
     EXPECT_GT(p.position_m.x, 1.5) << p.name << " clear of the piano at the origin";
   }

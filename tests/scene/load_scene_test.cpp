@@ -30,7 +30,7 @@ TEST(ShippedScenes, QuartetLoads) {
   EXPECT_EQ(scene->music[0].filename(), "quartet.musicxml");
   EXPECT_TRUE(std::filesystem::is_regular_file(scene->music[0]));
   ASSERT_EQ(scene->performers.size(), 4u);
-  EXPECT_FALSE(scene->pianist.has_value());
+  EXPECT_TRUE(scene->pianists.empty());
   const char* instruments[] = {"trumpet_bb", "trumpet_bb", "trombone_tenor", "trombone_tenor"};
   int leads = 0;
   for (std::size_t i = 0; i < 4; ++i) {
@@ -71,12 +71,12 @@ TEST(ShippedScenes, PianoLoads) {
   auto scene = load_scene(scenes_dir() / "piano.json");
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_TRUE(scene->performers.empty());
-  ASSERT_TRUE(scene->pianist.has_value());
-  EXPECT_EQ(scene->pianist->parts, std::vector<std::string>{"Piano"});
-  EXPECT_EQ(scene->pianist->hand_size, "medium");
-  EXPECT_GT(scene->pianist->position_m.z, 0.0) << "the pianist sits at +Z";
-  EXPECT_DOUBLE_EQ(scene->pianist->facing_deg, 180.0);
-  EXPECT_EQ(scene->pianist->seed, derive_seed(3, 0));
+  ASSERT_EQ(scene->pianists.size(), 1u);
+  EXPECT_EQ(scene->pianists.front().parts, std::vector<std::string>{"Piano"});
+  EXPECT_EQ(scene->pianists.front().hand_size, "medium");
+  EXPECT_GT(scene->pianists.front().position_m.z, 0.0) << "the pianist sits at +Z";
+  EXPECT_DOUBLE_EQ(scene->pianists.front().facing_deg, 180.0);
+  EXPECT_EQ(scene->pianists.front().seed, derive_seed(3, 0));
   EXPECT_GE(scene->cameras.size(), 2u);
   EXPECT_GE(scene->shots.size(), 3u);
   EXPECT_EQ(scene->camera_at(0.0).name, "wide");
@@ -93,9 +93,9 @@ TEST(ShippedScenes, MusicLoadsAndHasEveryPart) {
     for (const Performer& p : scene->performers) {
       EXPECT_GE(find_part((*scores)[p.music_file], p.part), 0) << name << ": " << p.part;
     }
-    if (scene->pianist) {
-      for (const std::string& part : scene->pianist->parts) {
-        EXPECT_GE(find_part((*scores)[scene->pianist->music_file], part), 0)
+    if (!scene->pianists.empty()) {
+      for (const std::string& part : scene->pianists.front().parts) {
+        EXPECT_GE(find_part((*scores)[scene->pianists.front().music_file], part), 0)
             << name << ": " << part;
       }
     }
@@ -363,7 +363,7 @@ TEST(SceneErrors, Pianist) {
   doc["pianist"] = {{"parts", {"Trombone 2"}}};
   auto scene = parse_scene(doc, "s.json", scenes_dir());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(scene->pianist->hand_size, "medium");  // hands.json's default_preset
+  EXPECT_EQ(scene->pianists.front().hand_size, "medium");  // hands.json's default_preset
 }
 
 TEST(SceneErrors, PartMissingFromTheMusic) {

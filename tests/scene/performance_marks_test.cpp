@@ -48,10 +48,10 @@ TEST(PerformanceMarks, AreReadAndSorted) {
   EXPECT_DOUBLE_EQ(t1.expressions[0].amount, 0.7);
   EXPECT_EQ(t1.expressions[1].kind, ExpressionKind::relaxed);
   EXPECT_DOUBLE_EQ(t1.expressions[1].amount, 1.0);  // the default
-  ASSERT_TRUE(scene->pianist.has_value());
-  ASSERT_EQ(scene->pianist->pins.size(), 2u);
-  EXPECT_EQ(scene->pianist->pins[0], (FingerPin{2.5, 50, 3})) << "pins keep the file's order";
-  EXPECT_EQ(scene->pianist->pins[1], (FingerPin{1.0, 48, 1}));
+  ASSERT_EQ(scene->pianists.size(), 1u);
+  ASSERT_EQ(scene->pianists.front().pins.size(), 2u);
+  EXPECT_EQ(scene->pianists.front().pins[0], (FingerPin{2.5, 50, 3})) << "pins keep the file's order";
+  EXPECT_EQ(scene->pianists.front().pins[1], (FingerPin{1.0, 48, 1}));
   ASSERT_TRUE(scene->cues_s.has_value());
   EXPECT_EQ(*scene->cues_s, (std::vector<double>{4.5, 16.0}));
 }
@@ -67,7 +67,7 @@ TEST(PerformanceMarks, AbsentMeansNone) {
   EXPECT_FALSE(scene->cues_s.has_value()) << "no list: the automatic cue";
   EXPECT_TRUE(scene->performers[0].breaths.add_s.empty());
   EXPECT_TRUE(scene->performers[0].expressions.empty());
-  EXPECT_TRUE(scene->pianist->pins.empty());
+  EXPECT_TRUE(scene->pianists.front().pins.empty());
   doc["cues"] = json::array();
   auto no_cues = parse_scene(doc, "s.json", scenes_dir());
   ASSERT_TRUE(no_cues.ok());

@@ -31,16 +31,16 @@ std::string error_of(const json& document) {
 TEST(PianistStyle, AbsentMeansTheWrittenSoundAndNoStyle) {
   auto scene = parse_scene(piano_scene(json::object()), "s.json", scenes_dir());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(scene->pianist->style, "");
-  EXPECT_FALSE(scene->pianist->sound_from_keys);
+  EXPECT_EQ(scene->pianists.front().style, "");
+  EXPECT_FALSE(scene->pianists.front().sound_from_keys);
 }
 
 TEST(PianistStyle, AStyleAndTheKeysSound) {
   auto scene =
       parse_scene(piano_scene({{"style", "beginner"}, {"sound", "keys"}}), "s.json", scenes_dir());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(scene->pianist->style, "beginner");
-  EXPECT_TRUE(scene->pianist->sound_from_keys);
+  EXPECT_EQ(scene->pianists.front().style, "beginner");
+  EXPECT_TRUE(scene->pianists.front().sound_from_keys);
 }
 
 TEST(PianistStyle, BadValuesAreOneLineErrors) {

@@ -217,7 +217,7 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
   const int planned = before.fingering.fingers[i];
   ASSERT_GE(planned, 1);
   const int pinned = planned == 1 ? 2 : 1;
-  scene->pianist->pins.push_back(scene::FingerPin{note.onset_s, note.pitch, pinned});
+  scene->pianists.front().pins.push_back(scene::FingerPin{note.onset_s, note.pitch, pinned});
   auto stage = build_stage(*scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
   const PianistPlan& seat = pianist_plan(**stage);
@@ -230,7 +230,7 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
   EXPECT_EQ(finger.key, note.pitch);
   EXPECT_GT(finger.press_depth, 0.9);
 
-  scene->pianist->pins.back().key = note.pitch + 1;  // a note that is not there
+  scene->pianists.front().pins.back().key = note.pitch + 1;  // a note that is not there
   auto wrong = build_stage(*scene, {});
   ASSERT_FALSE(wrong);
   EXPECT_NE(wrong.error().message.find("piano.json: /pianist/pins/0: no note of key " +
@@ -248,8 +248,8 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
   EXPECT_FALSE(pianist_plan(**written).played) << "no style: no key simulation";
   ASSERT_EQ((*written)->heard_scores()[0].notes.size(), (*written)->scores()[0].notes.size());
 
-  scene->pianist->style = "beginner";
-  scene->pianist->sound_from_keys = true;
+  scene->pianists.front().style = "beginner";
+  scene->pianists.front().sound_from_keys = true;
   auto stage = build_stage(*scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
   const PianistPlan& seat = pianist_plan(**stage);
@@ -288,7 +288,7 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
   auto same = build_stage(*scene, again);
   ASSERT_TRUE(same) << same.error().message;
   EXPECT_EQ(pianist_plan(**same).played, seat.played);
-  scene->pianist->seed += 1;
+  scene->pianists.front().seed += 1;
   again.reuse_models = same->get();
   auto reseeded = build_stage(*scene, again);
   ASSERT_TRUE(reseeded) << reseeded.error().message;

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// Two pianists on one stage (content/scenes/piano_duo.json): each is a performer of their own at
+// a piano of their own, plays the notes of their own part, and touches only their own keys.
+#include <tutti/stage/stage.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <string>
+
+#include <tutti/components/note.hpp>
+#include <tutti/components/performer.hpp>
+#include <tutti/piano/piano_components.hpp>
+#include <tutti/scene/load_scene.hpp>
+#include <tutti/stage/contact_recorder.hpp>
+#include "bundled_stage.hpp"
+
+namespace tutti::stage {
+namespace {
+
+using piano_family::PianoRig;
+
+TEST(TwoPianists, EachPlaysTheirOwnPartAtTheirOwnPiano) {
+  auto stage = test::stage_bundled_scene("piano_duo.json");
+  ASSERT_NE(stage, nullptr);
+  const ecs::World& world = stage->world();
+  const ecs::Entity first = stage->find_performer("piano", 0);
+  const ecs::Entity second = stage->find_performer("piano", 1);
+  ASSERT_FALSE(first.is_null());
+  ASSERT_FALSE(second.is_null());
+  EXPECT_EQ(world.get<components::Performer>(first).name, "pianist");
+  EXPECT_EQ(world.get<components::Performer>(second).name, "pianist 2");
+  const PianoRig& rig_1 = world.get<PianoRig>(first);
+  const PianoRig& rig_2 = world.get<PianoRig>(second);
+  ASSERT_NE(rig_1.piano, rig_2.piano);
+  // The pianos stand where their benches are: 1.7 m apart, as the scene places them.
+  const auto root_of = [&](ecs::Entity piano) {
+    const auto& instances = stage->instances();
+    const auto at = std::find(instances.begin(), instances.end(), piano);
+    if (at == instances.end()) {
+      ADD_FAILURE() << "the piano is not placed";
+      return glm::vec3(0.0f);
+    }
+    return glm::vec3(stage->placed(static_cast<std::size_t>(at - instances.begin())).root[3]);
+  };
+  const glm::vec3 piano_1 = root_of(rig_1.piano);
+  const glm::vec3 piano_2 = root_of(rig_2.piano);
+  EXPECT_NEAR(piano_2.x - piano_1.x, 1.7f, 1e-4f);
+
+  // Every note of part i (Piano I, Piano II) is claimed by pianist i, and by nobody else.
+  const music::Score& score = stage->scores().front();
+  std::size_t claimed[2] = {0, 0};
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    const auto& note = world.get<components::Note>(stage->note_entity(0, i));
+    const ecs::Entity expected = score.notes[i].part == 0 ? first : second;
+    ASSERT_EQ(note.performer, expected) << "note " << i;
+    ++claimed[score.notes[i].part == 0 ? 0 : 1];
+  }
+  EXPECT_EQ(claimed[0], claimed[1]) << "Piano II doubles Piano I an octave lower";
+  EXPECT_GT(claimed[0], 80u);
+
+  // Over 10 s each pianist's fingertips touch only their own piano's keys, the pitches of
+  // their own part.
+  ContactRecorder recorder;
+  for (int k = 0; k < 300; ++k) {
+    const double t = k / 30.0;
+    evaluate_stage(*stage, t);
+    recorder.record(*stage, t);
+  }
+  std::set<int> pitches[2];
+  for (const music::Note& n : score.notes) pitches[n.part == 0 ? 0 : 1].insert(n.pitch);
+  std::size_t spans[2] = {0, 0};
+  for (const Contact& contact : recorder.contacts()) {
+    const int who = contact.performer == first ? 0 : contact.performer == second ? 1 : -1;
+    ASSERT_GE(who, 0);
+    const ecs::Entity own_piano = who == 0 ? rig_1.piano : rig_2.piano;
+    EXPECT_EQ(stage->instances()[contact.part_instance], own_piano) << "pianist " << who + 1;
+    for (const ContactSpan& span : contact.spans) {
+      EXPECT_TRUE(pitches[who].count(span.midi)) << "pianist " << who + 1 << " key " << span.midi;
+      ++spans[who];
+    }
+  }
+  EXPECT_GT(spans[0], 20u);
+  EXPECT_GT(spans[1], 20u);
+}
+
+}  // namespace
+}  // namespace tutti::stage
