@@ -12,6 +12,8 @@
 #include <tutti/music/load_score.hpp>
 #include <tutti/fingering_planner/brass_lines.hpp>
 #include <tutti/music/general_midi.hpp>
+#include <tutti/piano_model/content_dir.hpp>
+#include <tutti/piano_model/keyboard_instruments.hpp>
 
 namespace tutti::performance {
 namespace {
@@ -104,6 +106,20 @@ std::size_t section_of(const brass::Instrument& instrument) {
     if (instrument.model_name() == kSections[s].model) return s;
   }
   return std::size(kSections) - 1;
+}
+
+// A keyboard player other than the pianist: the instrument and the parts they play.
+struct Keyboardist {
+  const piano::KeyboardInstrument* instrument = nullptr;
+  std::vector<int> parts;
+};
+
+// Keyboard player k's bench x: the pianist keeps the origin (where the piano plugin's default
+// bench is); the others sit to the audience's left of it, a piano's width and some apart.
+double keyboardist_x(bool with_piano, std::size_t k) {
+  constexpr double kSpacing_m = 1.7;
+  const std::size_t seat = k + (with_piano ? 1 : 0);
+  return seat == 0 ? 0.0 : -kSpacing_m * static_cast<double>(seat);  // never -0.0 in the file
 }
 
 struct Player {
@@ -300,35 +316,58 @@ Result<DraftedScene> draft_scene(const music::Score& score,
   const std::vector<brass::BrassPart> brass_parts = brass::find_brass_parts(score, *known);
   std::set<int> brass_indices;
   for (const brass::BrassPart& b : brass_parts) brass_indices.insert(b.part);
+  auto instruments = piano::KeyboardInstruments::load(
+      piano::keyboard_instruments_path(piano::default_content_dir()));
+  if (!instruments) return instruments.error();
   std::vector<int> piano_parts;
+  // The keyboard family's other instruments (content/piano/instruments.json), one player each,
+  // in the file's order: an organist, a harpsichordist, a keyboardist at a synth, ...
+  std::vector<Keyboardist> keyboardists;
   std::vector<std::string> unplayed;
   for (std::size_t p = 0; p < score.parts.size(); ++p) {
     const int part = static_cast<int>(p);
     if (brass_indices.count(part) != 0 || !has_notes(score, part)) continue;
     const music::Part& info = score.parts[p];
     const std::vector<std::string> words = words_of(info.name);
-    const bool piano_program = info.program >= 0 && info.program <= 7;
-    if (!info.percussion &&
-        (names_a_keyboard(words) || (piano_program && !names_another_instrument(words)))) {
+    // By name first; by General MIDI program unless the name says another instrument (files
+    // that state no program leave it at 0, "piano").
+    const piano::KeyboardInstrument* keyboard = nullptr;
+    if (!info.percussion) {
+      keyboard = instruments->recognise(words, -1);
+      if (keyboard == nullptr && names_a_keyboard(words)) keyboard = instruments->find("piano");
+      if (keyboard == nullptr && !names_another_instrument(words)) {
+        keyboard = instruments->recognise({}, info.program);
+      }
+    }
+    if (keyboard == nullptr) {
+      unplayed.push_back(part_label(info));
+    } else if (keyboard->id == "piano") {
       piano_parts.push_back(part);
     } else {
-      unplayed.push_back(part_label(info));
+      auto same = std::find_if(keyboardists.begin(), keyboardists.end(),
+                               [&](const Keyboardist& k) { return k.instrument == keyboard; });
+      if (same == keyboardists.end()) {
+        keyboardists.push_back(Keyboardist{keyboard, {}});
+        same = keyboardists.end() - 1;
+      }
+      same->parts.push_back(part);
     }
   }
-  if (!unplayed.empty() && !(brass_parts.empty() && piano_parts.empty())) {
+  const bool plays_nothing = brass_parts.empty() && piano_parts.empty() && keyboardists.empty();
+  if (!unplayed.empty() && !plays_nothing) {
     std::string parts;
     for (const std::string& name : unplayed) parts += (parts.empty() ? "" : ", ") + name;
     drafted.notes.push_back(std::to_string(unplayed.size()) + " part" +
                             (unplayed.size() == 1 ? "" : "s") +
                             " not played (tutti plays trumpet, horn, trombone, euphonium, tuba "
-                            "and piano): " + parts);
+                            "and keyboards): " + parts);
   }
-  if (brass_parts.empty() && piano_parts.empty()) {
+  if (plays_nothing) {
     std::string parts;
     for (const std::string& name : unplayed) parts += (parts.empty() ? "" : ", ") + name;
     return Error{score.source + ": no part tutti can play (parts: " +
                  (parts.empty() ? std::string("none with notes") : parts) +
-                 "); tutti plays trumpet, horn, trombone, euphonium, tuba and piano"};
+                 "); tutti plays trumpet, horn, trombone, euphonium, tuba and keyboards"};
   }
 
   // Players, by section, then part order, then voice.
@@ -355,11 +394,11 @@ Result<DraftedScene> draft_scene(const music::Score& score,
     p.camera_stem = camera_stem_of(p.name);
   }
 
-  // The piano stays where the piano plugin builds it (keys' front at the origin); the brass sit
-  // to its right, as seen from the audience.
+  // The piano stays where the piano plugin builds it (keys' front at the origin), the other
+  // keyboards to its left and the brass to its right, as seen from the audience.
   const bool with_piano = !piano_parts.empty();
   const double arc_half = players.empty() ? 0.0 : (static_cast<double>(players.size()) - 1) / 2.0;
-  const double arc_centre = with_piano ? 2.2 + arc_half : 0.0;
+  const double arc_centre = with_piano || !keyboardists.empty() ? 2.2 + arc_half : 0.0;
   seat_in_arc(players, arc_centre);
 
   json document;
@@ -369,6 +408,11 @@ Result<DraftedScene> draft_scene(const music::Score& score,
                std::string(kSections[section].model) + (count > 1 ? "s" : "");
   }
   if (with_piano) summary += (summary.empty() ? "" : " and ") + std::string("a pianist");
+  for (const Keyboardist& k : keyboardists) {
+    const std::string& who = k.instrument->player;
+    const bool vowel = std::string_view("aeiou").find(who.front()) != std::string_view::npos;
+    summary += (summary.empty() ? "" : " and ") + std::string(vowel ? "an " : "a ") + who;
+  }
   const std::string piece = std::filesystem::path(score.source).filename().string();
   document["description"] = "Made by tutti scene new from " + piece + ": " + summary +
                             (unplayed.empty() ? "." : " (not played: " + [&] {
@@ -394,10 +438,26 @@ Result<DraftedScene> draft_scene(const music::Score& score,
     performers.push_back(std::move(performer));
   }
   if (!performers.empty()) document["performers"] = std::move(performers);
-  if (with_piano) {
+  if (with_piano && keyboardists.empty()) {
     json parts = json::array();
     for (int p : piano_parts) parts.push_back(part_reference(score, p));
     document["pianist"] = json{{"parts", std::move(parts)}};
+  } else if (!keyboardists.empty()) {
+    json pianists = json::array();
+    if (with_piano) {
+      json parts = json::array();
+      for (int p : piano_parts) parts.push_back(part_reference(score, p));
+      pianists.push_back(json{{"parts", std::move(parts)}});
+    }
+    for (std::size_t k = 0; k < keyboardists.size(); ++k) {
+      json parts = json::array();
+      for (int p : keyboardists[k].parts) parts.push_back(part_reference(score, p));
+      pianists.push_back(json{{"instrument", keyboardists[k].instrument->id},
+                              {"parts", std::move(parts)},
+                              {"position_m", vec3(keyboardist_x(with_piano, k), 0.0, 0.6)},
+                              {"facing_deg", 180}});
+    }
+    document["pianists"] = std::move(pianists);
   }
 
   // Cameras: the whole group, each section, each player (front, and the lead from the side),
@@ -406,7 +466,11 @@ Result<DraftedScene> draft_scene(const music::Score& score,
   double left = players.empty() ? 0.0 : players.front().x;
   double right = players.empty() ? 0.0 : players.back().x;
   if (with_piano) left = std::min(left, -0.8), right = std::max(right, 0.8);
-  if (players.empty()) {
+  if (!keyboardists.empty()) {
+    left = std::min(left, keyboardist_x(with_piano, keyboardists.size() - 1) - 0.8);
+    right = std::max(right, with_piano ? 0.8 : keyboardist_x(false, 0) + 0.8);
+  }
+  if (players.empty() && keyboardists.empty()) {
     cameras.push_back(camera("wide", 2.4, 1.55, 3.0, 0.0, 0.95, 0.25, 40.0));
   } else {
     cameras.push_back(wide_camera("wide", left - 0.7, right + 0.7, 0.6, 40.0));
@@ -444,6 +508,13 @@ Result<DraftedScene> draft_scene(const music::Score& score,
     group_cameras["piano"] = {"piano_hands", "piano_treble_end", "piano_face"};
     if (!players.empty()) group_cameras["piano"].push_back("piano");
   }
+  // Each other keyboard player: their hands from over the right shoulder, as the pianist's.
+  for (std::size_t k = 0; k < keyboardists.size(); ++k) {
+    const double x = keyboardist_x(with_piano, k);
+    const std::string name = keyboardists[k].instrument->id + "_hands";
+    cameras.push_back(camera(name, x + 0.55, 1.45, 0.75, x, 0.74, -0.05, 38.0));
+    group_cameras[keyboardists[k].instrument->id] = {name};
+  }
   document["cameras"] = std::move(cameras);
 
   // Shots: every window of a few bars goes to the group with the most onsets there; each group
@@ -451,6 +522,9 @@ Result<DraftedScene> draft_scene(const music::Score& score,
   std::map<int, std::string> group_of_part;
   for (const Player& p : players) group_of_part[p.part] = std::string(kSections[p.section].model);
   for (int p : piano_parts) group_of_part[p] = "piano";
+  for (const Keyboardist& k : keyboardists) {
+    for (int p : k.parts) group_of_part[p] = k.instrument->id;
+  }
   json shots = json::array();
   shots.push_back(json{{"camera", "wide"}, {"start_s", 0}});
   std::string on_screen = "wide";

@@ -278,7 +278,7 @@ Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianis
   if (!object.is_object()) return reader_.error(path, "expected an object");
   if (auto ok = reader_.json().check_keys(
           object, path,
-          {"name", "parts", "music_file", "hand_size", "position_m", "facing_deg", "seed", "variation",
+          {"name", "instrument", "parts", "music_file", "hand_size", "position_m", "facing_deg", "seed", "variation",
            "character", "hands", "pins", "style", "sound"});
       !ok) {
     return ok;
@@ -321,6 +321,29 @@ Status SceneParser::parse_pianist(const json& object, const Scene& scene, Pianis
                                                    "\" (hands.json has: " + join(presets) + ")");
   }
   pianist.hand_size = *hand_size;
+
+  // Instruments are those of content/piano/instruments.json.
+  auto instruments = read_scene_json(content_dir_ / "piano" / "instruments.json");
+  if (!instruments) return instruments.error();
+  std::vector<std::string> ids;
+  if (instruments->contains("instruments") && instruments->at("instruments").is_object()) {
+    for (const auto& item : instruments->at("instruments").items()) ids.push_back(item.key());
+  }
+  auto instrument = reader_.string_or(object, path, "instrument", "piano");
+  if (!instrument) return instrument.error();
+  if (std::find(ids.begin(), ids.end(), *instrument) == ids.end()) {
+    const std::vector<std::string_view> names(ids.begin(), ids.end());
+    return reader_.error(path + "/instrument", "unknown keyboard instrument \"" + *instrument +
+                                                   "\"" + did_you_mean(*instrument, names) +
+                                                   " (instruments.json has: " + join(ids) + ")");
+  }
+  pianist.instrument = *instrument;
+  const json& entry = instruments->at("instruments").at(*instrument);
+  if (!object.contains("name")) {
+    pianist.name = entry.contains("player") && entry.at("player").is_string()
+                       ? entry.at("player").get<std::string>()
+                       : std::string("pianist");
+  }
 
   auto position = reader_.vec3_or(object, path, "position_m", 100.0, pianist.position_m);
   if (!position) return position.error();
@@ -373,8 +396,16 @@ Status SceneParser::parse_pianists(const json& document, Scene& scene) const {
   for (std::size_t i = 0; i < objects.size(); ++i) {
     Pianist pianist;
     pianist.pointer = pointers[i];
-    pianist.name = i == 0 ? "pianist" : "pianist " + std::to_string(i + 1);
     if (auto ok = parse_pianist(*objects[i], scene, pianist); !ok) return ok;
+    // Unnamed players are called for their instrument: "pianist", "pianist 2", "organist", ...
+    if (objects[i]->is_object() && !objects[i]->contains("name")) {
+      const std::string base = pianist.name;
+      const auto taken = [&](const std::string& name) {
+        return std::any_of(scene.pianists.begin(), scene.pianists.end(),
+                           [&](const Pianist& other) { return other.name == name; });
+      };
+      for (int k = 2; taken(pianist.name); ++k) pianist.name = base + " " + std::to_string(k);
+    }
     for (const Pianist& other : scene.pianists) {
       if (other.name == pianist.name) {
         return reader_.error(pianist.pointer + "/name", "duplicate pianist name \"" +

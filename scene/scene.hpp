@@ -112,11 +112,16 @@ struct Performer {
   friend bool operator==(const Performer&, const Performer&) = default;
 };
 
-// A pianist at a piano. A scene has any number: "pianists" (an array), or "pianist" (one object,
+// A keyboard player (a pianist, an organist, ...) at an instrument of their own. A scene has any
+// number: "pianists" (an array), or "pianist" (one object,
 // the format before two pianos could be written; still read).
 struct Pianist {
-  // Unique among the scene's players, non-empty; "pianist", then "pianist 2", ... when not given.
+  // Unique among the scene's keyboard players, non-empty; when not given, the instrument's player
+  // ("pianist", "organist"), then "pianist 2", ...
   std::string name;
+  // A keyboard instrument of content/piano/instruments.json: "piano" (default), "organ",
+  // "harpsichord", "synth", ... Each has its own compass and model.
+  std::string instrument = "piano";
   std::string pointer;             // where it is in the file ("/pianist", "/pianists/1")
   std::vector<std::string> parts;  // score parts the pianist plays (name or id), at least one
   std::size_t music_file = 0;      // index into Scene::music

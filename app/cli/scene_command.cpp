@@ -11,6 +11,20 @@
 #include <tutti/scene/load_scene.hpp>
 
 namespace tutti::cli {
+namespace {
+
+// ", a pianist", ", a pianist, an organist", ... (each keyboard player by name, article first).
+std::string keyboard_players(const scene::Scene& scene) {
+  std::string out;
+  for (const scene::Pianist& p : scene.pianists) {
+    const bool vowel = !p.name.empty() && std::string_view("aeiou").find(p.name.front()) !=
+                                              std::string_view::npos;
+    out += std::string(vowel ? ", an " : ", a ") + p.name;
+  }
+  return out;
+}
+
+}  // namespace
 
 int run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
   const Fail fail{err};
@@ -46,9 +60,7 @@ int run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
   for (const std::string& note : drafted->notes) err << "note: " << note << "\n";
   out << "scene: wrote " << o.output.string() << " (" << scene->performers.size()
       << " brass player" << (scene->performers.size() == 1 ? "" : "s")
-      << (scene->pianists.empty()   ? ""
-          : scene->pianists.size() == 1 ? ", a pianist"
-                                        : ", " + std::to_string(scene->pianists.size()) + " pianists") << ", " << scene->cameras.size() << " cameras, "
+      << keyboard_players(*scene) << ", " << scene->cameras.size() << " cameras, "
       << scene->shots.size() << " shots)\n";
   return kExitOk;
 }

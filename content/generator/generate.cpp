@@ -15,6 +15,7 @@
 #include <tutti/generator/stage_asset.hpp>
 #include <tutti/generator/upright_brass.hpp>
 #include <tutti/piano_model/keyboard.hpp>
+#include <tutti/piano_model/keyboard_instruments.hpp>
 
 namespace tutti::content_generator {
 
@@ -38,6 +39,35 @@ std::vector<std::string> asset_file_names() {
           "trombone.glb",  "hand_right.glb",  "hand_left.glb", "performer.glb", "euphonium.glb",
           "tuba.glb",      "horn.glb"};
 }
+
+namespace {
+
+// The keyboard family's instruments other than the piano: the piano's build with each one's
+// compass and case (content/piano/instruments.json).
+Status generate_keyboards(const std::filesystem::path& content_dir, const PianoDimensions& piano,
+                          const std::filesystem::path& out_dir) {
+  auto instruments =
+      piano::KeyboardInstruments::load(piano::keyboard_instruments_path(content_dir));
+  if (!instruments.ok()) return instruments.error();
+  for (const piano::KeyboardInstrument& instrument : instruments->all()) {
+    if (instrument.model == "piano.glb") continue;
+    auto keyboard = piano::Keyboard::load(content_dir / "piano" / "keyboard.json",
+                                          instrument.lowest_key, instrument.highest_key);
+    if (!keyboard.ok()) return keyboard.error();
+    PianoDimensions dims = piano;
+    dims.cheek_width_mm = instrument.case_shape.cheek_width_mm;
+    dims.cabinet_height_mm = instrument.case_shape.cabinet_height_mm;
+    dims.cabinet_depth_mm = instrument.case_shape.cabinet_depth_mm;
+    if (Status status = write_glb(build_piano(*keyboard, dims, instrument.case_shape.color),
+                                  out_dir / instrument.model);
+        !status.ok()) {
+      return status;
+    }
+  }
+  return Status::success();
+}
+
+}  // namespace
 
 Status generate_assets(const std::filesystem::path& content_dir,
                        const std::filesystem::path& out_dir) {
@@ -79,7 +109,7 @@ Status generate_assets(const std::filesystem::path& content_dir,
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (Status status = write_glb(models[i], out_dir / names[i]); !status.ok()) return status;
   }
-  return Status::success();
+  return generate_keyboards(content_dir, dimensions->piano, out_dir);
 }
 
 }  // namespace tutti::content_generator

@@ -12,11 +12,13 @@ float m(double mm) { return static_cast<float>(mm / 1000.0); }
 
 }  // namespace
 
-tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims) {
+tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims,
+                            const std::array<double, 3>& case_color) {
   ModelBuilder builder;
   const int ivory = builder.add_material({"key_white", {0.86, 0.84, 0.80, 1.0}, 0.0, 0.35});
   const int ebony = builder.add_material({"key_black", {0.02, 0.02, 0.02, 1.0}, 0.0, 0.3});
-  const int lacquer = builder.add_material({"case_lacquer", {0.01, 0.01, 0.012, 1.0}, 0.0, 0.15});
+  const int lacquer = builder.add_material(
+      {"case_lacquer", {case_color[0], case_color[1], case_color[2], 1.0}, 0.0, 0.15});
 
   // Key meshes in the key's own frame: origin at the pivot, which is the key's back edge at
   // its top surface and centre line; the key extends toward the player (+Z) and down (-Y).

@@ -9,6 +9,8 @@
 // so a keyboard point (x, y, z) mm is the glTF point (x, z, -y) / 1000 in the `keyboard` node.
 // The player sits at +Z looking toward -Z.
 
+#include <array>
+
 #include <tiny_gltf.h>
 
 #include <tutti/generator/dimensions.hpp>
@@ -17,8 +19,11 @@
 namespace tutti::content_generator {
 
 // The model (nodes `piano` > `keyboard` > `key_21`..`key_108`, `piano` > `case`).
-tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims = {});
+tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims = {},
+                            const std::array<double, 3>& case_color = {0.01, 0.01, 0.012});
 // Key and case sizes come from `dims` (content/generator/dimensions.json); the key x positions
-// and the white-key pitch from `keyboard`.
+// and the white-key pitch from `keyboard`; the case's colour (linear RGB) from `case_color`.
+// The keyboard family's other instruments (content/piano/instruments.json) are the same build
+// with their compass and case: keyboard_<id>.glb.
 
 }  // namespace tutti::content_generator

@@ -12,6 +12,7 @@
 #include <tutti/components/performer.hpp>
 #include <tutti/components/transform.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/piano_model/keyboard_instruments.hpp>
 #include <tutti/key_action/key_action_params.hpp>
 #include <tutti/piano/plan_pianist.hpp>
 #include <tutti/piano/pose_piano.hpp>
@@ -107,10 +108,10 @@ glm::mat4 piano_root(const scene::Pianist& pianist) {
          glm::inverse(stage::placement_matrix(defaults.position_m, defaults.facing_deg));
 }
 
-Status bind_piano(stage::StageBuilder& builder, const piano::Keyboard& keyboard,
-                  const key_action::KeyAction& action, bool draw_hands, const glm::mat4& root,
-                  PianoRig& rig) {
-  auto piano_model = builder.generated_model("piano.glb");
+Status bind_piano(stage::StageBuilder& builder, const piano::KeyboardInstrument& instrument,
+                  const piano::Keyboard& keyboard, const key_action::KeyAction& action,
+                  bool draw_hands, const glm::mat4& root, PianoRig& rig) {
+  auto piano_model = builder.generated_model(instrument.model);
   if (!piano_model) return piano_model.error();
   rig.piano = builder.place(*piano_model, root);
   const model::ModelAsset& piano = builder.model(*piano_model);
@@ -227,8 +228,14 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   if (!planned) return planned.error();
   PianistPlan& plan = *planned;
   for (const std::string& note : plan.plan_notes) builder.note(note);
-  // The keyboard and its key levers, for the keys' dip.
-  auto model = piano::load_fingering_model("default", pianist.hand_size, builder.content_dir());
+  // The instrument, its keyboard and its key levers, for the keys' dip.
+  auto instruments =
+      piano::KeyboardInstruments::load(piano::keyboard_instruments_path(builder.content_dir()));
+  if (!instruments) return instruments.error();
+  const piano::KeyboardInstrument* instrument = instruments->find(pianist.instrument);
+  if (instrument == nullptr) return Error{"no keyboard instrument \"" + pianist.instrument + "\""};
+  auto model = piano::load_fingering_model("default", pianist.hand_size, builder.content_dir(),
+                                           instrument);
   if (!model) return model.error();
   auto action = key_action::load_key_action(key_action::key_action_path(builder.content_dir()));
   if (!action) return action.error();
@@ -266,7 +273,7 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   }
   // tutti's hand models are drawn unless a user's hands play: a character's own, or hand models.
   const bool users_hands = !pianist.character_mapping.empty() || !pianist.hands_mapping.empty();
-  if (Status s = bind_piano(builder, model->keyboard, *action, !users_hands,
+  if (Status s = bind_piano(builder, *instrument, model->keyboard, *action, !users_hands,
                                 piano_root(pianist), rig); !s) return s;
   if (Status s = bind_pianist_body(builder, pianist, rig); !s) return s;
   if (Status s = bind_user_hands(builder, pianist, rig); !s) return s;
@@ -278,8 +285,14 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
     placed.label = std::move(text);
     placed.after_performer = after_performer;
   };
-  // The pianos: "piano", then "piano 2", ... (export node names are unique).
-  label(rig.piano, index == 0 ? "piano" : "piano " + std::to_string(index + 1), false);
+  // The instruments: "piano", then "piano 2", "organ", ... (export node names are unique).
+  const auto& pianists = builder.scene().pianists;
+  const auto same_before =
+      std::count_if(pianists.begin(), pianists.begin() + static_cast<std::ptrdiff_t>(index),
+                    [&](const scene::Pianist& p) { return p.instrument == pianist.instrument; });
+  label(rig.piano,
+        same_before == 0 ? instrument->id : instrument->id + " " + std::to_string(same_before + 1),
+        false);
   label(rig.hand_models[0], "hand_r", true);
   label(rig.hand_models[1], "hand_l", true);
   label(rig.body, "", true);

@@ -15,9 +15,18 @@
 namespace tutti::piano_family {
 namespace {
 
+// A key outside the instrument's compass, moved by octaves onto it (an organ part's pedal notes
+// are played on the manual an octave or two up, until the pedalboard comes).
+int fold_onto(int key, const piano::KeyboardInstrument& instrument) {
+  while (key < instrument.lowest_key) key += 12;
+  while (key > instrument.highest_key) key -= 12;
+  return key;
+}
+
 // What the pianist's fingering without the scene's pins depends on.
 std::string pianist_base_key(const scene::Scene& scene, const scene::Pianist& pianist) {
-  std::string key = scene.music[pianist.music_file].string() + "|" + pianist.hand_size + "|";
+  std::string key = scene.music[pianist.music_file].string() + "|" + pianist.instrument + "|" +
+                    pianist.hand_size + "|";
   for (const std::string& part : pianist.parts) key += part + ",";
   return key;
 }
@@ -40,13 +49,14 @@ std::string pianist_plan_key(const scene::Scene& scene, const scene::Pianist& pi
 // The editor's pins become the planner's pins (Note::finger, plan_score's pins_from_marks). A
 // pin names its note by key and onset; one that matches no note is an error, not ignored.
 Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianist,
-                         music::Score& score) {
+                         const piano::KeyboardInstrument& instrument, music::Score& score) {
   constexpr double kSameOnset_s = 1e-3;
   for (std::size_t i = 0; i < pianist.pins.size(); ++i) {
     const scene::FingerPin& pin = pianist.pins[i];
     music::Note* pinned = nullptr;
     for (music::Note& note : score.notes) {
-      if (note.pitch == pin.key && std::abs(note.onset_s - pin.time_s) < kSameOnset_s) {
+      if (note.pitch == fold_onto(pin.key, instrument) &&
+          std::abs(note.onset_s - pin.time_s) < kSameOnset_s) {
         pinned = &note;
         break;
       }
@@ -135,18 +145,39 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
       plan.full_index.push_back(i);
     }
   }
+  // The instrument's compass: notes beyond it are played an octave (or more) in.
+  auto instruments =
+      piano::KeyboardInstruments::load(piano::keyboard_instruments_path(content_dir));
+  if (!instruments) return instruments.error();
+  const piano::KeyboardInstrument* instrument = instruments->find(pianist.instrument);
+  if (instrument == nullptr) {
+    return Error{scene.source + ": " + pianist.pointer + "/instrument: no keyboard instrument \"" +
+                 pianist.instrument + "\""};
+  }
+  std::size_t folded = 0;
+  for (music::Note& note : score.notes) {
+    const int key = fold_onto(note.pitch, *instrument);
+    folded += key != note.pitch ? 1 : 0;
+    note.pitch = key;
+  }
+  if (folded > 0) {
+    plan.plan_notes.push_back(pianist.name + ": " + std::to_string(folded) +
+                              (folded == 1 ? " note" : " notes") + " beyond the " +
+                              instrument->id + "'s keys played an octave in");
+  }
   // The editor's pins act locally: the fingering without them (the file's own marks are pins
   // there too) is planned once, then only the span around the pinned notes is searched again
   // (piano::replan_score_locally). A pure function of the score and the pins, so the editor and
   // `tutti render` get the same fingering whatever order the pins were placed in.
   const music::Score unpinned = score;
-  if (Status s = apply_finger_pins(scene, pianist, score); !s) return s.error();
+  if (Status s = apply_finger_pins(scene, pianist, *instrument, score); !s) return s.error();
   std::vector<int> pinned_notes;
   for (std::size_t i = 0; i < score.notes.size(); ++i) {
     if (score.notes[i].finger != unpinned.notes[i].finger)
       pinned_notes.push_back(static_cast<int>(i));
   }
-  auto model = piano::load_fingering_model("default", pianist.hand_size, content_dir);
+  auto model =
+      piano::load_fingering_model("default", pianist.hand_size, content_dir, instrument);
   if (!model) return model.error();
   plan.base_key = pianist_base_key(scene, pianist);
   plan.plan_key = pianist_plan_key(scene, pianist);

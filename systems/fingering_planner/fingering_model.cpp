@@ -4,9 +4,13 @@
 namespace tutti::piano {
 
 Result<FingeringModel> load_fingering_model(std::string_view weights, std::string_view hand_preset,
-                                            const std::filesystem::path& content_dir) {
+                                            const std::filesystem::path& content_dir,
+                                            const KeyboardInstrument* instrument) {
   const std::filesystem::path piano = content_dir / "piano";
-  auto keyboard = Keyboard::load(piano / "keyboard.json");
+  auto keyboard = instrument == nullptr
+                      ? Keyboard::load(piano / "keyboard.json")
+                      : Keyboard::load(piano / "keyboard.json", instrument->lowest_key,
+                                       instrument->highest_key);
   if (!keyboard) return keyboard.error();
   auto hand = HandModel::load(piano / "hands.json", hand_preset, keyboard->white_key_width_mm());
   if (!hand) return hand.error();

@@ -12,6 +12,7 @@
 #include <tutti/piano_model/content_dir.hpp>
 #include <tutti/piano_model/hand_model.hpp>
 #include <tutti/piano_model/keyboard.hpp>
+#include <tutti/piano_model/keyboard_instruments.hpp>
 
 namespace tutti::piano {
 
@@ -21,9 +22,11 @@ struct FingeringModel {
   CostWeights weights;
 };
 
-// `hand_preset` empty = hands.json's default_preset. Errors are the loaders' (file + JSON path).
+// `hand_preset` empty = hands.json's default_preset; `instrument` null = keyboard.json's compass
+// (the piano's), else that instrument's. Errors are the loaders' (file + JSON path).
 Result<FingeringModel> load_fingering_model(
     std::string_view weights = "default", std::string_view hand_preset = "",
-    const std::filesystem::path& content_dir = default_content_dir());
+    const std::filesystem::path& content_dir = default_content_dir(),
+    const KeyboardInstrument* instrument = nullptr);
 
 }  // namespace tutti::piano

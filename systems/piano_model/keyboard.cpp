@@ -26,6 +26,14 @@ Result<Keyboard> Keyboard::load(const std::filesystem::path& path) {
   return from_json(*document, path.filename().string());
 }
 
+Result<Keyboard> Keyboard::load(const std::filesystem::path& path, int lowest_key, int highest_key) {
+  auto document = read_json_file(path);
+  if (!document) return document.error();
+  (*document)["lowest_key"] = lowest_key;
+  (*document)["highest_key"] = highest_key;
+  return from_json(*document, path.filename().string());
+}
+
 Result<Keyboard> Keyboard::from_json(const nlohmann::json& document, const std::string& file_name) {
   const JsonReader reader(file_name);
   if (auto ok = reader.check_keys(document, "",

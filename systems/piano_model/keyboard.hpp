@@ -18,6 +18,8 @@ class Keyboard {
  public:
   // Errors name the file and the JSON path: "keyboard.json: /black_key_centres_mm/F#: ...".
   static Result<Keyboard> load(const std::filesystem::path& path);
+  // The same key sizes with another compass (an instrument's: keyboard_instruments.hpp).
+  static Result<Keyboard> load(const std::filesystem::path& path, int lowest_key, int highest_key);
   static Result<Keyboard> from_json(const nlohmann::json& document, const std::string& file_name);
 
   int lowest_key() const { return lowest_key_; }    // MIDI key, 21 (A0) on a standard piano

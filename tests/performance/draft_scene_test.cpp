@@ -198,7 +198,7 @@ TEST(DraftScene, MusicNobodyCanPlayIsAnErrorNamingTheParts) {
   ASSERT_FALSE(drafted);
   EXPECT_EQ(drafted.error().message,
             "strings.mid: no part tutti can play (parts: Violin I, Cello); tutti plays trumpet, "
-            "horn, trombone, euphonium, tuba and piano");
+            "horn, trombone, euphonium, tuba and keyboards");
 }
 
 TEST(DraftScene, TheDocumentReadsLikeAHandWrittenScene) {

@@ -110,5 +110,25 @@ TEST(Pianists, Refused) {
             "s.json: /pianists/0/hand_sise: unknown key (did you mean \"hand_size\"?)");
 }
 
+TEST(Pianists, EachPlaysAKeyboardInstrumentOfTheirOwn) {
+  json doc = duo();
+  doc["pianists"][1]["instrument"] = "organ";
+  auto scene = parse_scene(doc, "s.json", scenes_dir());
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_EQ(scene->pianists[0].instrument, "piano");
+  EXPECT_EQ(scene->pianists[1].instrument, "organ");
+  EXPECT_EQ(scene->pianists[1].name, "organist") << "an unnamed player is named for the instrument";
+  doc["pianists"][0]["instrument"] = "organ";
+  scene = parse_scene(doc, "s.json", scenes_dir());
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_EQ(scene->pianists[0].name, "organist");
+  EXPECT_EQ(scene->pianists[1].name, "organist 2");
+  doc["pianists"][1]["instrument"] = "orgen";
+  EXPECT_EQ(error_of(doc),
+            "s.json: /pianists/1/instrument: unknown keyboard instrument \"orgen\" (did you mean "
+            "\"organ\"?) (instruments.json has: celesta, clavinet, electric_piano, harpsichord, "
+            "organ, piano, synth)");
+}
+
 }  // namespace
 }  // namespace tutti::scene

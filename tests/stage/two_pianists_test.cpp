@@ -12,6 +12,7 @@
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/piano/piano_components.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
 #include <tutti/stage/contact_recorder.hpp>
 #include "bundled_stage.hpp"
@@ -83,6 +84,47 @@ TEST(TwoPianists, EachPlaysTheirOwnPartAtTheirOwnPiano) {
   }
   EXPECT_GT(spans[0], 20u);
   EXPECT_GT(spans[1], 20u);
+}
+
+// A pianist and an organist (tests/data/keyboards/piano_and_organ.json): the organ is a model of
+// its own with its own compass (C2-C7), the notes below it are played an octave in and said so,
+// and the organist's fingertips touch only the organ's keys.
+TEST(TwoPianists, APianistAndAnOrganistEachAtTheirOwnInstrument) {
+  auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" /
+                                 "keyboards" / "piano_and_organ.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto built = performance::build_stage(*scene, {});
+  ASSERT_TRUE(built) << built.error().message;
+  Stage& stage = **built;
+  const ecs::World& world = stage.world();
+  const ecs::Entity organist = stage.find_performer("piano", 1);
+  ASSERT_FALSE(organist.is_null());
+  EXPECT_EQ(world.get<components::Performer>(organist).name, "organist");
+  const PianoRig& rig = world.get<PianoRig>(organist);
+  EXPECT_EQ(rig.key_nodes[35], -1) << "below the manual";
+  EXPECT_GE(rig.key_nodes[36], 0);
+  EXPECT_GE(rig.key_nodes[96], 0);
+  EXPECT_EQ(rig.key_nodes[97], -1) << "above the manual";
+  const auto& notes = stage.notes();
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+    return n.find("organist: ") == 0 && n.find("beyond the organ's keys played an octave in") !=
+                                            std::string::npos;
+  })) << "Piano II goes down to G1";
+  ContactRecorder recorder;
+  for (int k = 0; k < 300; ++k) {
+    evaluate_stage(stage, k / 30.0);
+    recorder.record(stage, k / 30.0);
+  }
+  std::size_t spans = 0;
+  for (const Contact& contact : recorder.contacts()) {
+    if (contact.performer != organist) continue;
+    EXPECT_EQ(stage.instances()[contact.part_instance], rig.piano);
+    for (const ContactSpan& span : contact.spans) {
+      EXPECT_TRUE(span.midi >= 36 && span.midi <= 96) << span.midi;
+      ++spans;
+    }
+  }
+  EXPECT_GT(spans, 20u);
 }
 
 }  // namespace

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The keyboard family's instruments (content/piano/instruments.json): the piano, electric
+// pianos, harpsichord, clavinet, celesta, organ manual and stage synth. Each has a player ("an
+// organist"), a compass (which MIDI keys it has, with the piano's key sizes), how a score names
+// it (General MIDI programs, part-name words in English, German, Italian and French) and its
+// generated model with the case that model gets. Loaded strictly: an unknown key is an error
+// naming the file and JSON path.
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <tutti/core/result.hpp>
+
+namespace tutti::piano {
+
+struct KeyboardCase {
+  double cheek_width_mm = 60.0;
+  double cabinet_height_mm = 1250.0;
+  double cabinet_depth_mm = 600.0;
+  std::array<double, 3> color{0.01, 0.01, 0.012};  // linear RGB
+};
+
+struct KeyboardInstrument {
+  std::string id;      // "organ"
+  std::string player;  // "organist"
+  int lowest_key = 21;
+  int highest_key = 108;
+  std::vector<int> programs;       // General MIDI, 0-based
+  std::vector<std::string> names;  // lower case; a name of several words is matched as a phrase
+  std::string model;               // generated model file ("keyboard_organ.glb")
+  KeyboardCase case_shape;         // the generated model's case (the piano's: dimensions.json)
+  bool contains(int key) const { return key >= lowest_key && key <= highest_key; }
+};
+
+class KeyboardInstruments {
+ public:
+  static Result<KeyboardInstruments> load(const std::filesystem::path& path);
+
+  const std::vector<KeyboardInstrument>& all() const { return instruments_; }
+  // nullptr when there is none of that id.
+  const KeyboardInstrument* find(std::string_view id) const;
+  // The instrument a part's name or program stands for: a name word or phrase first (any
+  // instrument), else the program; nullptr when neither says a keyboard. `words` are the part
+  // name's lower-case words in order.
+  const KeyboardInstrument* recognise(const std::vector<std::string>& words, int program) const;
+  std::vector<std::string> ids() const;
+
+ private:
+  std::vector<KeyboardInstrument> instruments_;
+};
+
+// content_dir / "piano" / "instruments.json".
+std::filesystem::path keyboard_instruments_path(const std::filesystem::path& content_dir);
+
+}  // namespace tutti::piano
