@@ -12,6 +12,7 @@
 #include <tutti/music/load_score.hpp>
 #include <tutti/fingering_planner/brass_lines.hpp>
 #include <tutti/music/general_midi.hpp>
+#include <tutti/music/part_names.hpp>
 #include <tutti/piano_model/content_dir.hpp>
 #include <tutti/piano_model/keyboard_instruments.hpp>
 
@@ -21,21 +22,8 @@ namespace {
 using json = nlohmann::ordered_json;
 constexpr double kPi = 3.14159265358979323846;
 
-std::vector<std::string> words_of(std::string_view text) {
-  std::vector<std::string> words;
-  std::string word;
-  for (char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (std::isalnum(u) != 0 || u >= 0x80) {
-      word += static_cast<char>(std::tolower(u));
-    } else if (!word.empty()) {
-      words.push_back(std::move(word));
-      word.clear();
-    }
-  }
-  if (!word.empty()) words.push_back(std::move(word));
-  return words;
-}
+// Part-name words: music/part_names.hpp.
+std::vector<std::string> words_of(std::string_view text) { return music::part_name_words(text); }
 
 bool any_word_in(const std::vector<std::string>& words, std::initializer_list<std::string_view> set) {
   for (const std::string& w : words) {

@@ -237,7 +237,9 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   auto model = piano::load_fingering_model("default", pianist.hand_size, builder.content_dir(),
                                            instrument);
   if (!model) return model.error();
-  auto action = key_action::load_key_action(key_action::key_action_path(builder.content_dir()));
+  auto action = key_action::load_key_action(
+      key_action::key_action_path(builder.content_dir()), instrument->touch,
+      "instruments.json /instruments/" + instrument->id + "/touch");
   if (!action) return action.error();
 
   ecs::World& world = builder.world();

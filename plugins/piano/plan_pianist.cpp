@@ -79,14 +79,17 @@ Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianis
 Result<key_action::HumanePerformance> perform_in_style(
     const scene::Scene& scene, const scene::Pianist& pianist, const music::Score& score,
     const piano_performance::PianoPerformancePlan& paths, const piano::FingeringModel& model,
-    const finger_motion::FingerMotionParams& params, const std::filesystem::path& content_dir) {
+    const piano::KeyboardInstrument& instrument, const finger_motion::FingerMotionParams& params,
+    const std::filesystem::path& content_dir) {
   auto styles = key_action::load_styles(key_action::styles_path(content_dir));
   if (!styles) return styles.error();
   auto style = styles->find(pianist.style.empty() ? "precise" : pianist.style);
   if (!style) {
     return Error{scene.source + ": " + pianist.pointer + "/style: " + style.error().message};
   }
-  auto action = key_action::load_key_action(key_action::key_action_path(content_dir));
+  auto action = key_action::load_key_action(
+      key_action::key_action_path(content_dir), instrument.touch,
+      "instruments.json /instruments/" + instrument.id + "/touch");
   if (!action) return action.error();
   key_action::HumaneInputs in;
   in.score = &score;
@@ -233,7 +236,8 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
     if (!params) return params.error();
     if (!pianist.style.empty() || pianist.sound_from_keys) {
       auto humane =
-          perform_in_style(scene, pianist, score, performance, *model, *params, content_dir);
+          perform_in_style(scene, pianist, score, performance, *model, *instrument, *params,
+                           content_dir);
       if (!humane) return humane.error();
       plan.motion = std::move(humane->motion);
       plan.performance = humane->report;

@@ -8,56 +8,18 @@
 #include <vector>
 
 #include <tutti/brass_model/instrument.hpp>
+#include <tutti/music/part_names.hpp>
 
 namespace tutti::brass {
 namespace {
 
 using Words = std::vector<std::string>;
 
-// Lower-case words of a part name: runs of letters (bytes >= 0x80 count as letters, so "hörner"
-// and "b♭" stay whole); digits, spaces and punctuation separate.
-Words words_of(std::string_view text) {
-  Words words;
-  std::string word;
-  for (const char ch : text) {
-    const auto c = static_cast<unsigned char>(ch);
-    if ((c >= 'a' && c <= 'z') || c >= 0x80) {
-      word += ch;
-    } else if (c >= 'A' && c <= 'Z') {
-      word += static_cast<char>(c - 'A' + 'a');
-    } else if (!word.empty()) {
-      words.push_back(std::move(word));
-      word.clear();
-    }
-  }
-  if (!word.empty()) words.push_back(std::move(word));
-  return words;
-}
+// Part-name words and phrases: music/part_names.hpp.
+Words words_of(std::string_view text) { return music::part_name_words(text); }
 
-// Whether `phrase` ("trumpet", "english horn") occurs as consecutive words; its last word also
-// matches with an English plural ending ("horns", "trumpets").
-bool contains(const Words& words, const Words& phrase) {
-  if (phrase.empty() || phrase.size() > words.size()) return false;
-  for (std::size_t start = 0; start + phrase.size() <= words.size(); ++start) {
-    bool match = true;
-    for (std::size_t k = 0; k < phrase.size() && match; ++k) {
-      const std::string& w = words[start + k];
-      const std::string& p = phrase[k];
-      match = w == p || (k + 1 == phrase.size() && (w == p + "s" || w == p + "es"));
-    }
-    if (match) return true;
-  }
-  return false;
-}
-
-// Words of the longest phrase of `phrases` found in `words`; 0 = none.
 std::size_t longest_match(const Words& words, const std::vector<std::string>& phrases) {
-  std::size_t best = 0;
-  for (const std::string& phrase : phrases) {
-    const Words split = words_of(phrase);
-    if (contains(words, split)) best = std::max(best, split.size());
-  }
-  return best;
+  return music::longest_phrase(words, phrases);
 }
 
 // The key a name states ("in Bb", "in B flat", "in Es", "en Ut", "in Sib"), as a pitch class.

@@ -45,6 +45,7 @@ double KeyLever::angle_rad(double y_mm, double depth_mm) const {
 }
 
 int VelocityCurve::velocity_for(double speed_mm_s) const {
+  if (fixed > 0.0) return static_cast<int>(fixed);
   const double u = std::log(std::max(speed_mm_s, 1e-9) / min_mm_s) / std::log(max_mm_s / min_mm_s);
   return 1 + static_cast<int>(std::lround(126.0 * std::clamp(u, 0.0, 1.0)));
 }
@@ -91,17 +92,39 @@ Result<KeyAction> key_action_from_json(const nlohmann::json& document,
   const NumberField speeds[] = {{"silent_below_mm_s", &curve.silent_below_mm_s, 0.0, kHuge},
                                 {"min_mm_s", &curve.min_mm_s, 1e-3, kHuge},
                                 {"max_mm_s", &curve.max_mm_s, 1e-3, kHuge}};
-  if (auto ok = reader.read_number_fields(document.at("velocity"), "/velocity", speeds, true);
-      !ok) {
+  nlohmann::json speeds_only = document.at("velocity");
+  if (speeds_only.is_object()) speeds_only.erase("fixed");  // optional, read below
+  if (auto ok = reader.read_number_fields(speeds_only, "/velocity", speeds, true); !ok) {
     return ok.error();
   }
+  auto fixed = reader.number_or(document.at("velocity"), "/velocity", "fixed", 0.0);
+  if (!fixed) return fixed.error();
+  if (*fixed < 0.0 || *fixed > 127.0) {
+    return reader.error("/velocity/fixed", "must lie in [0, 127] (0 = from the key's speed)");
+  }
+  curve.fixed = *fixed;
   if (!(curve.silent_below_mm_s <= curve.min_mm_s)) {
     return reader.error("/velocity/silent_below_mm_s", "must not exceed min_mm_s");
   }
   if (!(curve.max_mm_s > curve.min_mm_s)) {
     return reader.error("/velocity/max_mm_s", "must exceed min_mm_s");
   }
+  if (curve.fixed != std::floor(curve.fixed)) {
+    return reader.error("/velocity/fixed", "must be an integer (0 = from the key's speed)");
+  }
   return action;
+}
+
+Result<KeyAction> load_key_action(const std::filesystem::path& path, const nlohmann::json& touch,
+                                  const std::string& touch_name) {
+  auto document = content::read_json_file(path);
+  if (!document) return document.error();
+  if (touch.is_null() || (touch.is_object() && touch.empty())) {
+    return key_action_from_json(*document, path.filename().string());
+  }
+  if (!touch.is_object()) return Error{touch_name + ": expected an object"};
+  document->merge_patch(touch);
+  return key_action_from_json(*document, touch_name + " over " + path.filename().string());
 }
 
 Result<KeyAction> load_key_action(const std::filesystem::path& path) {

@@ -36,8 +36,12 @@ struct VelocityCurve {
   double silent_below_mm_s = 70.0;  // slower at escapement: the hammer never reaches the string
   double min_mm_s = 100.0;          // MIDI velocity 1 (>= silent_below_mm_s)
   double max_mm_s = 1200.0;         // MIDI velocity 127 (> min_mm_s)
+  // 1..127: every sounding note at this velocity, whatever the key's speed (an organ's pallet or
+  // a harpsichord's plectrum has no dynamics); 0 = from the speed.
+  double fixed = 0.0;
 
-  // 1..127, logarithmic in speed between min and max (clamped). Precondition: finite speed.
+  // `fixed`, else 1..127, logarithmic in speed between min and max (clamped). Precondition:
+  // finite speed.
   int velocity_for(double speed_mm_s) const;
   // The speed that gives `velocity` (1..127).
   double speed_for(int velocity) const;
@@ -56,6 +60,11 @@ struct KeyAction {
 };
 
 Result<KeyAction> load_key_action(const std::filesystem::path& path);
+// key_action.json with `touch` merged over it (RFC 7386: an instrument's own touch, content/piano/
+// instruments.json), checked as a whole; errors name `touch_name` ("instruments.json
+// /instruments/organ/touch") and the merged document's path.
+Result<KeyAction> load_key_action(const std::filesystem::path& path, const nlohmann::json& touch,
+                                  const std::string& touch_name);
 Result<KeyAction> key_action_from_json(const nlohmann::json& document,
                                        const std::string& file_name);
 

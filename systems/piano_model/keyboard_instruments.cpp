@@ -2,46 +2,14 @@
 #include <tutti/piano_model/keyboard_instruments.hpp>
 
 #include <algorithm>
-#include <cctype>
 
 #include <nlohmann/json.hpp>
 
+#include <tutti/music/part_names.hpp>
 #include <tutti/piano_model/json_document.hpp>
 
 namespace tutti::piano {
 namespace {
-
-std::vector<std::string> split_words(const std::string& phrase) {
-  std::vector<std::string> words;
-  std::string word;
-  for (char c : phrase) {
-    const auto u = static_cast<unsigned char>(c);
-    if (std::isalnum(u) != 0 || u >= 0x80) {
-      word += static_cast<char>(std::tolower(u));
-    } else if (!word.empty()) {
-      words.push_back(std::move(word));
-      word.clear();
-    }
-  }
-  if (!word.empty()) words.push_back(std::move(word));
-  return words;
-}
-
-// `phrase` (its words in order) occurs in `words`; a single word also matches its plural.
-bool has_phrase(const std::vector<std::string>& words, const std::vector<std::string>& phrase) {
-  if (phrase.empty() || phrase.size() > words.size()) return false;
-  for (std::size_t start = 0; start + phrase.size() <= words.size(); ++start) {
-    bool all = true;
-    for (std::size_t k = 0; k < phrase.size() && all; ++k) {
-      const std::string& w = words[start + k];
-      const std::string& p = phrase[k];
-      all = w == p || (phrase.size() == 1 && w.size() == p.size() + 1 && w.back() == 's' &&
-                       w.starts_with(p));
-    }
-    if (all) return true;
-  }
-  return false;
-}
 
 Result<int> midi_key(const JsonReader& reader, const nlohmann::json& object,
                      const std::string& path, const char* key) {
@@ -88,7 +56,7 @@ Result<KeyboardInstrument> read_instrument(const JsonReader& reader, const nlohm
   if (!object.is_object()) return reader.error(path, "expected an object");
   if (auto ok = reader.check_keys(object, path,
                                   {"player", "lowest_key", "highest_key", "programs", "names",
-                                   "model", "case"});
+                                   "model", "case", "touch"});
       !ok) {
     return ok.error();
   }
@@ -126,10 +94,14 @@ Result<KeyboardInstrument> read_instrument(const JsonReader& reader, const nlohm
   }
   for (std::size_t i = 0; i < object.at("names").size(); ++i) {
     const nlohmann::json& n = object.at("names")[i];
-    if (!n.is_string() || split_words(n.get<std::string>()).empty()) {
+    if (!n.is_string() || music::part_name_words(n.get<std::string>()).empty()) {
       return reader.error(path + "/names/" + std::to_string(i), "expected a name with a word");
     }
     out.names.push_back(n.get<std::string>());
+  }
+  if (object.contains("touch")) {
+    if (!object.at("touch").is_object()) return reader.error(path + "/touch", "expected an object");
+    out.touch = object.at("touch");  // checked with key_action.json when it is merged over it
   }
   if (object.contains("case")) {
     if (auto ok = read_case(reader, object.at("case"), path + "/case", out.case_shape); !ok) {
@@ -145,7 +117,8 @@ Result<KeyboardInstruments> KeyboardInstruments::load(const std::filesystem::pat
   auto document = read_json_file(path);
   if (!document) return document.error();
   const JsonReader reader(path.filename().string());
-  if (auto ok = reader.check_keys(*document, "", {"description", "source", "instruments"}); !ok) {
+  if (auto ok = reader.check_keys(*document, "", {"description", "touch", "source", "instruments"});
+      !ok) {
     return ok.error();
   }
   if (!document->contains("instruments") || !document->at("instruments").is_object() ||
@@ -182,13 +155,8 @@ const KeyboardInstrument* KeyboardInstruments::recognise(const std::vector<std::
   const KeyboardInstrument* named = nullptr;
   std::size_t named_words = 0;
   for (const KeyboardInstrument& i : instruments_) {
-    for (const std::string& name : i.names) {
-      const std::vector<std::string> phrase = split_words(name);
-      if (phrase.size() > named_words && has_phrase(words, phrase)) {
-        named = &i;
-        named_words = phrase.size();
-      }
-    }
+    const std::size_t found = music::longest_phrase(words, i.names);
+    if (found > named_words) named = &i, named_words = found;
   }
   if (named != nullptr) return named;
   for (const KeyboardInstrument& i : instruments_) {

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include <tutti/core/result.hpp>
 
 namespace tutti::piano {
@@ -33,6 +35,9 @@ struct KeyboardInstrument {
   std::vector<std::string> names;  // lower case; a name of several words is matched as a phrase
   std::string model;               // generated model file ("keyboard_organ.glb")
   KeyboardCase case_shape;         // the generated model's case (the piano's: dimensions.json)
+  // Merged over key_action.json (key_action::load_key_action): where in the travel a note sounds
+  // and stops, and its velocity. Empty = the piano's touch.
+  nlohmann::json touch = nlohmann::json::object();
   bool contains(int key) const { return key >= lowest_key && key <= highest_key; }
 };
 

@@ -127,5 +127,36 @@ TEST(TwoPianists, APianistAndAnOrganistEachAtTheirOwnInstrument) {
   EXPECT_GT(spans, 20u);
 }
 
+// With "sound": "keys" each keyboard is heard through its own touch: the organ's and the
+// harpsichord's notes all at their one velocity (no dynamics) and none too slow to sound; the
+// piano's velocities follow the fingers' speed.
+TEST(TwoPianists, EachKeyboardSoundsWithItsOwnTouch) {
+  for (const auto& [instrument, velocity] : {std::pair<std::string, int>{"organ", 100},
+                                             {"harpsichord", 80}}) {
+    auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" /
+                                   "keyboards" / "piano_and_organ.json");
+    ASSERT_TRUE(scene) << scene.error().message;
+    scene->pianists[1].instrument = instrument;
+    for (scene::Pianist& p : scene->pianists) p.sound_from_keys = true;
+    auto built = performance::build_stage(*scene, {});
+    ASSERT_TRUE(built) << built.error().message;
+    const Stage& stage = **built;
+    const ecs::Entity pianist = stage.find_performer("piano", 0);
+    const ecs::Entity other = stage.find_performer("piano", 1);
+    std::set<int> piano_velocities;
+    std::size_t heard = 0;
+    for (std::size_t i = 0; i < stage.scores().front().notes.size(); ++i) {
+      const auto& note = stage.world().get<components::Note>(stage.note_entity(0, i));
+      if (note.performer == pianist && !note.silent) piano_velocities.insert(note.velocity);
+      if (note.performer != other) continue;
+      EXPECT_FALSE(note.silent) << instrument << " note " << i;
+      EXPECT_EQ(note.velocity, velocity) << instrument << " note " << i;
+      ++heard;
+    }
+    EXPECT_GT(heard, 80u) << instrument;
+    EXPECT_GT(piano_velocities.size(), 1u) << "the piano's dynamics come from the fingers";
+  }
+}
+
 }  // namespace
 }  // namespace tutti::stage

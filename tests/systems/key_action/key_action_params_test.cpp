@@ -57,6 +57,34 @@ TEST(KeyActionParams, BadValuesNameTheFileAndPath) {
   EXPECT_EQ(error_of(valid_document()), "(loaded)");
 }
 
+// An instrument's own touch (content/piano/instruments.json) merged over the piano's: checked as a
+// whole, errors naming the touch and the merged path; a fixed velocity ignores the key's speed.
+TEST(KeyActionParams, AnInstrumentsTouchIsMergedOverThePianosAndChecked) {
+  const auto path = key_action_path(test::content_dir());
+  const nlohmann::json organ = {{"escapement_fraction", 0.3},
+                                {"damper_fraction", 0.25},
+                                {"reset_fraction", 0.25},
+                                {"velocity", {{"silent_below_mm_s", 0}, {"fixed", 100}}}};
+  auto action = load_key_action(path, organ, "instruments.json /instruments/organ/touch");
+  ASSERT_TRUE(action.ok()) << action.error().message;
+  EXPECT_DOUBLE_EQ(action->escapement_fraction, 0.3);
+  EXPECT_DOUBLE_EQ(action->white.front_dip_mm, 10.0) << "what the touch leaves, stays the piano's";
+  EXPECT_EQ(action->velocity.velocity_for(50.0), 100);
+  EXPECT_EQ(action->velocity.velocity_for(1100.0), 100);
+  auto piano = load_key_action(path, nlohmann::json::object(), "unused");
+  ASSERT_TRUE(piano.ok());
+  EXPECT_LT(piano->velocity.velocity_for(150.0), piano->velocity.velocity_for(1100.0));
+  auto wrong = load_key_action(path, {{"damper_fraction", 0.9}},
+                               "instruments.json /instruments/organ/touch");
+  ASSERT_FALSE(wrong.ok());
+  EXPECT_EQ(wrong.error().message,
+            "instruments.json /instruments/organ/touch over key_action.json: /damper_fraction: must "
+            "be below escapement_fraction");
+  auto not_integer = load_key_action(path, {{"velocity", {{"fixed", 80.5}}}}, "t");
+  ASSERT_FALSE(not_integer.ok());
+  EXPECT_NE(not_integer.error().message.find("/velocity/fixed"), std::string::npos);
+}
+
 TEST(KeyActionParams, AMissingFileIsAnError) {
   auto action = load_key_action("/nonexistent/key_action.json");
   ASSERT_FALSE(action.ok());
