@@ -58,11 +58,9 @@ Status generate_keyboards(const std::filesystem::path& content_dir, const PianoD
     dims.cheek_width_mm = instrument.case_shape.cheek_width_mm;
     dims.cabinet_height_mm = instrument.case_shape.cabinet_height_mm;
     dims.cabinet_depth_mm = instrument.case_shape.cabinet_depth_mm;
-    if (Status status = write_glb(build_piano(*keyboard, dims, instrument.case_shape.color),
-                                  out_dir / instrument.model);
-        !status.ok()) {
-      return status;
-    }
+    const tinygltf::Model model =
+        build_piano(*keyboard, dims, instrument.case_shape.color, instrument.id);
+    if (Status status = write_glb(model, out_dir / instrument.model); !status.ok()) return status;
   }
   return Status::success();
 }

@@ -13,7 +13,7 @@ float m(double mm) { return static_cast<float>(mm / 1000.0); }
 }  // namespace
 
 tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims,
-                            const std::array<double, 3>& case_color) {
+                            const std::array<double, 3>& case_color, const std::string& root_name) {
   ModelBuilder builder;
   const int ivory = builder.add_material({"key_white", {0.86, 0.84, 0.80, 1.0}, 0.0, 0.35});
   const int ebony = builder.add_material({"key_black", {0.02, 0.02, 0.02, 1.0}, 0.0, 0.3});
@@ -64,7 +64,7 @@ tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensio
           {m(outer), m(key_bottom - 50), m(front)});  // right leg
   const int case_mesh = builder.add_mesh("case", body, lacquer);
 
-  const int piano = builder.add_node("piano");
+  const int piano = builder.add_node(root_name);
   builder.add_root(piano);
   builder.add_child(piano, builder.add_node("case", case_mesh));
   // The keyboard node's frame is the keyboard frame mapped to glTF: x -> X, z -> Y, y -> -Z,

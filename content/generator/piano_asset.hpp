@@ -10,6 +10,7 @@
 // The player sits at +Z looking toward -Z.
 
 #include <array>
+#include <string>
 
 #include <tiny_gltf.h>
 
@@ -20,9 +21,11 @@ namespace tutti::content_generator {
 
 // The model (nodes `piano` > `keyboard` > `key_21`..`key_108`, `piano` > `case`).
 tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims = {},
-                            const std::array<double, 3>& case_color = {0.01, 0.01, 0.012});
+                            const std::array<double, 3>& case_color = {0.01, 0.01, 0.012},
+                            const std::string& root_name = "piano");
 // Key and case sizes come from `dims` (content/generator/dimensions.json); the key x positions
-// and the white-key pitch from `keyboard`; the case's colour (linear RGB) from `case_color`.
+// and the white-key pitch from `keyboard`; the case's colour (linear RGB) from `case_color`; the
+// root node is `root_name` (the instrument's id).
 // The keyboard family's other instruments (content/piano/instruments.json) are the same build
 // with their compass and case: keyboard_<id>.glb.
 

@@ -49,6 +49,21 @@ TEST_F(PianoAsset, Has88KeyNodesUnderTheKeyboardNode) {
   EXPECT_EQ(model_.scenes[0].nodes, std::vector<int>{find_node(model_, "piano")});
 }
 
+// The keyboard family's other instruments: the same build, each with its compass and its id as
+// the root's name (content/piano/instruments.json).
+TEST_F(PianoAsset, TheOrgansManualHasItsOwnCompassAndName) {
+  const tinygltf::Model organ = load_glb(assets_->dir() / "keyboard_organ.glb");
+  const int root = find_node(organ, "organ");
+  ASSERT_GE(root, 0);
+  EXPECT_EQ(organ.scenes[0].nodes, std::vector<int>{root});
+  EXPECT_EQ(find_node(organ, "piano"), -1);
+  for (int key = 36; key <= 96; ++key) EXPECT_GE(find_node(organ, "key_" + std::to_string(key)), 0);
+  EXPECT_EQ(find_node(organ, "key_35"), -1);
+  EXPECT_EQ(find_node(organ, "key_97"), -1);
+  // Its keys start at the left edge of its own lowest key (C2), as the piano's at A0.
+  EXPECT_NEAR(translation(organ, find_node(organ, "key_36"), kX), 0.01175, 1e-9);
+}
+
 TEST_F(PianoAsset, KeyNodesSitAtTheKeyboardsXPositionsInMetres) {
   const piano::Keyboard board = keyboard();
   for (int key = 21; key <= 108; ++key) {
