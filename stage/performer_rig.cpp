@@ -29,6 +29,12 @@ Result<BodyNodes> find_body_nodes(const model::ModelAsset& asset, const MappedMo
     if (!node) return node.error();
     *slots[i] = *node;
   }
+  int* const optional_slots[] = {&n.foot_left, &n.foot_right, &n.toe_left, &n.toe_right};
+  const char* const optional_roles[] = {"foot_l", "foot_r", "toe_l", "toe_r"};
+  for (std::size_t i = 0; i < std::size(optional_roles); ++i) {
+    auto node = find_role(asset, body, optional_roles[i]);
+    *optional_slots[i] = node ? *node : -1;
+  }
   const char* const finger_names[5] = {"thumb", "index", "middle", "ring", "little"};
   for (std::size_t side = 0; side < 2; ++side) {
     for (std::size_t f = 0; f < 5; ++f) {

@@ -28,6 +28,8 @@ struct BodyNodes {
   int grip_left = -1, grip_right = -1;  // palm centres, turned into the hand asset's frame
   TwoBoneChain arm_left, arm_right;
   int thigh_left = -1, thigh_right = -1, shin_left = -1, shin_right = -1;
+  // The feet (ankles) and where a sole presses a pedal (tutti's rig: toe_l, toe_r); -1 = none.
+  int foot_left = -1, foot_right = -1, toe_left = -1, toe_right = -1;
   int morph_tension = -1, morph_open = -1;  // indices into the pose's morph_weights
   // Finger bones [left, right][thumb .. little][segment], for the grip curls.
   std::array<std::array<std::array<int, 3>, 5>, 2> fingers{};

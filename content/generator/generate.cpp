@@ -59,7 +59,8 @@ Status generate_keyboards(const std::filesystem::path& content_dir, const PianoD
     dims.cabinet_height_mm = instrument.case_shape.cabinet_height_mm;
     dims.cabinet_depth_mm = instrument.case_shape.cabinet_depth_mm;
     const tinygltf::Model model =
-        build_piano(*keyboard, dims, instrument.case_shape.color, instrument.id);
+        build_piano(*keyboard, dims, instrument.case_shape.color, instrument.id,
+                    instrument.pedalboard ? &*instrument.pedalboard : nullptr);
     if (Status status = write_glb(model, out_dir / instrument.model); !status.ok()) return status;
   }
   return Status::success();

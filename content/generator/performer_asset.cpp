@@ -417,6 +417,7 @@ tinygltf::Model build_performer(const PerformerDimensions& dims, const HandRig& 
   // Legs: thigh > shin > foot straight down; trousers to the shoe, the shoes on the floor.
   const double ankle_y = mm(dims.ankle_height_mm);
   const double foot = mm(dims.foot_length_mm);
+  std::array<int, 2> foot_bones{-1, -1};
   for (const Side& s : sides) {
     const std::string x = s.suffix;
     const DVec3 hip{s.sign * hx, hip_y, 0.0};
@@ -425,6 +426,7 @@ tinygltf::Model build_performer(const PerformerDimensions& dims, const HandRig& 
     const int thigh = sk.bone("thigh" + x, hips, hip);
     const int shin = sk.bone("shin" + x, thigh, knee);
     const int foot_bone = sk.bone("foot" + x, shin, ankle);
+    foot_bones[&s == &sides[0] ? 0 : 1] = foot_bone;
     const int jh = sk.joint(hips), jt = sk.joint(thigh), js = sk.joint(shin),
               jft = sk.joint(foot_bone);
     std::size_t first = suit.vertex_count();
@@ -534,6 +536,12 @@ tinygltf::Model build_performer(const PerformerDimensions& dims, const HandRig& 
   weight_vertices(face, 0, static_cast<std::uint16_t>(sk.joint(head)));
   const DVec3 mouth_at = hp(0, mouth_y - 0.0003, lip_front);
   sk.node_at("mouth", head, mouth_at);
+  // Where a shoe's sole presses an organ pedal: under the ball of the foot (made after every
+  // other node, so theirs keep their indices).
+  for (std::size_t i = 0; i < 2; ++i) {
+    sk.node_at("toe" + std::string(sides[i].suffix), foot_bones[i],
+               {sides[i].sign * hx, 0.01, (foot - 0.05) / 2 + 0.085});
+  }
 
   // The mouth's inside, hidden behind closed lips, seen when they open.
   ellipsoid(mouth_inside, {0, mouth_y - 0.001, face_z(0, mouth_y) - 0.0005}, {0.019, 0.008, 0.0035},

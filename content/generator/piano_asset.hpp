@@ -16,16 +16,19 @@
 
 #include <tutti/generator/dimensions.hpp>
 #include <tutti/piano_model/keyboard.hpp>
+#include <tutti/piano_model/keyboard_instruments.hpp>
 
 namespace tutti::content_generator {
 
 // The model (nodes `piano` > `keyboard` > `key_21`..`key_108`, `piano` > `case`).
 tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims = {},
                             const std::array<double, 3>& case_color = {0.01, 0.01, 0.012},
-                            const std::string& root_name = "piano");
+                            const std::string& root_name = "piano",
+                            const piano::Pedalboard* pedalboard = nullptr);
 // Key and case sizes come from `dims` (content/generator/dimensions.json); the key x positions
 // and the white-key pitch from `keyboard`; the case's colour (linear RGB) from `case_color`; the
-// root node is `root_name` (the instrument's id).
+// root node is `root_name` (the instrument's id); an organ's `pedalboard` adds its pedals
+// (`pedalboard` > `pedal_36`.., piano_model/pedal_geometry.hpp).
 // The keyboard family's other instruments (content/piano/instruments.json) are the same build
 // with their compass and case: keyboard_<id>.glb.
 

@@ -21,6 +21,7 @@
 #include <tutti/music/score.hpp>
 #include <optional>
 #include <tutti/piano/hand_capsules.hpp>
+#include <tutti/piano/pedal_feet.hpp>
 
 #include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/performer_rig.hpp>
@@ -47,6 +48,9 @@ struct PianistPlan {
   // base fingering.
   piano::ChordRolls rolls;
   std::vector<std::string> plan_notes;
+  // An organ's pedal notes and the feet that play them (pedal_feet.hpp); a press's `note` is
+  // the stage score's note index. Empty without a pedalboard.
+  std::shared_ptr<const FeetPlan> feet;
   // With a performance style (scene pianist "style" / "sound": "keys"): what the simulated keys
   // did with each note of `score` (systems/key_action), and its summary. Empty without a style.
   std::shared_ptr<const std::vector<key_action::PlayedNote>> played;
@@ -74,6 +78,10 @@ struct PianoRig {
   stage::BodyNodes hands_nodes;
   std::array<int, 2> rig_hands{-1, -1};  // right, left
   std::array<int, 128> key_nodes{};      // piano node per MIDI key, -1 = none
+  // An organ's pedals: node per MIDI key (-1 = none), and the feet's plan (null = no pedals).
+  std::array<int, 128> pedal_nodes{};
+  std::shared_ptr<const FeetPlan> feet;
+  std::vector<glm::mat4> scratch_instrument_world;
   std::array<double, 128> key_dip_rad{};
   // How far behind the key node's origin (the visible key's back edge) its lever turns: the
   // balance rail, hidden under the fallboard (m, along the key's -Z).

@@ -27,7 +27,7 @@ namespace {
 // The pianist's notes on the stage: who plays them with which hand and finger, and, when the
 // keys make the sound, what was heard (missed notes are silent).
 void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const PianistPlan& plan,
-                 ecs::Entity pianist, bool sound_from_keys) {
+                 ecs::Entity pianist, bool sound_from_keys, int fixed_velocity) {
   ecs::World& world = builder.world();
   for (std::size_t i = 0; i < plan.full_index.size(); ++i) {
     auto* note = world.try_get<components::Note>(builder.note_entity(music_file, plan.full_index[i]));
@@ -58,6 +58,17 @@ void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const Pia
     note->onset_s = std::max(p.onset_s, 0.0);
     note->offset_s = std::max(note->onset_s, p.offset_s);
     note->velocity = p.velocity;
+  }
+  // The pedal notes sound as written (at the instrument's one velocity when the keys make the
+  // sound and it has one), and stop early where a foot had to leave its pedal early.
+  if (!plan.feet) return;
+  for (const PedalPress& press : plan.feet->presses) {
+    auto* note = world.try_get<components::Note>(builder.note_entity(music_file, press.note));
+    if (note == nullptr) continue;
+    note->performer = pianist;
+    note->finger = 0;
+    note->offset_s = std::max(note->onset_s, std::min(note->offset_s, press.up_s));
+    if (sound_from_keys && fixed_velocity > 0) note->velocity = fixed_velocity;
   }
 }
 
@@ -132,6 +143,12 @@ Status bind_piano(stage::StageBuilder& builder, const piano::KeyboardInstrument&
     const KeyOutlineMm outline = key_outline_mm(piano, node);
     rig.key_half_width_mm[static_cast<std::size_t>(key)] = outline.half_width;
     rig.key_length_mm[static_cast<std::size_t>(key)] = outline.length;
+  }
+  rig.pedal_nodes.fill(-1);
+  if (instrument.pedalboard) {
+    for (int key = instrument.pedalboard->lowest_key; key <= instrument.pedalboard->highest_key; ++key) {
+      rig.pedal_nodes[static_cast<std::size_t>(key)] = piano.find_node("pedal_" + std::to_string(key));
+    }
   }
   {
     std::vector<glm::mat4> world(piano.nodes.size());
@@ -245,7 +262,8 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   ecs::World& world = builder.world();
   const ecs::Entity performer =
       builder.add_performer(name(), index, components::Performer{pianist.name, pianist.seed});
-  claim_notes(builder, pianist.music_file, plan, performer, pianist.sound_from_keys);
+  claim_notes(builder, pianist.music_file, plan, performer, pianist.sound_from_keys,
+              static_cast<int>(action->velocity.fixed));
   world.add<components::Transform>(
       performer, stage::stage_transform(pianist.position_m, pianist.facing_deg));
   world.add<finger_motion::PianistMotionHandle>(performer,
@@ -299,6 +317,7 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   label(rig.hand_models[1], "hand_l", true);
   label(rig.body, "", true);
   label(rig.user_hands, "hands", true);
+  rig.feet = plan.feet;
   world.add<PianoRig>(performer, std::move(rig));
   world.add<stage::Touching>(performer, stage::Touching{});
   world.add<PianistPlan>(performer, std::move(plan));

@@ -9,14 +9,15 @@
 #include <tutti/fingering_planner/chord_roll.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/key_action/humane_performance.hpp>
+#include <tutti/piano/pedal_feet.hpp>
+#include <tutti/piano_model/keyboard_instruments.hpp>
 #include <tutti/piano_performance/performance_plan.hpp>
 #include <tutti/scene/load_scene.hpp>
 
 namespace tutti::piano_family {
 namespace {
 
-// A key outside the instrument's compass, moved by octaves onto it (an organ part's pedal notes
-// are played on the manual an octave or two up, until the pedalboard comes).
+// A key outside the instrument's compass, moved by octaves onto it.
 int fold_onto(int key, const piano::KeyboardInstrument& instrument) {
   while (key < instrument.lowest_key) key += 12;
   while (key > instrument.highest_key) key -= 12;
@@ -156,6 +157,32 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
   if (instrument == nullptr) {
     return Error{scene.source + ": " + pianist.pointer + "/instrument: no keyboard instrument \"" +
                  pianist.instrument + "\""};
+  }
+  // An organ's pedal notes go to the feet (pedal_feet.hpp); the hands play the rest.
+  if (instrument->pedalboard) {
+    const std::vector<bool> pedal = choose_pedal_notes(score, *instrument->pedalboard);
+    auto feet = std::make_shared<FeetPlan>(plan_feet(score, pedal, *instrument->pedalboard));
+    for (PedalPress& press : feet->presses) press.note = plan.full_index[press.note];
+    std::vector<music::Note> hands_notes;
+    std::vector<std::size_t> hands_index;
+    for (std::size_t i = 0; i < score.notes.size(); ++i) {
+      if (pedal[i]) continue;
+      hands_notes.push_back(score.notes[i]);
+      hands_index.push_back(plan.full_index[i]);
+    }
+    score.notes = std::move(hands_notes);
+    plan.full_index = std::move(hands_index);
+    if (!feet->empty()) {
+      plan.plan_notes.push_back(
+          pianist.name + ": " + std::to_string(feet->presses.size()) +
+          (feet->presses.size() == 1 ? " note" : " notes") + " on the pedals (" +
+          std::to_string(feet->by_foot[kLeftFoot].size()) + " left foot, " +
+          std::to_string(feet->by_foot[kRightFoot].size()) + " right foot" +
+          (feet->folded > 0 ? ", " + std::to_string(feet->folded) + " moved by octaves onto them"
+                            : std::string()) +
+          ")");
+    }
+    plan.feet = std::move(feet);
   }
   std::size_t folded = 0;
   for (music::Note& note : score.notes) {

@@ -50,13 +50,60 @@ Status read_case(const JsonReader& reader, const nlohmann::json& object, const s
   return {};
 }
 
+Status read_names(const JsonReader& reader, const nlohmann::json& object, const std::string& path,
+                  std::vector<std::string>& out) {
+  if (!object.contains("names") || !object.at("names").is_array() || object.at("names").empty()) {
+    return reader.error(path + "/names", "expected a non-empty array of part names");
+  }
+  for (std::size_t i = 0; i < object.at("names").size(); ++i) {
+    const nlohmann::json& n = object.at("names")[i];
+    if (!n.is_string() || music::part_name_words(n.get<std::string>()).empty()) {
+      return reader.error(path + "/names/" + std::to_string(i), "expected a name with a word");
+    }
+    out.push_back(n.get<std::string>());
+  }
+  return {};
+}
+
+Result<Pedalboard> read_pedalboard(const JsonReader& reader, const nlohmann::json& object,
+                                   const std::string& path) {
+  if (!object.is_object()) return reader.error(path, "expected an object");
+  if (auto ok = reader.check_keys(object, path,
+                                  {"lowest_key", "highest_key", "natural_spacing_mm",
+                                   "split_below", "names"});
+      !ok) {
+    return ok.error();
+  }
+  Pedalboard out;
+  auto lowest = midi_key(reader, object, path, "lowest_key");
+  if (!lowest) return lowest.error();
+  auto highest = midi_key(reader, object, path, "highest_key");
+  if (!highest) return highest.error();
+  if (*highest - *lowest < 12) {
+    return reader.error(path + "/highest_key", "a pedalboard spans at least an octave");
+  }
+  auto split = midi_key(reader, object, path, "split_below");
+  if (!split) return split.error();
+  out.lowest_key = *lowest;
+  out.highest_key = *highest;
+  out.split_below = *split;
+  auto spacing = reader.number(object, path, "natural_spacing_mm");
+  if (!spacing) return spacing.error();
+  if (*spacing < 40.0 || *spacing > 90.0) {
+    return reader.error(path + "/natural_spacing_mm", "must be in [40, 90] mm");
+  }
+  out.natural_spacing_mm = *spacing;
+  if (auto ok = read_names(reader, object, path, out.names); !ok) return ok.error();
+  return out;
+}
+
 Result<KeyboardInstrument> read_instrument(const JsonReader& reader, const nlohmann::json& object,
                                            const std::string& id) {
   const std::string path = "/instruments/" + id;
   if (!object.is_object()) return reader.error(path, "expected an object");
   if (auto ok = reader.check_keys(object, path,
                                   {"player", "lowest_key", "highest_key", "programs", "names",
-                                   "model", "case", "touch"});
+                                   "model", "case", "touch", "pedalboard"});
       !ok) {
     return ok.error();
   }
@@ -89,15 +136,11 @@ Result<KeyboardInstrument> read_instrument(const JsonReader& reader, const nlohm
     }
     out.programs.push_back(p.get<int>());
   }
-  if (!object.contains("names") || !object.at("names").is_array() || object.at("names").empty()) {
-    return reader.error(path + "/names", "expected a non-empty array of part names");
-  }
-  for (std::size_t i = 0; i < object.at("names").size(); ++i) {
-    const nlohmann::json& n = object.at("names")[i];
-    if (!n.is_string() || music::part_name_words(n.get<std::string>()).empty()) {
-      return reader.error(path + "/names/" + std::to_string(i), "expected a name with a word");
-    }
-    out.names.push_back(n.get<std::string>());
+  if (auto ok = read_names(reader, object, path, out.names); !ok) return ok.error();
+  if (object.contains("pedalboard")) {
+    auto pedalboard = read_pedalboard(reader, object.at("pedalboard"), path + "/pedalboard");
+    if (!pedalboard) return pedalboard.error();
+    out.pedalboard = std::move(*pedalboard);
   }
   if (object.contains("touch")) {
     if (!object.at("touch").is_object()) return reader.error(path + "/touch", "expected an object");

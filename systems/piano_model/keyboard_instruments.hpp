@@ -4,11 +4,12 @@
 // pianos, harpsichord, clavinet, celesta, organ manual and stage synth. Each has a player ("an
 // organist"), a compass (which MIDI keys it has, with the piano's key sizes), how a score names
 // it (General MIDI programs, part-name words in English, German, Italian and French) and its
-// generated model with the case that model gets. Loaded strictly: an unknown key is an error
+// generated model with the case that model gets; an organ's pedalboard. Loaded strictly: an unknown key is an error
 // naming the file and JSON path.
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,18 @@ struct KeyboardCase {
   std::array<double, 3> color{0.01, 0.01, 0.012};  // linear RGB
 };
 
+// An organ's pedalboard: the keys the feet play, flat and parallel (the AGO standard's are
+// concave and radiating; the spacing of the naturals is the standard's).
+struct Pedalboard {
+  int lowest_key = 36;
+  int highest_key = 67;
+  double natural_spacing_mm = 63.5;
+  // Without a pedal part or staff, the lowest line's notes below this key are the feet's.
+  int split_below = 48;
+  std::vector<std::string> names;  // a part named so is the pedals' ("pedal", "pédale")
+  bool contains(int key) const { return key >= lowest_key && key <= highest_key; }
+};
+
 struct KeyboardInstrument {
   std::string id;      // "organ"
   std::string player;  // "organist"
@@ -38,6 +51,7 @@ struct KeyboardInstrument {
   // Merged over key_action.json (key_action::load_key_action): where in the travel a note sounds
   // and stops, and its velocity. Empty = the piano's touch.
   nlohmann::json touch = nlohmann::json::object();
+  std::optional<Pedalboard> pedalboard;  // an organ's; none for the others
   bool contains(int key) const { return key >= lowest_key && key <= highest_key; }
 };
 

@@ -8,10 +8,12 @@ samplers) and every node posed by forward kinematics here.
 
 - Each contact span's point, taken from its part node's frame to the world, lies within
   --max-p95-mm (95th percentile over every span's frames) of its body node.
-- Every piano key press (a node key_<midi> turned more than 0.05 deg: tutti's keys rest
-  unturned) and every valve press (a node valve_<n> moved more than 0.2 mm off its highest
+- Every piano key or organ pedal press (a node key_<midi> or pedal_<midi> turned more than
+  0.05 deg: tutti's keys and pedals rest unturned) and every valve press (a node valve_<n> moved more than 0.2 mm off its highest
   place in the clip) at an exported frame is
   covered by a span of a contact on that node.
+- A contact's point on a pedal lies on the pedal's top (within 6 mm of it), over its mesh: a
+  toe that presses a pedal is on it, not beside or above it.
 Prints the figures; exits 1 on a failed check, 2 on a file it cannot read.
 """
 
@@ -218,7 +220,7 @@ def main():
     first_uncovered = None
     for (node, path), channel in sorted(posed.channels.items()):
         name = posed.nodes[node].get("name", "")
-        if path == "rotation" and re.fullmatch(r"key_\d+", name):
+        if path == "rotation" and re.fullmatch(r"(key|pedal)_\d+", name):
             rest = (0.0, 0.0, 0.0, 1.0)  # tutti's piano keys rest unturned
 
             def pressed(t, channel=channel, rest=rest):
@@ -242,6 +244,23 @@ def main():
                 if first_uncovered is None:
                     first_uncovered = f"{name} (node {node}) at {t:.3f} s"
 
+    # Points on pedals: on the pedal's top face, inside its outline (the mesh's bounds).
+    off_pedal = []
+    for contact in contacts:
+        node = posed.nodes[contact["part_node_index"]]
+        if not re.fullmatch(r"pedal_\d+", node.get("name", "")) or "mesh" not in node:
+            continue
+        position = document["meshes"][node["mesh"]]["primitives"][0]["attributes"]["POSITION"]
+        low, high = document["accessors"][position]["min"], document["accessors"][position]["max"]
+        for span in contact["spans"]:
+            x, y, z = span["part_point_m"]
+            miss = max(low[0] - x, x - high[0], low[2] - z, z - high[2], 0.0)
+            miss = max(miss, abs(y - high[1]))
+            if 1000.0 * miss > 6.0:
+                off_pedal.append(f'{contact["body_node"]} on {contact["part_node"]} at '
+                                 f'{span["from_s"]:.3f} s: {1000.0 * miss:.1f} mm off its top')
+    pedal_spans = sum(len(c["spans"]) for c in contacts if c["part_node"].startswith("pedal_"))
+
     spans = sum(len(c["spans"]) for c in contacts)
     print(f"{args.glb}: {len(contacts)} contacts, {spans} spans, {len(distances_mm)} span frames; "
           f"point to body node: median {percentile(distances_mm, 0.5):.2f} mm, "
@@ -249,7 +268,13 @@ def main():
           + (f" ({worst[2]} at {worst[1]:.3f} s)" if worst[2] else ""))
     print(f"pressed key and valve frames: {presses}, not covered by a span: {uncovered}"
           + (f" (first: {first_uncovered})" if first_uncovered else ""))
+    if pedal_spans:
+        print(f"pedal spans: {pedal_spans}, off the pedal's top: {len(off_pedal)}"
+              + (f" (first: {off_pedal[0]})" if off_pedal else ""))
     ok = True
+    if off_pedal:
+        print("FAIL: a toe's point off its pedal")
+        ok = False
     if len(contacts) < args.min_contacts:
         print(f"FAIL: {len(contacts)} contacts, at least {args.min_contacts} expected")
         ok = False

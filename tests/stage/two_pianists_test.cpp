@@ -11,7 +11,9 @@
 
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
+#include <tutti/model/model_asset.hpp>
 #include <tutti/piano/piano_components.hpp>
+#include <tutti/piano_model/pedal_geometry.hpp>
 #include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
 #include <tutti/stage/contact_recorder.hpp>
@@ -87,9 +89,11 @@ TEST(TwoPianists, EachPlaysTheirOwnPartAtTheirOwnPiano) {
 }
 
 // A pianist and an organist (tests/data/keyboards/piano_and_organ.json): the organ is a model of
-// its own with its own compass (C2-C7), the notes below it are played an octave in and said so,
-// and the organist's fingertips touch only the organ's keys.
-TEST(TwoPianists, APianistAndAnOrganistEachAtTheirOwnInstrument) {
+// its own with its own manual (C2-C7) and pedalboard (C2-G4). Piano II's bass line goes to the
+// feet (the lowest notes below the split), the notes below C2 moved up onto the pedals, and the
+// rest to the hands on the manual. Measured from the posed skeleton: every toe holding a pedal
+// down is on that pedal's top where a toe presses it, and the pedal is down.
+TEST(TwoPianists, APianistAndAnOrganistUsingThePedals) {
   auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" /
                                  "keyboards" / "piano_and_organ.json");
   ASSERT_TRUE(scene) << scene.error().message;
@@ -105,26 +109,85 @@ TEST(TwoPianists, APianistAndAnOrganistEachAtTheirOwnInstrument) {
   EXPECT_GE(rig.key_nodes[36], 0);
   EXPECT_GE(rig.key_nodes[96], 0);
   EXPECT_EQ(rig.key_nodes[97], -1) << "above the manual";
+  EXPECT_EQ(rig.pedal_nodes[35], -1);
+  EXPECT_GE(rig.pedal_nodes[36], 0);
+  EXPECT_GE(rig.pedal_nodes[67], 0);
+  EXPECT_EQ(rig.pedal_nodes[68], -1) << "above the pedalboard";
+  ASSERT_TRUE(rig.feet);
+  const piano_family::FeetPlan& feet = *rig.feet;
+  EXPECT_GT(feet.presses.size(), 20u);
   const auto& notes = stage.notes();
   EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
-    return n.find("organist: ") == 0 && n.find("beyond the organ's keys played an octave in") !=
-                                            std::string::npos;
+    return n.find("organist: ") == 0 && n.find(" on the pedals (") != std::string::npos &&
+           n.find("moved by octaves onto them") != std::string::npos;
   })) << "Piano II goes down to G1";
+  // The pianist has no pedals; the organist's pedal notes are theirs, at the score's onsets.
+  EXPECT_FALSE(world.get<PianoRig>(stage.find_performer("piano", 0)).feet);
+  for (const piano_family::PedalPress& press : feet.presses) {
+    const auto& note = world.get<components::Note>(stage.note_entity(0, press.note));
+    EXPECT_EQ(note.performer, organist);
+    EXPECT_EQ(note.onset_s, press.down_s);
+    EXPECT_GE(press.key, 36);
+    EXPECT_LE(press.key, 67);
+  }
+
+  const auto placed_of = [&](ecs::Entity instance) -> const PlacedModel& {
+    return world.get<PlacedModel>(instance);
+  };
+  std::vector<glm::mat4> organ_world, body_world;
+  std::size_t toes_checked = 0;
+  double worst_mm = 0.0;
   ContactRecorder recorder;
   for (int k = 0; k < 300; ++k) {
-    evaluate_stage(stage, k / 30.0);
-    recorder.record(stage, k / 30.0);
+    const double t = k / 30.0;
+    evaluate_stage(stage, t);
+    recorder.record(stage, t);
+    const PlacedModel& organ = placed_of(rig.piano);
+    const PlacedModel& body = placed_of(rig.body);
+    organ_world.resize(organ.asset->nodes.size());
+    body_world.resize(body.asset->nodes.size());
+    model::compute_world_matrices(*organ.asset, organ.pose, organ.root, organ_world);
+    model::compute_world_matrices(*body.asset, body.pose, body.root, body_world);
+    for (const piano_family::PedalPress& press : feet.presses) {
+      if (t < press.down_s || t > press.up_s) continue;
+      const int toe = press.foot == piano_family::kRightFoot ? rig.body_nodes.toe_right
+                                                             : rig.body_nodes.toe_left;
+      ASSERT_GE(toe, 0);
+      const int pedal = rig.pedal_nodes[static_cast<std::size_t>(press.key)];
+      const double along = piano::pedal_is_sharp(press.key) ? piano::PedalGeometry::kSharpToe_m
+                                                            : piano::PedalGeometry::kNaturalToe_m;
+      const glm::vec3 expected = glm::vec3(organ_world[static_cast<std::size_t>(pedal)] *
+                                           glm::vec4(0.0f, 0.0f, static_cast<float>(along), 1.0f));
+      const glm::vec3 at = glm::vec3(body_world[static_cast<std::size_t>(toe)][3]);
+      worst_mm = std::max(worst_mm, 1000.0 * static_cast<double>(glm::distance(at, expected)));
+      ++toes_checked;
+      // The pedal is down: turned about its hinge by the full travel.
+      const glm::quat& r = organ.pose.local[static_cast<std::size_t>(pedal)].rotation;
+      EXPECT_NEAR(2.0 * std::asin(std::min(1.0f, glm::length(glm::vec3(r.x, r.y, r.z)))),
+                  piano::PedalGeometry::kDownRad, 1e-4)
+          << "pedal " << press.key << " at " << t;
+    }
   }
-  std::size_t spans = 0;
+  EXPECT_GT(toes_checked, 100u);
+  EXPECT_LT(worst_mm, 1.0) << "a toe off the pedal it holds down";
+  std::size_t key_spans = 0, pedal_spans = 0;
   for (const Contact& contact : recorder.contacts()) {
     if (contact.performer != organist) continue;
     EXPECT_EQ(stage.instances()[contact.part_instance], rig.piano);
+    const bool on_pedal = contact.body_node == rig.body_nodes.toe_left ||
+                          contact.body_node == rig.body_nodes.toe_right;
     for (const ContactSpan& span : contact.spans) {
-      EXPECT_TRUE(span.midi >= 36 && span.midi <= 96) << span.midi;
-      ++spans;
+      if (on_pedal) {
+        EXPECT_TRUE(span.midi >= 36 && span.midi <= 67) << span.midi;
+        ++pedal_spans;
+      } else {
+        EXPECT_TRUE(span.midi >= 36 && span.midi <= 96) << span.midi;
+        ++key_spans;
+      }
     }
   }
-  EXPECT_GT(spans, 20u);
+  EXPECT_GT(key_spans, 10u);
+  EXPECT_GT(pedal_spans, 5u);
 }
 
 // With "sound": "keys" each keyboard is heard through its own touch: the organ's and the
