@@ -42,6 +42,14 @@ TEST(KeyboardInstruments, TheBundledFamilyAndItsCompasses) {
   EXPECT_EQ(organ->player, "organist");
   EXPECT_EQ(organ->highest_key - organ->lowest_key + 1, 61);
   EXPECT_TRUE(organ->contains(36) && organ->contains(96) && !organ->contains(35));
+  // The organ's pedalboard: the AGO standard's 32 pedals C2-G4, naturals 63.5 mm apart.
+  ASSERT_TRUE(organ->pedalboard);
+  EXPECT_EQ(organ->pedalboard->lowest_key, 36);
+  EXPECT_EQ(organ->pedalboard->highest_key, 67);
+  EXPECT_DOUBLE_EQ(organ->pedalboard->natural_spacing_mm, 63.5);
+  EXPECT_EQ(organ->pedalboard->split_below, 48);
+  EXPECT_FALSE(organ->pedalboard->names.empty());
+  EXPECT_FALSE(all.find("piano")->pedalboard) << "only the organ has pedals";
   EXPECT_EQ(all.find("accordion"), nullptr) << "out of scope, named in the file's description";
 }
 
@@ -120,6 +128,38 @@ TEST_F(KeyboardInstrumentErrors, OneLineNamingTheFileAndPath) {
   EXPECT_NE(error_of(doc).find("/instruments/organ/case/cabinet_height_mm"), std::string::npos)
       << error_of(doc);
   EXPECT_NE(error_of(nlohmann::json::object()).find("/instruments"), std::string::npos);
+}
+
+TEST_F(KeyboardInstrumentErrors, APedalboardIsCheckedToo) {
+  nlohmann::json doc = valid();
+  doc["instruments"]["organ"]["pedalboard"] = {{"lowest_key", 36}, {"highest_key", 67},
+                                               {"natural_spacing_mm", 63.5}, {"split_below", 48},
+                                               {"names", {"pedal"}}};
+  EXPECT_EQ(error_of(doc), "(loaded)");
+  nlohmann::json bad = doc;
+  bad["instruments"]["organ"]["pedalboard"]["heels"] = true;
+  EXPECT_NE(error_of(bad).find("instruments.json: /instruments/organ/pedalboard/heels: unknown key"),
+            std::string::npos)
+      << error_of(bad);
+  bad = doc;
+  bad["instruments"]["organ"]["pedalboard"]["highest_key"] = 40;
+  EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/pedalboard/highest_key: a "
+                           "pedalboard spans at least an octave");
+  bad = doc;
+  bad["instruments"]["organ"]["pedalboard"]["natural_spacing_mm"] = 200;
+  EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/pedalboard/natural_spacing_mm: "
+                           "must be in [40, 90] mm");
+  bad = doc;
+  bad["instruments"]["organ"]["pedalboard"].erase("split_below");
+  EXPECT_NE(error_of(bad).find("/instruments/organ/pedalboard/split_below"), std::string::npos)
+      << error_of(bad);
+  bad = doc;
+  bad["instruments"]["organ"]["pedalboard"]["names"] = {"", "pedal"};
+  EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/pedalboard/names/0: expected a "
+                           "name with a word");
+  bad = doc;
+  bad["instruments"]["organ"]["pedalboard"] = 32;
+  EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/pedalboard: expected an object");
 }
 
 }  // namespace
