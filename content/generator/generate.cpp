@@ -52,9 +52,16 @@ Status generate_keyboards(const std::filesystem::path& content_dir, const PianoD
   for (const piano::KeyboardInstrument& instrument : instruments->all()) {
     if (instrument.model == "piano.glb") continue;
     auto keyboard = piano::Keyboard::load(content_dir / "piano" / "keyboard.json",
-                                          instrument.lowest_key, instrument.highest_key);
+                                          instrument.lowest_key, instrument.highest_key,
+                                          instrument.octave_span_mm);
     if (!keyboard.ok()) return keyboard.error();
     PianoDimensions dims = piano;
+    // A narrower octave's black keys are narrower by as much as its white keys.
+    if (instrument.octave_span_mm > 0.0) {
+      auto piano_keys = piano::Keyboard::load(content_dir / "piano" / "keyboard.json");
+      if (!piano_keys.ok()) return piano_keys.error();
+      dims.black_key_width_mm *= keyboard->white_key_width_mm() / piano_keys->white_key_width_mm();
+    }
     dims.cheek_width_mm = instrument.case_shape.cheek_width_mm;
     dims.cabinet_height_mm = instrument.case_shape.cabinet_height_mm;
     dims.cabinet_depth_mm = instrument.case_shape.cabinet_depth_mm;

@@ -26,11 +26,23 @@ Result<Keyboard> Keyboard::load(const std::filesystem::path& path) {
   return from_json(*document, path.filename().string());
 }
 
-Result<Keyboard> Keyboard::load(const std::filesystem::path& path, int lowest_key, int highest_key) {
+Result<Keyboard> Keyboard::load(const std::filesystem::path& path, int lowest_key, int highest_key,
+                                double octave_span_mm) {
   auto document = read_json_file(path);
   if (!document) return document.error();
   (*document)["lowest_key"] = lowest_key;
   (*document)["highest_key"] = highest_key;
+  const nlohmann::json& width = (*document)["white_key_width_mm"];
+  if (octave_span_mm > 0.0 && width.is_number() && width.get<double>() > 0.0) {
+    const double scale = octave_span_mm / (7.0 * width.get<double>());
+    (*document)["white_key_width_mm"] = octave_span_mm / 7.0;
+    nlohmann::json& black = (*document)["black_key_centres_mm"];
+    if (black.is_object()) {
+      for (auto& centre : black) {
+        if (centre.is_number()) centre = centre.get<double>() * scale;
+      }
+    }
+  }
   return from_json(*document, path.filename().string());
 }
 

@@ -18,8 +18,10 @@ class Keyboard {
  public:
   // Errors name the file and the JSON path: "keyboard.json: /black_key_centres_mm/F#: ...".
   static Result<Keyboard> load(const std::filesystem::path& path);
-  // The same key sizes with another compass (an instrument's: keyboard_instruments.hpp).
-  static Result<Keyboard> load(const std::filesystem::path& path, int lowest_key, int highest_key);
+  // The same keys with another compass (an instrument's: keyboard_instruments.hpp), and with
+  // `octave_span_mm` > 0 every key's width and place scaled to that octave.
+  static Result<Keyboard> load(const std::filesystem::path& path, int lowest_key, int highest_key,
+                               double octave_span_mm = 0.0);
   static Result<Keyboard> from_json(const nlohmann::json& document, const std::string& file_name);
 
   int lowest_key() const { return lowest_key_; }    // MIDI key, 21 (A0) on a standard piano

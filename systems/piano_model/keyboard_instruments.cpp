@@ -103,7 +103,7 @@ Result<KeyboardInstrument> read_instrument(const JsonReader& reader, const nlohm
   if (!object.is_object()) return reader.error(path, "expected an object");
   if (auto ok = reader.check_keys(object, path,
                                   {"player", "lowest_key", "highest_key", "programs", "names",
-                                   "model", "case", "touch", "pedalboard"});
+                                   "model", "case", "touch", "pedalboard", "octave_span_mm"});
       !ok) {
     return ok.error();
   }
@@ -126,6 +126,15 @@ Result<KeyboardInstrument> read_instrument(const JsonReader& reader, const nlohm
   }
   out.lowest_key = *lowest;
   out.highest_key = *highest;
+  if (object.contains("octave_span_mm")) {
+    auto span = reader.number(object, path, "octave_span_mm");
+    if (!span) return span.error();
+    // Keyboards from 125 mm (the smallest historical octaves) to 170 mm.
+    if (*span < 125.0 || *span > 170.0) {
+      return reader.error(path + "/octave_span_mm", "must be in [125, 170] mm");
+    }
+    out.octave_span_mm = *span;
+  }
   if (!object.contains("programs") || !object.at("programs").is_array()) {
     return reader.error(path + "/programs", "expected an array of General MIDI programs");
   }

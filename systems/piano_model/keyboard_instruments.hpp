@@ -44,6 +44,8 @@ struct KeyboardInstrument {
   std::string player;  // "organist"
   int lowest_key = 21;
   int highest_key = 108;
+  // Seven white keys' width (mm); 0 = the piano's (content/piano/keyboard.json, 164.5 mm).
+  double octave_span_mm = 0.0;
   std::vector<int> programs;       // General MIDI, 0-based
   std::vector<std::string> names;  // lower case; a name of several words is matched as a phrase
   std::string model;               // generated model file ("keyboard_organ.glb")

@@ -62,6 +62,42 @@ TEST_F(PianoAsset, TheOrgansManualHasItsOwnCompassAndName) {
   EXPECT_EQ(find_node(organ, "key_97"), -1);
   // Its keys start at the left edge of its own lowest key (C2), as the piano's at A0.
   EXPECT_NEAR(translation(organ, find_node(organ, "key_36"), kX), 0.01175, 1e-9);
+  // Its pedalboard: pedal_36..pedal_67 under `pedalboard`, naturals 63.5 mm apart.
+  const int pedalboard = find_node(organ, "pedalboard");
+  ASSERT_GE(pedalboard, 0);
+  EXPECT_EQ(parent_of(organ, pedalboard), root);
+  for (int key = 36; key <= 67; ++key) {
+    const int pedal = find_node(organ, "pedal_" + std::to_string(key));
+    ASSERT_GE(pedal, 0) << key;
+    EXPECT_EQ(parent_of(organ, pedal), pedalboard);
+  }
+  EXPECT_EQ(find_node(organ, "pedal_68"), -1);
+  EXPECT_NEAR(translation(organ, find_node(organ, "pedal_38"), kX) -
+                  translation(organ, find_node(organ, "pedal_36"), kX),
+              0.0635, 1e-6);
+  EXPECT_NEAR(translation(organ, find_node(organ, "pedal_52"), kX), 0.0, 1e-6) << "E3 centred";
+  EXPECT_GT(translation(organ, find_node(organ, "pedal_37"), kY), 0.0) << "sharps stand higher";
+  EXPECT_EQ(find_node(load_glb(assets_->dir() / "keyboard_synth.glb"), "pedalboard"), -1);
+}
+
+// The harpsichord's keys are narrower (a 152.4 mm octave, instruments.json) and its black keys
+// with them; the piano's octave is 164.5 mm.
+TEST_F(PianoAsset, TheHarpsichordsKeysAreNarrower) {
+  const tinygltf::Model harpsichord = load_glb(assets_->dir() / "keyboard_harpsichord.glb");
+  const auto x = [&](const tinygltf::Model& m, int key) {
+    return translation(m, find_node(m, "key_" + std::to_string(key)), kX);
+  };
+  EXPECT_NEAR(x(harpsichord, 72) - x(harpsichord, 60), 0.1524, 1e-6);
+  EXPECT_NEAR(x(model_, 72) - x(model_, 60), 0.1645, 1e-6);
+  const auto mesh_width = [](const tinygltf::Model& m, int node) {
+    const auto& mesh = m.meshes[static_cast<std::size_t>(m.nodes[static_cast<std::size_t>(node)].mesh)];
+    const auto& accessor = m.accessors[static_cast<std::size_t>(mesh.primitives[0].attributes.at("POSITION"))];
+    return accessor.maxValues[0] - accessor.minValues[0];
+  };
+  EXPECT_NEAR(mesh_width(harpsichord, find_node(harpsichord, "key_61")) /
+                  mesh_width(model_, find_node(model_, "key_61")),
+              152.4 / 164.5, 1e-4)
+      << "a black key narrower by as much as the octave";
 }
 
 TEST_F(PianoAsset, KeyNodesSitAtTheKeyboardsXPositionsInMetres) {

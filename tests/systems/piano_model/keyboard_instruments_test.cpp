@@ -50,6 +50,8 @@ TEST(KeyboardInstruments, TheBundledFamilyAndItsCompasses) {
   EXPECT_EQ(organ->pedalboard->split_below, 48);
   EXPECT_FALSE(organ->pedalboard->names.empty());
   EXPECT_FALSE(all.find("piano")->pedalboard) << "only the organ has pedals";
+  EXPECT_DOUBLE_EQ(all.find("harpsichord")->octave_span_mm, 152.4);
+  EXPECT_DOUBLE_EQ(organ->octave_span_mm, 0.0) << "the piano's keys";
   EXPECT_EQ(all.find("accordion"), nullptr) << "out of scope, named in the file's description";
 }
 
@@ -157,6 +159,10 @@ TEST_F(KeyboardInstrumentErrors, APedalboardIsCheckedToo) {
   bad["instruments"]["organ"]["pedalboard"]["names"] = {"", "pedal"};
   EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/pedalboard/names/0: expected a "
                            "name with a word");
+  bad = doc;
+  bad["instruments"]["organ"]["octave_span_mm"] = 200;
+  EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/octave_span_mm: must be in "
+                           "[125, 170] mm");
   bad = doc;
   bad["instruments"]["organ"]["pedalboard"] = 32;
   EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/pedalboard: expected an object");
