@@ -485,11 +485,15 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
       ImU32 colour = note.playable ? srgb(200, 200, 210, 255) : srgb(200, 80, 80, 255);
       if (lane.pianist)
         colour = note.right_hand ? srgb(120, 180, 255, 255) : srgb(255, 180, 100, 255);
+      if (note.foot >= 0) colour = srgb(130, 210, 130, 255);  // the organist's feet
       if (note.pinned) colour = srgb(255, 230, 0, 255);
       draw->AddRectFilled(a, b, colour);
       if (lane.pianist && b.x - a.x > 9 && note.finger > 0) {
         draw->AddText(ImVec2(a.x + 1, ny - 14), srgb(255, 255, 255, 220),
                       std::to_string(note.finger).c_str());
+      } else if (b.x - a.x > 9 && note.foot >= 0) {
+        draw->AddText(ImVec2(a.x + 1, ny - 14), srgb(255, 255, 255, 220),
+                      note.foot == 0 ? "R" : "L");
       }
       if (io.MousePos.x >= a.x && io.MousePos.x <= b.x && io.MousePos.y >= a.y - 4 &&
           io.MousePos.y <= b.y + 4) {
@@ -572,9 +576,14 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
     if (lane.pianist && ImGui::BeginPopup("pin_popup")) {
       if (ui.pin_note < lane.notes.size()) {
         const TimelineNote note = lane.notes[ui.pin_note];
-        ImGui::Text("key %d at %.3f s (finger %d%s)", note.key, note.start_s, note.finger,
-                    note.pinned ? ", pinned" : "");
-        for (int f = 1; f <= 5; ++f) {
+        if (note.foot >= 0) {
+          ImGui::Text("pedal %d at %.3f s: the %s foot", note.key, note.start_s,
+                      note.foot == 0 ? "right" : "left");
+        } else {
+          ImGui::Text("key %d at %.3f s (finger %d%s)", note.key, note.start_s, note.finger,
+                      note.pinned ? ", pinned" : "");
+        }
+        for (int f = 1; f <= 5 && note.foot < 0; ++f) {
           if (f > 1) ImGui::SameLine();
           if (ImGui::Button(std::to_string(f).c_str())) {
             apply(session, ui, pin_finger(session.document().json(), note.start_s, note.key, f,

@@ -76,6 +76,18 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
   if (!lane.pianist && lane.performer < scene.performers.size()) {
     lane.expressions = scene.performers[lane.performer].expressions;
   }
+  // An organist's pedal notes: the foot that plays each (pins are for fingers only).
+  if (const auto* plan = world.try_get<piano_family::PianistPlan>(performer);
+      plan != nullptr && plan->feet && lane.performer < scene.pianists.size()) {
+    const std::size_t music = scene.pianists[lane.performer].music_file;
+    for (const piano_family::PedalPress& press : plan->feet->presses) {
+      const auto* note = world.try_get<components::Note>(stage.note_entity(music, press.note));
+      if (note == nullptr) continue;
+      for (TimelineNote& n : lane.notes) {
+        if (n.key == note->pitch && n.start_s == note->written_onset_s) n.foot = press.foot;
+      }
+    }
+  }
   if (lane.pianist && lane.performer < scene.pianists.size()) {
     for (const scene::FingerPin& pin : scene.pianists[lane.performer].pins) {
       for (TimelineNote& n : lane.notes) {

@@ -23,6 +23,8 @@ struct TimelineNote {
   bool pinned = false;
   bool right_hand = true;
   bool playable = true;
+  // An organist's pedal note: the foot that plays it (0 right, 1 left); -1 = the hands'.
+  int foot = -1;
 };
 
 struct TimelineBreath {

@@ -63,6 +63,35 @@ TEST(Session, TheTimelineShowsTheScene) {
   EXPECT_DOUBLE_EQ(snap_to_beat(t, t.beats_s[3] + 0.2, 0.05), t.beats_s[3] + 0.2);
 }
 
+// An organist's lane: the pedal notes carry their foot (drawn apart, never pinned to a finger),
+// the manual's notes their hand and finger.
+TEST(Session, TheOrganistsLaneShowsTheFeet) {
+  ScratchDir dir;
+  std::string text = test::read_text(test::source_dir() / "tests" / "data" / "keyboards" / "piano_and_organ.json");
+  const std::string music = "\"../../../content/music/";
+  text.replace(text.find(music), music.size(),
+               "\"" + (test::source_dir() / "content" / "music").string() + "/");
+  auto session = Session::open(dir.write("piano_and_organ.json", text));
+  ASSERT_TRUE(session) << session.error().message;
+  const Timeline& t = (*session)->timeline();
+  ASSERT_EQ(t.lanes.size(), 2u);
+  const TimelineLane& organist = t.lanes[1];
+  EXPECT_EQ(organist.name, "organist");
+  std::size_t feet = 0, hands = 0;
+  for (const TimelineNote& n : organist.notes) {
+    if (n.foot >= 0) {
+      ++feet;
+      EXPECT_EQ(n.finger, 0);
+    } else {
+      ++hands;
+      EXPECT_GE(n.finger, 1);
+    }
+  }
+  EXPECT_EQ(feet, 32u) << "as the plan says: 32 notes on the pedals";
+  EXPECT_GT(hands, 50u);
+  for (const TimelineNote& n : t.lanes[0].notes) EXPECT_EQ(n.foot, -1) << "the pianist's";
+}
+
 TEST(Session, PinningAFingerReplansTheFingering) {
   ScratchDir dir;
   auto session = Session::open(dir.copy_scene("piano.json"));
