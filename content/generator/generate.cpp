@@ -56,6 +56,8 @@ Status generate_keyboards(const std::filesystem::path& content_dir, const PianoD
                                           instrument.octave_span_mm);
     if (!keyboard.ok()) return keyboard.error();
     PianoDimensions dims = piano;
+    // An organ's console stands on its platform, the pedals at the floor.
+    if (instrument.pedalboard) dims.key_top_above_floor_mm += instrument.pedalboard->seat_raise_mm;
     // A narrower octave's black keys are narrower by as much as its white keys.
     if (instrument.octave_span_mm > 0.0) {
       auto piano_keys = piano::Keyboard::load(content_dir / "piano" / "keyboard.json");

@@ -109,6 +109,14 @@ tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensio
   if (pedalboard != nullptr) {
     add_box(body, {m(-outer), 0.0f, m(-dims.cabinet_depth_mm)},
             {m(outer), m(kick_mm), m(cabinet_front - under_mm)});  // below the kick board
+    if (pedalboard->seat_raise_mm > 0.0) {
+      // The bench's platform, in front of the pedals' ends (the bench stands 600 mm in front of
+      // the keys at the default spot, piano_plugin.cpp).
+      const double front_of_pedals =
+          cabinet_front - under_mm + 1000.0 * piano::PedalGeometry::kNaturalLength_m;
+      add_box(body, {m(-450.0), 0.0f, m(front_of_pedals + 20.0)},
+              {m(450.0), m(pedalboard->seat_raise_mm), m(1000.0)});
+    }
   }
   add_box(body, {m(-outer), 0.0f, m(cabinet_front)},
           {m(-outer + dims.cheek_width_mm), m(key_bottom - 50), m(front)});  // left leg

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <tutti/components/finger.hpp>
 #include <tutti/components/hand.hpp>
 #include <tutti/components/note.hpp>
@@ -185,11 +187,15 @@ Status bind_piano(stage::StageBuilder& builder, const piano::KeyboardInstrument&
 }
 
 Status bind_pianist_body(stage::StageBuilder& builder, const scene::Pianist& pianist,
-                         PianoRig& rig) {
+                         double seat_raise_m, PianoRig& rig) {
   auto chair_model = builder.generated_model("chair.glb");
   if (!chair_model) return chair_model.error();
-  // The chair's front (+Z) toward the keys, like the pianist.
-  const glm::mat4 bench = stage::placement_matrix(pianist.position_m, pianist.facing_deg);
+  // The chair's front (+Z) toward the keys, like the pianist; on an organ's platform raised with
+  // the console over its pedals.
+  glm::mat4 bench = stage::placement_matrix(pianist.position_m, pianist.facing_deg);
+  if (seat_raise_m > 0.0) {
+    bench *= glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, static_cast<float>(seat_raise_m), 0.0f));
+  }
   builder.place(*chair_model, bench);
   if (pianist.character_mapping.empty() && !builder.generated_model_exists("performer.glb")) {
     return Status::success();
@@ -295,7 +301,9 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   const bool users_hands = !pianist.character_mapping.empty() || !pianist.hands_mapping.empty();
   if (Status s = bind_piano(builder, *instrument, model->keyboard, *action, !users_hands,
                                 piano_root(pianist), rig); !s) return s;
-  if (Status s = bind_pianist_body(builder, pianist, rig); !s) return s;
+  const double seat_raise_m =
+      instrument->pedalboard ? instrument->pedalboard->seat_raise_mm / 1000.0 : 0.0;
+  if (Status s = bind_pianist_body(builder, pianist, seat_raise_m, rig); !s) return s;
   if (Status s = bind_user_hands(builder, pianist, rig); !s) return s;
   // Export names: "piano" (see below), "<pianist> hand_r", "<pianist> hand_l", the pianist's body.
   const auto label = [&](ecs::Entity instance, std::string text, bool after_performer) {

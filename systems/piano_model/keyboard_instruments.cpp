@@ -70,7 +70,7 @@ Result<Pedalboard> read_pedalboard(const JsonReader& reader, const nlohmann::jso
   if (!object.is_object()) return reader.error(path, "expected an object");
   if (auto ok = reader.check_keys(object, path,
                                   {"lowest_key", "highest_key", "natural_spacing_mm",
-                                   "split_below", "names"});
+                                   "split_below", "names", "seat_raise_mm"});
       !ok) {
     return ok.error();
   }
@@ -93,6 +93,12 @@ Result<Pedalboard> read_pedalboard(const JsonReader& reader, const nlohmann::jso
     return reader.error(path + "/natural_spacing_mm", "must be in [40, 90] mm");
   }
   out.natural_spacing_mm = *spacing;
+  auto raise = reader.number_or(object, path, "seat_raise_mm", 0.0);
+  if (!raise) return raise.error();
+  if (*raise < 0.0 || *raise > 300.0) {
+    return reader.error(path + "/seat_raise_mm", "must be in [0, 300] mm");
+  }
+  out.seat_raise_mm = *raise;
   if (auto ok = read_names(reader, object, path, out.names); !ok) return ok.error();
   return out;
 }

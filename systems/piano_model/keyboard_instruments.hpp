@@ -36,6 +36,9 @@ struct Pedalboard {
   // Without a pedal part or staff, the lowest line's notes below this key are the feet's.
   int split_below = 48;
   std::vector<std::string> names;  // a part named so is the pedals' ("pedal", "pédale")
+  // The console's keys and the player's bench raised on a platform by this much (mm), so the
+  // seat stands as high over the pedals as an organ bench.
+  double seat_raise_mm = 0.0;
   bool contains(int key) const { return key >= lowest_key && key <= highest_key; }
 };
 

@@ -60,7 +60,7 @@ TEST_P(SampleAllocation, NoneAfterWarmUp) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BundledScenes, SampleAllocation,
-                         ::testing::Values("piano.json", "piano_beginner.json", "piano_duo.json", "quartet.json",
+                         ::testing::Values("piano.json", "piano_beginner.json", "piano_duo.json", "organ.json", "quartet.json",
                                            "quintet.json", "low_brass.json"));
 
 // The pianist as a user's character playing with a user's hand models (the stand-ins' poses

@@ -82,7 +82,7 @@ TEST_P(SampleThreads, FourThreadsSampleOnePlanAsOneThreadDoes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BundledScenes, SampleThreads,
-                         ::testing::Values("piano.json", "piano_beginner.json", "piano_duo.json", "quartet.json",
+                         ::testing::Values("piano.json", "piano_beginner.json", "piano_duo.json", "organ.json", "quartet.json",
                                            "quintet.json", "low_brass.json"));
 
 TEST(SampleThreads, AContextRunsOnlyOnThePerformanceThatMadeIt) {

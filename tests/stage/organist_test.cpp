@@ -104,5 +104,29 @@ TEST(Organist, PlaysABachChoralesBassOnThePedals) {
   EXPECT_LT(worst_mm, 1.0) << "a toe off the pedal it holds down";
 }
 
+// The bundled organ scene (content/scenes/organ.json): its part is written on three staves, and
+// the third is the pedals'. Each note of it is a pedal press, every other note the hands'.
+TEST(Organist, TheThirdStaffIsThePedals) {
+  auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" /
+                                 "organ.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto built = performance::build_stage(*scene, {});
+  ASSERT_TRUE(built) << built.error().message;
+  const Stage& stage = **built;
+  const PianoRig& rig = stage.world().get<PianoRig>(stage.find_performer("piano", 0));
+  ASSERT_TRUE(rig.feet);
+  const music::Score& score = stage.scores().front();
+  std::vector<bool> pedal(score.notes.size(), false);
+  for (const PedalPress& press : rig.feet->presses) pedal[press.note] = true;
+  std::size_t third_staff = 0;
+  for (std::size_t i = 0; i < score.notes.size(); ++i) {
+    EXPECT_EQ(pedal[i], score.notes[i].staff == 3) << "note " << i;
+    third_staff += score.notes[i].staff == 3 ? 1 : 0;
+  }
+  EXPECT_GT(third_staff, 25u);
+  EXPECT_FALSE(rig.feet->by_foot[piano_family::kLeftFoot].empty());
+  EXPECT_FALSE(rig.feet->by_foot[piano_family::kRightFoot].empty());
+}
+
 }  // namespace
 }  // namespace tutti::stage

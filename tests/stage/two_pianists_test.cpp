@@ -113,6 +113,13 @@ TEST(TwoPianists, APianistAndAnOrganistUsingThePedals) {
   EXPECT_GE(rig.pedal_nodes[36], 0);
   EXPECT_GE(rig.pedal_nodes[67], 0);
   EXPECT_EQ(rig.pedal_nodes[68], -1) << "above the pedalboard";
+  // The organist's bench and the organ's manual stand on a 130 mm platform, the pedals at the
+  // floor: the 460 mm chair's top 520 mm above the pedals' 70 mm tops (AGO: 521 mm).
+  EXPECT_NEAR(world.get<PlacedModel>(rig.body).root[3].y, 0.13f, 1e-6f);
+  EXPECT_EQ(world.get<PlacedModel>(world.get<PianoRig>(stage.find_performer("piano", 0)).body)
+                .root[3].y,
+            0.0f);
+  EXPECT_NEAR(rig.keyboard_to_world[3].y, 0.72f + 0.13f, 1e-6f) << "the manual raised with it";
   ASSERT_TRUE(rig.feet);
   const piano_family::FeetPlan& feet = *rig.feet;
   EXPECT_GT(feet.presses.size(), 20u);

@@ -48,6 +48,7 @@ TEST(KeyboardInstruments, TheBundledFamilyAndItsCompasses) {
   EXPECT_EQ(organ->pedalboard->highest_key, 67);
   EXPECT_DOUBLE_EQ(organ->pedalboard->natural_spacing_mm, 63.5);
   EXPECT_EQ(organ->pedalboard->split_below, 48);
+  EXPECT_DOUBLE_EQ(organ->pedalboard->seat_raise_mm, 130.0);
   EXPECT_FALSE(organ->pedalboard->names.empty());
   EXPECT_FALSE(all.find("piano")->pedalboard) << "only the organ has pedals";
   EXPECT_DOUBLE_EQ(all.find("harpsichord")->octave_span_mm, 152.4);
@@ -159,6 +160,10 @@ TEST_F(KeyboardInstrumentErrors, APedalboardIsCheckedToo) {
   bad["instruments"]["organ"]["pedalboard"]["names"] = {"", "pedal"};
   EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/pedalboard/names/0: expected a "
                            "name with a word");
+  bad = doc;
+  bad["instruments"]["organ"]["pedalboard"]["seat_raise_mm"] = -5;
+  EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/pedalboard/seat_raise_mm: must "
+                           "be in [0, 300] mm");
   bad = doc;
   bad["instruments"]["organ"]["octave_span_mm"] = 200;
   EXPECT_EQ(error_of(bad), "instruments.json: /instruments/organ/octave_span_mm: must be in "
