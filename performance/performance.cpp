@@ -75,6 +75,8 @@ void add_contact_events(stage::Stage& stage, const std::map<std::uint64_t, std::
       case stage::StopKind::valve_up: kind = EventKind::valve_up; break;
       case stage::StopKind::slide_arrives: kind = EventKind::slide_arrives; break;
       case stage::StopKind::tongue: continue;  // note_on already says when it sounds
+      case stage::StopKind::pedal_down: kind = EventKind::pedal_down; break;
+      case stage::StopKind::pedal_up: kind = EventKind::pedal_up; break;
     }
     out.push_back({stop.t_s, kind, it->second, stop.value});
   }
@@ -163,6 +165,10 @@ const char* event_kind_name(EventKind kind) {
       return "breath_end";
     case EventKind::cue:
       return "cue";
+    case EventKind::pedal_down:
+      return "pedal_down";
+    case EventKind::pedal_up:
+      return "pedal_up";
   }
   return "unknown";
 }

@@ -86,6 +86,8 @@ enum class EventKind : std::uint8_t {
   breath_start,   // inhaling starts; value: the breath's index
   breath_end,     // value: the breath's index
   cue,            // the entrance a cue leads to (E); value: 1 = gives it (the lead), 0 = answers
+  pedal_down,     // an organ pedal reaches its bottom under a foot; value: MIDI key
+  pedal_up,       // it is back up; value: MIDI key
 };
 const char* event_kind_name(EventKind kind);
 

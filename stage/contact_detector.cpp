@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <tutti/components/finger.hpp>
+#include <tutti/components/foot.hpp>
 #include <tutti/components/hand.hpp>
 #include <tutti/components/instrument.hpp>
 #include <tutti/components/mouth.hpp>
@@ -51,6 +52,10 @@ std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid) {
     const auto* hand = world.try_get<components::Hand>(f.hand);
     fingers.push_back({e, hand != nullptr ? hand->performer : ecs::Entity::null});
   });
+  std::vector<FingerTrack> feet;  // a foot holds its pedal as a finger its key
+  world.view<const components::Foot>().each([&](ecs::Entity e, const components::Foot& f) {
+    feet.push_back({e, f.performer});
+  });
   std::vector<InstrumentTrack> instruments;
   world.view<const components::Instrument>().each(
       [&](ecs::Entity e, const components::Instrument& instrument) {
@@ -62,11 +67,13 @@ std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid) {
   // Spawn order: the same on every run of the same scene.
   std::sort(fingers.begin(), fingers.end(),
             [](const FingerTrack& a, const FingerTrack& b) { return a.entity.index < b.entity.index; });
+  std::sort(feet.begin(), feet.end(),
+            [](const FingerTrack& a, const FingerTrack& b) { return a.entity.index < b.entity.index; });
   std::sort(instruments.begin(), instruments.end(),
             [](const InstrumentTrack& a, const InstrumentTrack& b) {
               return a.entity.index < b.entity.index;
             });
-  if (fingers.empty() && instruments.empty()) return stops;
+  if (fingers.empty() && feet.empty() && instruments.empty()) return stops;
 
   const double span = grid.to_s - grid.from_s;
   const auto steps =
@@ -86,6 +93,21 @@ std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid) {
         track.key_down = finger->key;
       } else if (!first && track.depth > kFullyUp && depth <= kFullyUp && track.key_down >= 0) {
         stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyUp), StopKind::key_up,
+                         track.performer, track.key_down, true});
+        track.key_down = -1;
+      }
+      track.depth = depth;
+    }
+    for (FingerTrack& track : feet) {
+      const auto* foot = world.try_get<components::Foot>(track.entity);
+      if (foot == nullptr) continue;
+      const double depth = foot->press_depth;
+      if (!first && track.depth < kFullyDown && depth >= kFullyDown && foot->key >= 0) {
+        stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyDown),
+                         StopKind::pedal_down, track.performer, foot->key, true});
+        track.key_down = foot->key;
+      } else if (!first && track.depth > kFullyUp && depth <= kFullyUp && track.key_down >= 0) {
+        stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyUp), StopKind::pedal_up,
                          track.performer, track.key_down, true});
         track.key_down = -1;
       }

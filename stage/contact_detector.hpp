@@ -2,7 +2,7 @@
 #pragma once
 // The one contact detector: where the evaluated components reach their stops, read on a time
 // grid. A finger's key reaching its bed (press depth crossing 0.999) and leaving it (0.001), a
-// valve reaching its bottom and its top, a slide coming to rest, a player starting to sound.
+// foot's pedal the same, a valve reaching its bottom and its top, a slide coming to rest, a player starting to sound.
 // The performance's events (performance.hpp), `sync-report` and the C API all read these.
 //
 // Each stop is placed between two samples by linear interpolation (slides and tongues at the
@@ -24,6 +24,8 @@ enum class StopKind : std::uint8_t {
   valve_up,       // value: valve number
   slide_arrives,  // value: the position, rounded (1..7)
   tongue,         // the player starts to sound; value: -1
+  pedal_down,     // a foot's pedal reaches its bottom; value: MIDI key
+  pedal_up,       // value: MIDI key (the one that went down)
 };
 
 struct Stop {
@@ -42,7 +44,7 @@ struct StopGrid {
 };
 
 // Runs the stage's evaluate phase at every grid time and returns the stops in the order they
-// were found: per sample, fingers then instruments, each in spawn order. Leaves the stage
+// were found: per sample, fingers, feet, then instruments, each in spawn order. Leaves the stage
 // evaluated at the grid's last time. Nothing for a step <= 0 or an empty range.
 std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid);
 

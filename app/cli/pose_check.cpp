@@ -25,6 +25,7 @@
 #include <tutti/components/valve.hpp>
 #include <tutti/piano/hand_capsules.hpp>
 #include <tutti/piano/piano_components.hpp>
+#include <tutti/piano/pose_feet.hpp>
 #include <tutti/piano_model/pedal_geometry.hpp>
 
 namespace tutti::cli {
@@ -638,19 +639,20 @@ class Checker {
   // An organist's toes: each one holding its pedal all the way down is on the pedal's top, inside
   // its outline (in the pedal's frame: x across, y up from the top, z along from the hinge).
   void toes_on_pedals(const std::string& who, const piano_family::PianoRig& rig, double t_s) {
-    if (!rig.feet) return;
     using piano::PedalGeometry;
     for (int foot : {piano_family::kRightFoot, piano_family::kLeftFoot}) {
-      const piano_family::FootState state = piano_family::evaluate_foot(*rig.feet, foot, t_s);
-      if (state.depth < 0.999 || state.from_key < 0 || state.from_key > 127) continue;
-      const int pedal = rig.pedal_nodes[static_cast<std::size_t>(state.from_key)];
+      const components::Foot* state = piano_family::foot_of(stage_.world(), rig, foot);
+      if (state == nullptr || state->press_depth < 0.999 || state->key < 0 || state->key > 127) {
+        continue;
+      }
+      const int pedal = rig.pedal_nodes[static_cast<std::size_t>(state->key)];
       const int toe = foot == piano_family::kRightFoot ? rig.body_nodes.toe_right
                                                        : rig.body_nodes.toe_left;
       if (pedal < 0 || toe < 0) continue;
       const glm::vec3 local = glm::inverse(horn_world_[static_cast<std::size_t>(pedal)]) *
                               glm::vec4(origin(body_world_[static_cast<std::size_t>(toe)]), 1.0f);
-      const double length = piano::pedal_is_sharp(state.from_key) ? PedalGeometry::kSharpLength_m
-                                                                  : PedalGeometry::kNaturalLength_m;
+      const double length = piano::pedal_is_sharp(state->key) ? PedalGeometry::kSharpLength_m
+                                                              : PedalGeometry::kNaturalLength_m;
       const double off_side = std::max(
           0.0, std::abs(static_cast<double>(local.x)) - PedalGeometry::kPedalWidth_m / 2.0);
       const double off_end = std::max({0.0, -static_cast<double>(local.z),
@@ -659,7 +661,7 @@ class Checker {
       measure(who + ": pressing toe off its pedal's top (0 = on it)", "mm", 3.0)
           .add(std::sqrt(off_side * off_side + off_end * off_end + off_top * off_top) * 1000.0,
                t_s, std::string(foot == piano_family::kRightFoot ? "right" : "left") +
-                        " toe on pedal " + std::to_string(state.from_key));
+                        " toe on pedal " + std::to_string(state->key));
     }
   }
 

@@ -32,6 +32,8 @@ const char* contact_kind_name(ContactKind kind) {
       return "slide arrives";
     case ContactKind::tongue:
       return "tongue";
+    case ContactKind::pedal_down:
+      return "pedal down";
   }
   return "?";
 }
@@ -49,7 +51,12 @@ std::vector<Contact> sample_contacts(stage::Stage& stage, double from_s, double 
                             performer_name(world, stop.performer, "pianist"), stop.value});
         break;
       case stage::StopKind::key_up:
+      case stage::StopKind::pedal_up:
         break;  // the sound starts at the bottom
+      case stage::StopKind::pedal_down:
+        contacts.push_back({stop.t_s, ContactKind::pedal_down,
+                            performer_name(world, stop.performer, "organist"), stop.value});
+        break;
       case stage::StopKind::valve_down:
         contacts.push_back({stop.t_s, ContactKind::valve_down,
                             performer_name(world, stop.performer, ""), stop.value});

@@ -20,14 +20,14 @@
 
 namespace tutti::cli {
 
-enum class ContactKind { key_bottom, valve_down, valve_up, slide_arrives, tongue };
+enum class ContactKind { key_bottom, valve_down, valve_up, slide_arrives, tongue, pedal_down };
 const char* contact_kind_name(ContactKind kind);
 
 struct Contact {
   double time_s = 0.0;  // music time
   ContactKind kind = ContactKind::key_bottom;
   std::string performer;
-  int detail = -1;  // the key (piano) or the valve number (1-based)
+  int detail = -1;  // the key (piano, organ pedal) or the valve number (1-based)
 };
 
 // Samples evaluate-phase state at from_s, from_s + step_s, ... < to_s. Key bottoms and valve

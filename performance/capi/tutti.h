@@ -88,7 +88,9 @@ typedef enum tutti_event_kind {
   TUTTI_SLIDE_ARRIVES = 6, /* value: the slide position (1..7) */
   TUTTI_BREATH_START = 7,  /* value: the breath's index */
   TUTTI_BREATH_END = 8,    /* value: the breath's index */
-  TUTTI_CUE = 9            /* the entrance a cue leads to; value: 1 = gives it, 0 = answers */
+  TUTTI_CUE = 9,           /* the entrance a cue leads to; value: 1 = gives it, 0 = answers */
+  TUTTI_PEDAL_DOWN = 10,   /* an organ pedal reaches its bottom under a foot; value: MIDI key */
+  TUTTI_PEDAL_UP = 11      /* value: MIDI key */
 } tutti_event_kind;
 
 typedef struct tutti_event {

@@ -133,7 +133,7 @@ tutti_status pose_of(const char* function, const tutti_performance* p, int32_t m
   return TUTTI_OK;
 }
 
-constexpr int32_t kEventKinds = static_cast<int32_t>(tutti::performance::EventKind::cue) + 1;
+constexpr int32_t kEventKinds = static_cast<int32_t>(tutti::performance::EventKind::pedal_up) + 1;
 
 // Every model's root and local transforms of `sample` into the caller's buffers (tutti_poses).
 tutti_status write_poses(const std::string& function, const tutti::performance::Sample& sample,

@@ -81,6 +81,7 @@ struct PianoRig {
   // An organ's pedals: node per MIDI key (-1 = none), and the feet's plan (null = no pedals).
   std::array<int, 128> pedal_nodes{};
   std::shared_ptr<const FeetPlan> feet;
+  std::array<ecs::Entity, 2> foot_entities{ecs::Entity::null, ecs::Entity::null};  // right, left
   std::vector<glm::mat4> scratch_instrument_world;
   std::array<double, 128> key_dip_rad{};
   // How far behind the key node's origin (the visible key's back edge) its lever turns: the

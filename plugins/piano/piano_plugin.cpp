@@ -17,6 +17,7 @@
 #include <tutti/piano_model/keyboard_instruments.hpp>
 #include <tutti/key_action/key_action_params.hpp>
 #include <tutti/piano/plan_pianist.hpp>
+#include <tutti/piano/pose_feet.hpp>
 #include <tutti/piano/pose_piano.hpp>
 #include <tutti/stage/model_binding.hpp>
 #include <tutti/stage/body_retarget.hpp>
@@ -233,8 +234,11 @@ Status bind_user_hands(stage::StageBuilder& builder, const scene::Pianist& piani
 
 void PianoPlugin::add_systems(ecs::Schedule& schedule) const {
   finger_motion::register_finger_motion(schedule);
+  schedule.add(ecs::Phase::evaluate, kFeetSystemName, feet_system,
+               ecs::access(ecs::Reads<PianoRig>{}, ecs::Writes<components::Foot>{}));
   schedule.add(ecs::Phase::pose, kPianoSkeletonSystemName, piano_skeleton_system,
-               ecs::access(ecs::Reads<PianoRig, components::Hand, components::Finger>{},
+               ecs::access(ecs::Reads<PianoRig, components::Hand, components::Finger,
+                                      components::Foot>{},
                            ecs::WritesOwn<stage::PlacedModel, stage::Touching>{}));
 }
 
@@ -326,6 +330,16 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   label(rig.body, "", true);
   label(rig.user_hands, "hands", true);
   rig.feet = plan.feet;
+  if (rig.feet) {
+    for (int side : {kRightFoot, kLeftFoot}) {
+      const ecs::Entity foot = world.create();
+      components::Foot value;
+      value.performer = performer;
+      value.side = side == kRightFoot ? components::HandSide::right : components::HandSide::left;
+      world.add<components::Foot>(foot, value);
+      rig.foot_entities[static_cast<std::size_t>(side)] = foot;
+    }
+  }
   world.add<PianoRig>(performer, std::move(rig));
   world.add<stage::Touching>(performer, stage::Touching{});
   world.add<PianistPlan>(performer, std::move(plan));

@@ -41,19 +41,40 @@ glm::vec3 toe_point(const PianoRig& rig, const std::vector<glm::mat4>& instrumen
 
 }  // namespace
 
-void dip_pedals(const PianoRig& rig, double t, model::ModelPose& instrument_pose) {
-  if (!rig.feet) return;
-  for (int foot : {kRightFoot, kLeftFoot}) {
-    const FootState state = evaluate_foot(*rig.feet, foot, t);
-    if (state.depth <= 0.0 || state.from_key < 0 || state.from_key >= 128) continue;
-    const int node = rig.pedal_nodes[static_cast<std::size_t>(state.from_key)];
-    stage::turn(instrument_pose, node, static_cast<float>(state.depth * PedalGeometry::kDownRad),
+void feet_system(ecs::World& world, const ecs::FrameTime& frame) {
+  world.view<const PianoRig>().each([&world, &frame](ecs::Entity, const PianoRig& rig) {
+    if (!rig.feet) return;
+    for (int side : {kRightFoot, kLeftFoot}) {
+      auto* foot = world.try_get<components::Foot>(rig.foot_entities[static_cast<std::size_t>(side)]);
+      if (foot == nullptr) continue;
+      const FootState state = evaluate_foot(*rig.feet, side, frame.t_s);
+      foot->from_key = state.from_key;
+      foot->to_key = state.to_key;
+      foot->travel = state.travel;
+      foot->press_depth = state.depth;
+      foot->key = state.depth > 0.0 ? state.from_key : -1;
+      foot->lift_m = state.lift_m;
+    }
+  });
+}
+
+const components::Foot* foot_of(const ecs::World& world, const PianoRig& rig, int side) {
+  if (!rig.feet || (side != kRightFoot && side != kLeftFoot)) return nullptr;
+  return world.try_get<components::Foot>(rig.foot_entities[static_cast<std::size_t>(side)]);
+}
+
+void dip_pedals(const ecs::World& world, const PianoRig& rig, model::ModelPose& instrument_pose) {
+  for (int side : {kRightFoot, kLeftFoot}) {
+    const components::Foot* foot = foot_of(world, rig, side);
+    if (foot == nullptr || foot->key < 0 || foot->key >= 128) continue;
+    const int node = rig.pedal_nodes[static_cast<std::size_t>(foot->key)];
+    stage::turn(instrument_pose, node, static_cast<float>(foot->press_depth * PedalGeometry::kDownRad),
                 {1.0f, 0.0f, 0.0f});
   }
 }
 
-void pose_feet_on_pedals(PianoRig& rig, const stage::PlacedModel& instrument,
-                         stage::PlacedModel& body, double t) {
+void pose_feet_on_pedals(const ecs::World& ecs_world, PianoRig& rig,
+                         const stage::PlacedModel& instrument, stage::PlacedModel& body) {
   if (!rig.feet || rig.feet->empty() || instrument.asset == nullptr || body.asset == nullptr) return;
   std::vector<glm::mat4>& instrument_world = rig.scratch_instrument_world;
   instrument_world.resize(instrument.asset->nodes.size());
@@ -65,16 +86,16 @@ void pose_feet_on_pedals(PianoRig& rig, const stage::PlacedModel& instrument,
   const glm::quat facing = stage::rotation_of(body.root);
   const float scale = glm::length(glm::vec3(body.root[0]));
   const glm::quat toes_down = glm::angleAxis(kToesDownRad, glm::vec3(1.0f, 0.0f, 0.0f));
-  for (int foot : {kRightFoot, kLeftFoot}) {
-    const Leg leg = leg_of(rig.body_nodes, foot);
+  for (int side : {kRightFoot, kLeftFoot}) {
+    const Leg leg = leg_of(rig.body_nodes, side);
     if (leg.thigh < 0 || leg.shin < 0 || leg.foot < 0 || leg.toe < 0) continue;
-    const FootState state = evaluate_foot(*rig.feet, foot, t);
-    if (state.from_key < 0) continue;
-    const glm::vec3 from = toe_point(rig, instrument_world, state.from_key);
-    const glm::vec3 to = toe_point(rig, instrument_world, state.to_key);
+    const components::Foot* foot = foot_of(ecs_world, rig, side);
+    if (foot == nullptr || foot->from_key < 0) continue;
+    const glm::vec3 from = toe_point(rig, instrument_world, foot->from_key);
+    const glm::vec3 to = toe_point(rig, instrument_world, foot->to_key);
     const glm::vec3 up = glm::vec3(instrument.root * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
-    const glm::vec3 target = glm::mix(from, to, static_cast<float>(state.travel)) +
-                             static_cast<float>(state.lift_m) * glm::normalize(up);
+    const glm::vec3 target = glm::mix(from, to, static_cast<float>(foot->travel)) +
+                             static_cast<float>(foot->lift_m) * glm::normalize(up);
     // The foot points from its hip toward the pedal (toes out at the board's ends), pitched
     // toes-down; the ankle where the toe point, turned with the sole, lands on the target.
     const glm::vec3 hip = glm::vec3(world[static_cast<std::size_t>(leg.thigh)][3]);
@@ -93,16 +114,16 @@ void pose_feet_on_pedals(PianoRig& rig, const stage::PlacedModel& instrument,
   }
 }
 
-void touch_pedals(const PianoRig& rig, double t, stage::Touching& touching) {
-  if (!rig.feet || rig.body.is_null()) return;
-  for (int foot : {kRightFoot, kLeftFoot}) {
-    const FootState state = evaluate_foot(*rig.feet, foot, t);
-    if (state.depth <= 0.0 || state.from_key < 0 || state.from_key >= 128) continue;
-    const Leg leg = leg_of(rig.body_nodes, foot);
+void touch_pedals(const ecs::World& world, const PianoRig& rig, stage::Touching& touching) {
+  if (rig.body.is_null()) return;
+  for (int side : {kRightFoot, kLeftFoot}) {
+    const components::Foot* foot = foot_of(world, rig, side);
+    if (foot == nullptr || foot->key < 0 || foot->key >= 128) continue;
+    const Leg leg = leg_of(rig.body_nodes, side);
     stage::Touch touch;
     touch.part = rig.piano;
-    touch.part_node = rig.pedal_nodes[static_cast<std::size_t>(state.from_key)];
-    touch.midi = state.from_key;
+    touch.part_node = rig.pedal_nodes[static_cast<std::size_t>(foot->key)];
+    touch.midi = foot->key;
     touch.body = rig.body;
     touch.body_node = rig.body_retarget ? rig.body_retarget->user_node_of(leg.toe) : leg.toe;
     if (touch.body_node < 0 && rig.body_retarget) {

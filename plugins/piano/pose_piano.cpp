@@ -81,7 +81,7 @@ void seat_pads_on_keys(ecs::World& world, PianoRig& rig, std::size_t side, Place
   }
 }
 
-void pose_pianist(ecs::World& world, PianoRig& rig, double t) {
+void pose_pianist(ecs::World& world, PianoRig& rig) {
   auto* piano = world.try_get<PlacedModel>(rig.piano);
   if (piano == nullptr) return;
   std::array<glm::vec3, 2> wrists{};
@@ -165,7 +165,7 @@ void pose_pianist(ecs::World& world, PianoRig& rig, double t) {
     const float d = rig.key_pivot_behind_m[key];
     if (d > 0.0f) stage::move(piano->pose, node, {0.0f, -d * std::sin(angle), d * (std::cos(angle) - 1.0f)});
   }
-  dip_pedals(rig, t, piano->pose);
+  dip_pedals(world, rig, piano->pose);
 
   // A user's hand models: placed where tutti's play; the body's arms reach their wrists.
   if (rig.hands_retarget) {
@@ -178,13 +178,13 @@ void pose_pianist(ecs::World& world, PianoRig& rig, double t) {
   if (body == nullptr) return;
   if (!rig.body_retarget) {
     pose_pianist_body(*body, rig, wrists);
-    pose_feet_on_pedals(rig, *piano, *body, t);
+    pose_feet_on_pedals(world, rig, *piano, *body);
     return;
   }
   if (rig.hands_retarget) {
     // A user's character with a user's hands: its arms reach them, its own hands folded away.
     pose_pianist_body(rig.body_retarget->proxy, rig, wrists);
-    pose_feet_on_pedals(rig, *piano, rig.body_retarget->proxy, t);
+    pose_feet_on_pedals(world, rig, *piano, rig.body_retarget->proxy);
     stage::apply_body_retarget(*rig.body_retarget, *body);
     for (const int hand : {rig.body_nodes.arm_right.end, rig.body_nodes.arm_left.end}) {
       const int own = rig.body_retarget->user_node_of(hand);
@@ -193,7 +193,7 @@ void pose_pianist(ecs::World& world, PianoRig& rig, double t) {
     return;
   }
   pose_pianist_with_own_hands(world, rig.body_retarget->proxy, rig);
-  pose_feet_on_pedals(rig, *piano, rig.body_retarget->proxy, t);
+  pose_feet_on_pedals(world, rig, *piano, rig.body_retarget->proxy);
   stage::apply_body_retarget(*rig.body_retarget, *body);
 }
 
@@ -229,12 +229,12 @@ void touch_keys(ecs::World& world, const PianoRig& rig, stage::Touching& touchin
 
 }  // namespace
 
-void piano_skeleton_system(ecs::World& world, const ecs::FrameTime& frame) {
-  world.view<PianoRig>().each([&world, &frame](ecs::Entity performer, PianoRig& rig) {
-    pose_pianist(world, rig, frame.t_s);
+void piano_skeleton_system(ecs::World& world, const ecs::FrameTime&) {
+  world.view<PianoRig>().each([&world](ecs::Entity performer, PianoRig& rig) {
+    pose_pianist(world, rig);
     if (auto* touching = world.try_get<stage::Touching>(performer)) {
       touch_keys(world, rig, *touching);
-      touch_pedals(rig, frame.t_s, *touching);
+      touch_pedals(world, rig, *touching);
     }
   });
 }

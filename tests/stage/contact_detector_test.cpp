@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -28,6 +30,49 @@ bool same(const std::vector<Stop>& a, const std::vector<Stop>& b) {
     }
   }
   return true;
+}
+
+// The organist (content/scenes/organ.json): each pedal the feet play reaches its bottom as its
+// note starts (the pedal is down by the onset), and comes back up, on the pedalboard's keys.
+TEST(ContactDetector, EachPedalTheFeetPlayGoesDownByItsNoteAndComesBackUp) {
+  auto stage = build("organ.json");
+  ASSERT_NE(stage, nullptr);
+  const StopGrid grid{stage->start_s(), stage->end_s(), 0.002, true};
+  const std::vector<Stop> stops = detect_stops(*stage, grid);
+  std::vector<double> pedal_downs;
+  int held = 0, ups = 0;
+  for (const Stop& stop : stops) {
+    if (stop.kind != StopKind::pedal_down && stop.kind != StopKind::pedal_up) continue;
+    EXPECT_GE(stop.value, 36);
+    EXPECT_LE(stop.value, 67);
+    ASSERT_NE(stage->world().try_get<components::Performer>(stop.performer), nullptr);
+    if (stop.kind == StopKind::pedal_down) {
+      pedal_downs.push_back(stop.t_s);
+      ++held;
+    } else {
+      EXPECT_GT(held, 0);
+      --held;
+      ++ups;
+    }
+  }
+  // Every note of the pedals' staff (the third) has its pedal down within a grid step of its
+  // onset; but a note at the range's start, whose pedal is already down at the first sample (a
+  // stop is a crossing between two samples).
+  const music::Score& score = stage->scores().front();
+  std::size_t pedal_notes = 0;
+  for (const music::Note& n : score.notes) {
+    if (n.staff != 3 || n.onset_s < grid.from_s + 0.1) continue;
+    ++pedal_notes;
+    const bool found = std::any_of(pedal_downs.begin(), pedal_downs.end(), [&](double t) {
+      return std::abs(t - n.onset_s) <= 0.0025;
+    });
+    EXPECT_TRUE(found) << "pedal " << n.pitch << " at " << n.onset_s << " s";
+  }
+  EXPECT_GT(pedal_notes, 25u);
+  EXPECT_EQ(pedal_downs.size(), pedal_notes);
+  EXPECT_EQ(ups, static_cast<int>(pedal_notes)) << "every pedal that went down comes back up";
+  EXPECT_EQ(held, 0);
+  EXPECT_TRUE(same(stops, detect_stops(*stage, grid))) << "the same stops on a second run";
 }
 
 // The pianist: every key that reaches its bed leaves it again on the same key (but those still
