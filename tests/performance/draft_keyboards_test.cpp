@@ -12,6 +12,7 @@
 #include <string>
 
 #include <tutti/music/load_score.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
 #include "testdata.hpp"
 
@@ -108,6 +109,27 @@ TEST(DraftKeyboards, ThirdPartyOrganAndElectricPianoParts) {
     ASSERT_EQ(scene.pianists.size(), 1u) << file;
     EXPECT_EQ(scene.pianists[0].instrument, instrument) << file;
   }
+}
+
+// An organ piece on three staves (content/music/organ_chorale.musicxml): `scene new` gives it an
+// organist, whose staged plan puts the third staff on the pedals with both feet.
+TEST(DraftKeyboards, AnOrganPieceGetsAnOrganistWhoseFeetPlayThePedalStaff) {
+  const std::filesystem::path path =
+      std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "music" / "organ_chorale.musicxml";
+  auto score = music::load_score(path);
+  ASSERT_TRUE(score) << score.error().message;
+  auto drafted = draft_scene(*score, path);
+  ASSERT_TRUE(drafted) << drafted.error().message;
+  const scene::Scene scene = parsed(*drafted, path.parent_path());
+  ASSERT_EQ(scene.pianists.size(), 1u);
+  EXPECT_EQ(scene.pianists[0].instrument, "organ");
+  EXPECT_EQ(scene.pianists[0].name, "organist");
+  auto stage = build_stage(scene, {});
+  ASSERT_TRUE(stage) << stage.error().message;
+  const auto& notes = (*stage)->notes();
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+    return n.find("organist: 32 notes on the pedals (") == 0;
+  }));
 }
 
 }  // namespace
