@@ -25,6 +25,7 @@ double crossing(double t0, double v0, double t1, double v1, double level) {
   return t0 + (t1 - t0) * std::clamp((level - v0) / (v1 - v0), 0.0, 1.0);
 }
 
+// A finger and its key, or a foot and its pedal.
 struct FingerTrack {
   ecs::Entity entity = ecs::Entity::null;
   ecs::Entity performer = ecs::Entity::null;
@@ -40,6 +41,28 @@ struct InstrumentTrack {
   bool buzzing = false;
   std::vector<std::size_t> waiting;  // stops found last sample whose `sounding` waits for this one
 };
+
+struct Sample {
+  double previous_t = 0.0;
+  double t = 0.0;
+  bool first = false;
+};
+
+// A finger's key or a foot's pedal at this sample: down when its depth crosses kFullyDown, up
+// (the key that went down) when it falls back past kFullyUp.
+void track_press(FingerTrack& track, double depth, int key, const Sample& sample, StopKind down,
+                 StopKind up, std::vector<Stop>& stops) {
+  if (!sample.first && track.depth < kFullyDown && depth >= kFullyDown && key >= 0) {
+    stops.push_back({crossing(sample.previous_t, track.depth, sample.t, depth, kFullyDown), down,
+                     track.performer, key, true});
+    track.key_down = key;
+  } else if (!sample.first && track.depth > kFullyUp && depth <= kFullyUp && track.key_down >= 0) {
+    stops.push_back({crossing(sample.previous_t, track.depth, sample.t, depth, kFullyUp), up,
+                     track.performer, track.key_down, true});
+    track.key_down = -1;
+  }
+  track.depth = depth;
+}
 
 }  // namespace
 
@@ -84,34 +107,16 @@ std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid) {
     stage.run({t, grid.step_s}, ecs::Phase::evaluate);
     const bool first = i == 0;
     for (FingerTrack& track : fingers) {
-      const auto* finger = world.try_get<components::Finger>(track.entity);
-      if (finger == nullptr) continue;
-      const double depth = finger->press_depth;
-      if (!first && track.depth < kFullyDown && depth >= kFullyDown && finger->key >= 0) {
-        stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyDown),
-                         StopKind::key_down, track.performer, finger->key, true});
-        track.key_down = finger->key;
-      } else if (!first && track.depth > kFullyUp && depth <= kFullyUp && track.key_down >= 0) {
-        stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyUp), StopKind::key_up,
-                         track.performer, track.key_down, true});
-        track.key_down = -1;
+      if (const auto* finger = world.try_get<components::Finger>(track.entity)) {
+        track_press(track, finger->press_depth, finger->key, {previous_t, t, first},
+                    StopKind::key_down, StopKind::key_up, stops);
       }
-      track.depth = depth;
     }
     for (FingerTrack& track : feet) {
-      const auto* foot = world.try_get<components::Foot>(track.entity);
-      if (foot == nullptr) continue;
-      const double depth = foot->press_depth;
-      if (!first && track.depth < kFullyDown && depth >= kFullyDown && foot->key >= 0) {
-        stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyDown),
-                         StopKind::pedal_down, track.performer, foot->key, true});
-        track.key_down = foot->key;
-      } else if (!first && track.depth > kFullyUp && depth <= kFullyUp && track.key_down >= 0) {
-        stops.push_back({crossing(previous_t, track.depth, t, depth, kFullyUp), StopKind::pedal_up,
-                         track.performer, track.key_down, true});
-        track.key_down = -1;
+      if (const auto* foot = world.try_get<components::Foot>(track.entity)) {
+        track_press(track, foot->press_depth, foot->key, {previous_t, t, first},
+                    StopKind::pedal_down, StopKind::pedal_up, stops);
       }
-      track.depth = depth;
     }
     for (InstrumentTrack& track : instruments) {
       const auto* mouth = world.try_get<components::Mouth>(track.performer);
