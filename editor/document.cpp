@@ -7,6 +7,7 @@
 #include <tutti/editor/atomic_file.hpp>
 #include <tutti/editor/scene_json_format.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 namespace tutti::editor {
 namespace {
@@ -37,7 +38,7 @@ fs::path Document::autosave_path(const fs::path& scene_path) {
 
 Result<scene::Scene> Document::parse(const Json& json) const {
   return scene::parse_scene(nlohmann::json::parse(json.dump()), path_.filename().string(),
-                            path_.parent_path());
+                            path_.parent_path(), performance::scene_load_options());
 }
 
 Result<Document> Document::open(const fs::path& path) {

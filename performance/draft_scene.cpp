@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <tutti/performance/draft_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -259,8 +260,9 @@ std::string format_scene_document(const nlohmann::ordered_json& document) {
 }
 
 Result<scene::Scene> load_scene_or_music(const std::filesystem::path& file,
-                                         const scene::LoadOptions& options,
+                                         const std::filesystem::path& content_dir,
                                          std::vector<std::string>* notes) {
+  const scene::LoadOptions options = scene_load_options(content_dir);
   if (!is_music_file(file)) return scene::load_scene(file, options);
   auto score = music::load_score(file);
   if (!score) return score.error();

@@ -44,9 +44,10 @@ std::filesystem::path music_reference_from(const std::filesystem::path& scene_fi
                                            const std::filesystem::path& music_file);
 
 // A scene file, or a piece of music with the scene drafted for it (`tutti render PIECE.mid`, the C
-// API's tutti_open): the drafted scene's notes (parts not played) go to `notes` when given.
+// API's tutti_open), read with the default families' sections (scene_load_options(content_dir)):
+// the drafted scene's notes (parts not played) go to `notes` when given.
 Result<scene::Scene> load_scene_or_music(const std::filesystem::path& file,
-                                         const scene::LoadOptions& options = {},
+                                         const std::filesystem::path& content_dir = {},
                                          std::vector<std::string>* notes = nullptr);
 
 // True for a file name tutti reads as music (.mid, .midi, .kar, .musicxml, .xml, .mxl, .txt PIG)

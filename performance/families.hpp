@@ -3,10 +3,12 @@
 // The instrument families tutti stages, in order (brass players, then the pianist): the one place
 // that lists them. A program with families of its own passes its list to stage::build_stage.
 
+#include <filesystem>
 #include <memory>
 #include <span>
 
 #include <tutti/core/result.hpp>
+#include <tutti/scene/load_scene.hpp>
 #include <tutti/scene/scene.hpp>
 #include <tutti/stage/family_plugin.hpp>
 #include <tutti/stage/stage.hpp>
@@ -14,6 +16,11 @@
 namespace tutti::performance {
 
 std::span<const stage::FamilyPlugin* const> default_families();
+
+// How to read a scene file with the default families' sections (each family's players under
+// its own keys): scene::load_scene(path, scene_load_options()). `content_dir` as in
+// scene::LoadOptions.
+scene::LoadOptions scene_load_options(std::filesystem::path content_dir = {});
 
 // stage::build_stage with default_families().
 Result<std::unique_ptr<stage::Stage>> build_stage(const scene::Scene& scene,

@@ -193,9 +193,7 @@ const std::vector<std::string>& Performance::notes() const { return stage_->note
 
 Result<std::unique_ptr<Performance>> Performance::open(const std::filesystem::path& scene_file,
                                                        const Options& options) {
-  scene::LoadOptions load_options;
-  load_options.content_dir = options.content_dir;
-  auto scene = load_scene_or_music(scene_file, load_options);
+  auto scene = load_scene_or_music(scene_file, options.content_dir);
   if (!scene) return scene.error();
   return stage(*scene, options);
 }

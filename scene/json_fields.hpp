@@ -2,7 +2,7 @@
 #pragma once
 // Typed field reads for the scene and mapping loaders, on top of content::JsonReader: each
 // returns the value or a one-line "FILE: /path/key: reason" error. Absent optional fields keep
-// the fallback. Internal to tutti_scene.
+// the fallback. Shared with the families' scene sections (scene_section.hpp).
 
 #include <cstdint>
 #include <nlohmann/json.hpp>

@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Reading a scene file (format: scene/README.md) into a Scene, strictly: every object is
-// checked for unknown keys, every value for its type and range, every referenced file for
-// existence (music, asset mappings; mappings are parsed and their kind checked), every
-// instrument id against content/instruments/, the hand size against content/piano/hands.json,
-// every shot's camera by name, the shot order. Errors are one line, "FILE: /json/path: reason",
-// e.g. "quartet.json: /performers/2/variation/sway_amount: must be in [0, 1]".
+// Reading a scene file (format: scene/README.md) into a Scene, strictly: the scene's own keys
+// here, each family's players by the SceneSection it registers (scene_section.hpp). Every
+// object is checked for unknown keys, every value for its type and range, every referenced file
+// for existence, every shot's camera by name, the shot order. Errors are one line,
+// "FILE: /json/path: reason", e.g. "quartet.json: /shots/1/camera: no camera named \"wide\" ...".
 //
 // Score parts are not looked up here (the music is not parsed); load_scene_music does that.
 
@@ -19,6 +18,7 @@
 #include <tutti/core/result.hpp>
 #include <tutti/music/score.hpp>
 #include <tutti/scene/scene.hpp>
+#include <tutti/scene/scene_section.hpp>
 
 namespace tutti::scene {
 
@@ -26,6 +26,9 @@ struct LoadOptions {
   // Where the content the scene is checked against is (instruments, hands, styles); empty:
   // content::default_content_dir() ($TUTTI_CONTENT_DIR, else the content tutti was built with).
   std::filesystem::path content_dir;
+  // The families' sections, in the order they read (tutti::performance::scene_load_options()
+  // gives those of the default families). A top-level key none of them registers is an error.
+  std::vector<const SceneSection*> sections;
 };
 
 // Messages use the file's name (not its folder). Missing file: "<path>: no such file"; bad JSON:
@@ -43,8 +46,9 @@ Result<nlohmann::json> read_scene_json(const std::filesystem::path& path);
 // The index of the part named `wanted` (case-insensitive, whole name) or with that id; -1 if none.
 int find_part(const music::Score& score, std::string_view wanted);
 
-// Loads every music file of the scene (tutti::music::load_score) and checks that every
-// performer's part and the pianist's parts exist in their music file, e.g.
+// Loads every music file of the scene (tutti::music::load_score) and checks that every part a
+// player claims (Scene::part_claims) exists in its music file and that no exclusive part has two
+// players, e.g.
 // "quartet.json: /performers/1/part: no part "Trumpet 3" in quartet.musicxml (parts: Trumpet in
 // B♭ 1, ...)". Returns the scores in Scene::music order.
 Result<std::vector<music::Score>> load_scene_music(const Scene& scene);

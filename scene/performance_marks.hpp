@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The performance marks of a scene file (breath marks, expressions, finger pins, cues): the
-// editor's timeline edits, read as strictly as the rest of the scene. Internal to tutti_scene.
+// editor's timeline edits, read as strictly as the rest of the scene; the families' sections read
+// their players' marks with these.
 
 #include <nlohmann/json.hpp>
 #include <string>

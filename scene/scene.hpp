@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // A cutscene as plain data (content/scenes/*.json, format in scene/README.md): which music,
-// who plays it where (brass performers, a pianist), the cameras and the shot list that cuts
+// who plays it where (each family's players, read by its SceneSection), the cameras and the shot list that cuts
 // between them, the lights and the output settings. load_scene.hpp reads and validates it; the
 // planners, ensemble variation and the renderer read the struct and never the JSON.
 //
@@ -9,6 +9,7 @@
 // toward the default camera and the audience; positive facing_deg turns toward +X (a rotation
 // about +Y). Times are seconds of the music (the score's clock, 0 = its start).
 
+#include <any>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -144,6 +145,24 @@ struct Pianist {
   friend bool operator==(const Pianist&, const Pianist&) = default;
 };
 
+// What a family's SceneSection (scene_section.hpp) read from its keys, as the family's own
+// struct: families without a place of their own in Scene keep their players here.
+struct FamilySection {
+  std::string key;  // the top-level key it was read from, e.g. "strings"
+  std::any data;    // the family's struct; Scene::section<T>(key) reads it
+};
+
+// A score part a player plays, for checking the parts against the music (check_scene_parts).
+struct PartClaim {
+  std::string part;            // name (case-insensitive) or id, as written
+  std::size_t music_file = 0;  // index into Scene::music
+  std::string pointer;         // where it is written, e.g. "/pianists/0/parts/1"
+  std::string player;          // the player's JSON pointer, e.g. "/pianists/0"
+  // A note has one player: no other player may claim an exclusive part of the same music
+  // (keyboard players); players sharing a part by voice claim it non-exclusively.
+  bool exclusive = false;
+};
+
 struct Camera {
   std::string name;  // unique, non-empty
   Vec3 position_m;
@@ -189,7 +208,11 @@ struct Scene {
   std::vector<std::filesystem::path> music;  // at least one; resolved, each an existing file
   std::uint64_t seed = 0;
   std::vector<Performer> performers;
-  std::vector<Pianist> pianists;   // a scene has performers, pianists, or both
+  std::vector<Pianist> pianists;
+  // Players of other families (their SceneSection's struct, by key), and every player's parts:
+  // a scene has at least one player, so at least one claim.
+  std::vector<FamilySection> sections;
+  std::vector<PartClaim> part_claims;
   std::vector<Camera> cameras;     // at least one
   std::vector<Shot> shots;         // at least one; first at 0 s, start_s strictly increasing
   Lights lights;
@@ -204,6 +227,14 @@ struct Scene {
   const Camera& camera_at(double t_s) const { return cameras[shots[shot_at(t_s)].camera]; }
   // Index into cameras, -1 if none has this name.
   int find_camera(std::string_view name) const;
+  // What the section read from `key` as T, or nullptr (no such key in the file, or not a T).
+  template <class T>
+  const T* section(std::string_view key) const {
+    for (const FamilySection& s : sections) {
+      if (s.key == key) return std::any_cast<T>(&s.data);
+    }
+    return nullptr;
+  }
 };
 
 // Seed of a performer (stream k + 1 for performers[k]) or of a pianist (pianist_seed_stream)

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// An instrument family as a plugin (Bevy's Plugin): everything about pianos, or about brass, in
-// one place. A family adds its systems to the schedule's phases and, for a scene, plans its
-// performers, spawns their entities and binds their models (StageBuilder). The stage knows
-// families only through this interface; the list of families a program uses is a small file of
-// its own (tutti::performance's default_families()).
+// An instrument family as a plugin (Bevy's Plugin): everything about one family in one place.
+// A family reads its section of the scene file (scene_section.hpp), adds its systems to the
+// schedule's phases and, for a scene, plans its performers, spawns their entities and binds
+// their models (StageBuilder). The stage knows families only through this interface; the list of
+// families a program uses is a small file of its own (tutti::performance's default_families()).
 
 #include <string_view>
 
 #include <tutti/core/result.hpp>
 #include <tutti/ecs/schedule.hpp>
+#include <tutti/scene/scene_section.hpp>
 
 namespace tutti::stage {
 
@@ -19,8 +20,12 @@ class FamilyPlugin {
  public:
   virtual ~FamilyPlugin() = default;
 
-  // "piano", "brass": Seat::family of its performers.
+  // Seat::family of its performers.
   virtual std::string_view name() const = 0;
+
+  // Its section of the scene file: the top-level keys its players are written under. The
+  // loader hands the document to it (scene::LoadOptions::sections).
+  virtual const scene::SceneSection& scene_section() const = 0;
 
   // Adds the family's systems to their phases. Called once for every stage, whether or not the
   // scene has performers of the family (their systems then find nothing to do).

@@ -122,7 +122,7 @@ int run_concat(const ConcatOptions& o, std::ostream& out, std::ostream& err) {
   }
   fs::path wav;
   if (o.audio) {
-    auto scene = scene::load_scene(o.scene);
+    auto scene = scene::load_scene(o.scene, performance::scene_load_options());
     if (!scene) return fail(scene.error());
     stage::StageOptions stage_options;
     stage_options.asset_dir = o.assets;

@@ -27,7 +27,7 @@ namespace tutti::cli {
 namespace {
 
 int run_schedule_info(const InfoOptions& options, std::ostream& out, std::ostream& err) {
-  auto scene = scene::load_scene(options.file);
+  auto scene = scene::load_scene(options.file, performance::scene_load_options());
   if (!scene) {
     err << "error: " << scene.error().message << "\n";
     return kExitBadInput;

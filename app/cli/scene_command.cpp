@@ -9,6 +9,7 @@
 #include <tutti/music/load_score.hpp>
 #include <tutti/performance/draft_scene.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 namespace tutti::cli {
 namespace {
@@ -45,7 +46,9 @@ int run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
   if (!drafted) return fail(drafted.error());
   // What is written must load as `tutti render` loads it, parts included.
   const std::filesystem::path folder = std::filesystem::absolute(o.output).parent_path();
-  auto scene = scene::parse_scene(nlohmann::json::parse(drafted->document.dump()), o.output.filename().string(), folder);
+  auto scene = scene::parse_scene(nlohmann::json::parse(drafted->document.dump()),
+                                  o.output.filename().string(), folder,
+                                  performance::scene_load_options());
   if (!scene) return fail(Error{"internal: the drafted scene does not load: " +
                                     scene.error().message,
                                 ErrorCode::internal});

@@ -8,6 +8,7 @@
 // Systems: brass_motion (Phase::evaluate), ensemble_variation (Phase::express), brass_skeleton
 // (Phase::pose).
 
+#include <tutti/brass/brass_scene_section.hpp>
 #include <tutti/stage/family_plugin.hpp>
 
 namespace tutti::brass_family {
@@ -15,8 +16,12 @@ namespace tutti::brass_family {
 class BrassPlugin final : public stage::FamilyPlugin {
  public:
   std::string_view name() const override { return "brass"; }
+  const scene::SceneSection& scene_section() const override { return section_; }
   void add_systems(ecs::Schedule& schedule) const override;
   Status build(stage::StageBuilder& builder) const override;
+
+ private:
+  BrassSceneSection section_;
 };
 
 }  // namespace tutti::brass_family

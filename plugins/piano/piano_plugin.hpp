@@ -7,6 +7,7 @@
 // Systems: finger_motion (Phase::evaluate: Hand, Finger from the planned motion), piano_skeleton
 // (Phase::pose: keys, hands, the seated pianist).
 
+#include <tutti/piano/piano_scene_section.hpp>
 #include <tutti/stage/family_plugin.hpp>
 
 namespace tutti::piano_family {
@@ -14,11 +15,14 @@ namespace tutti::piano_family {
 class PianoPlugin final : public stage::FamilyPlugin {
  public:
   std::string_view name() const override { return "piano"; }
+  const scene::SceneSection& scene_section() const override { return section_; }
   void add_systems(ecs::Schedule& schedule) const override;
   Status build(stage::StageBuilder& builder) const override;
 
  private:
   Status build_pianist(stage::StageBuilder& builder, std::size_t index) const;
+
+  PianoSceneSection section_;
 };
 
 }  // namespace tutti::piano_family

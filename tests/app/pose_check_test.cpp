@@ -39,7 +39,7 @@ const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
 
 PoseReport check(const char* scene_name, const stage::StageOptions& stage_options = {},
                  double from_s = 0.0, double to_s = 12.0, int fps = 30) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / scene_name);
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / scene_name, performance::scene_load_options());
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return {};
   auto staged = build_stage(*scene, stage_options);
@@ -186,7 +186,7 @@ TEST(PoseCheck, TheEuphoniumPlaysItsButtons) {
 // before the first note: before the quintet's entrance every mouthpiece is away from its mouth,
 // a second into the music every one is at it.
 TEST(PoseCheck, InstrumentsComeDownBetweenPhrases) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "quintet.json");
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "quintet.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto staged = build_stage(*scene, {});
   ASSERT_TRUE(staged) << staged.error().message;
@@ -258,7 +258,7 @@ std::unique_ptr<stage::Stage> stage_piece(const std::string& relative,
   EXPECT_TRUE(drafted) << drafted.error().message;
   if (!drafted) return nullptr;
   auto scene = scene::parse_scene(nlohmann::json::parse(drafted->document.dump()), "draft.json",
-                                  file.parent_path());
+                                  file.parent_path(), performance::scene_load_options());
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return nullptr;
   auto staged = build_stage(*scene, stage_options);
@@ -559,7 +559,7 @@ TEST(PoseCheck, ATromboneStandStraightAheadPutsTheSlideThroughItsDesk) {
 }
 
 TEST(PoseCheck, AnEmptyRangeIsAnError) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "quartet.json");
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "quartet.json", performance::scene_load_options());
   ASSERT_TRUE(scene);
   auto staged = build_stage(*scene, {});
   ASSERT_TRUE(staged);

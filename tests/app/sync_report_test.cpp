@@ -36,7 +36,7 @@ struct Measured {
 
 Measured measure(const char* scene_name) {
   Measured m;
-  auto scene = scene::load_scene(scene_file(scene_name));
+  auto scene = scene::load_scene(scene_file(scene_name), performance::scene_load_options());
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return m;
   auto built = performance::build_stage(*scene, {});

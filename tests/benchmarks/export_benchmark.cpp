@@ -18,7 +18,7 @@ using namespace tutti;
 
 stage::Stage* staged(const char* scene_name) {
   auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" /
-                                 scene_name);
+                                 scene_name, performance::scene_load_options());
   if (!scene) return nullptr;
   auto stage = performance::build_stage(*scene, {});
   return stage ? stage->release() : nullptr;

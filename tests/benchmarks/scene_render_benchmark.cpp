@@ -37,7 +37,8 @@ struct Fixture {
 std::unique_ptr<Fixture> make_fixture(benchmark::State& state, const char* scene_name,
                                       VkSampleCountFlagBits samples) {
   auto scene = tutti::scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "content" /
-                                        "scenes" / scene_name);
+                                        "scenes" / scene_name,
+                                        tutti::performance::scene_load_options());
   if (!scene) {
     state.SkipWithError(scene.error().message.c_str());
     return nullptr;

@@ -9,6 +9,7 @@
 #include <tutti/editor/scene_edits.hpp>
 #include "editor_test_support.hpp"
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 namespace tutti::editor {
 namespace {
@@ -79,12 +80,12 @@ TEST(Document, SaveWritesWhatWasEditedAndKeepsABackup) {
   ASSERT_TRUE(doc->save());
   EXPECT_FALSE(doc->dirty());
   EXPECT_EQ(read_text(backup_path(file)), original);
-  auto reloaded = scene::load_scene(file);
+  auto reloaded = scene::load_scene(file, performance::scene_load_options());
   ASSERT_TRUE(reloaded) << reloaded.error().message;
   EXPECT_EQ(reloaded->performers[2].breaths.add_s, std::vector<double>{6.0});
   EXPECT_EQ(reloaded->performers, doc->scene().performers);
   // Everything else as it was (the same scene, field for field).
-  auto first = scene::load_scene(backup_path(file));
+  auto first = scene::load_scene(backup_path(file), performance::scene_load_options());
   ASSERT_TRUE(first) << first.error().message;
   reloaded->performers[2].breaths = {};
   EXPECT_EQ(reloaded->performers, first->performers);

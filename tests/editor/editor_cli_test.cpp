@@ -17,6 +17,7 @@
 #include <tutti/editor/session.hpp>
 #include "editor_test_support.hpp"
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 std::vector<std::uint8_t> decode_png_for_test(const std::vector<std::uint8_t>& png, int& width,
                                               int& height);
@@ -126,7 +127,7 @@ TEST(EditorCli, QuartetRoundTrip) {
   EXPECT_GT(std::filesystem::file_size(screenshot), 10000u);
 
   // Reopened: every edit is there.
-  auto saved = scene::load_scene(scene);
+  auto saved = scene::load_scene(scene, performance::scene_load_options());
   ASSERT_TRUE(saved) << saved.error().message;
   EXPECT_DOUBLE_EQ(*saved->performers[1].variation.sway_amount, 1.0);
   ASSERT_EQ(saved->performers[2].breaths.add_s.size(), 1u);
@@ -208,7 +209,7 @@ TEST(EditorCli, ASceneMadeFromAPieceLoadsEditsAndRenders) {
                                 "cut trumpet_2_front 8.0\nsave\nquit\n");
   output = run(editor_command(scene, script), code);
   ASSERT_EQ(code, 0) << output;
-  auto saved = scene::load_scene(scene);
+  auto saved = scene::load_scene(scene, performance::scene_load_options());
   ASSERT_TRUE(saved) << saved.error().message;
   EXPECT_DOUBLE_EQ(*saved->performers[1].variation.sway_amount, 1.0);
   EXPECT_EQ(saved->camera_at(9.0).name, "trumpet_2_front");
@@ -247,7 +248,7 @@ TEST(EditorCli, ABreathAddedThenDeletedRendersAsTheOriginal) {
   ASSERT_EQ(code, 0) << output;
   const auto after = still(scene, t, dir.path() / "after.png", "trombones");
   EXPECT_EQ(read_text(after), read_text(before)) << "the PNGs differ byte for byte";
-  auto reopened = scene::load_scene(scene);
+  auto reopened = scene::load_scene(scene, performance::scene_load_options());
   ASSERT_TRUE(reopened) << reopened.error().message;
   EXPECT_TRUE(reopened->performers[2].breaths.add_s.empty());
   EXPECT_TRUE(reopened->performers[2].breaths.remove_s.empty());
@@ -281,7 +282,7 @@ TEST(EditorCli, KilledWhileSavingThePreviousFileIsIntact) {
   ::waitpid(child, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "killed inside the save, not finished";
   EXPECT_EQ(read_text(scene), original) << "the scene is the previous version, byte for byte";
-  EXPECT_TRUE(scene::load_scene(scene)) << "and loads";
+  EXPECT_TRUE(scene::load_scene(scene, performance::scene_load_options())) << "and loads";
   EXPECT_NE(read_text(saving).find("\"sway_amount\": 0.1"), std::string::npos)
       << "the killed save had written the new version beside it";
 }

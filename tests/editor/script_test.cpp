@@ -11,6 +11,7 @@
 
 #include "editor_test_support.hpp"
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 namespace tutti::editor {
 namespace {
@@ -92,7 +93,7 @@ TEST(Script, EditsSaveAndQuit) {
   step = run_all(*finish, **session, host);
   ASSERT_TRUE(step) << step.error().message;
   EXPECT_EQ(*step, ScriptStep::quit);
-  auto saved = scene::load_scene(file);
+  auto saved = scene::load_scene(file, performance::scene_load_options());
   ASSERT_TRUE(saved) << saved.error().message;
   EXPECT_DOUBLE_EQ(*saved->performers[1].variation.sway_amount, 0.8);
   // The mark is stored at the boundary it names (the first note at or after 6 s), to the

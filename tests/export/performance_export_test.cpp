@@ -35,7 +35,7 @@ using nlohmann::json;
 const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
 
 std::unique_ptr<stage::Stage> build(const std::filesystem::path& scene_file) {
-  auto scene = scene::load_scene(scene_file);
+  auto scene = scene::load_scene(scene_file, performance::scene_load_options());
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return nullptr;
   auto staged = performance::build_stage(*scene, {});

@@ -20,7 +20,7 @@ namespace tutti::performance {
 namespace {
 
 scene::Scene parsed(const DraftedScene& drafted, const std::filesystem::path& dir) {
-  auto scene = scene::parse_scene(nlohmann::json::parse(drafted.document.dump()), "draft.json", dir);
+  auto scene = scene::parse_scene(nlohmann::json::parse(drafted.document.dump()), "draft.json", dir, performance::scene_load_options());
   EXPECT_TRUE(scene) << scene.error().message;
   return scene ? *scene : scene::Scene{};
 }

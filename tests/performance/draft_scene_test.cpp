@@ -11,6 +11,7 @@
 
 #include <tutti/music/load_score.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 #include "testdata.hpp"
 
 namespace tutti::performance {
@@ -34,7 +35,7 @@ Drafted draft_of(const std::string& relative) {
   if (!drafted) return d;
   d.draft = std::move(*drafted);
   auto parsed = scene::parse_scene(nlohmann::json::parse(d.draft.document.dump()), "draft.json",
-                                   file.parent_path());
+                                   file.parent_path(), performance::scene_load_options());
   EXPECT_TRUE(parsed) << parsed.error().message;
   if (!parsed) return d;
   d.scene = std::move(*parsed);

@@ -50,7 +50,7 @@ TEST(UserCharacter, ModelFilesPlayWithoutAMapping) {
   ASSERT_TRUE(make_fixtures(dir.path()));
   const std::filesystem::path file = dir.path() / "duo.json";
   std::ofstream(file) << duo("unreal_cm_t.glb", "rigify_a_vrm1.vrm").dump(1);
-  auto scene = scene::load_scene(file);
+  auto scene = scene::load_scene(file, performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto staged = build_stage(*scene, {});
   ASSERT_TRUE(staged) << staged.error().message;
@@ -87,7 +87,7 @@ double head_sway_m(const std::filesystem::path& dir, const std::string& characte
   }
   const std::filesystem::path file = dir / ("sway_" + std::to_string(character.size()) + ".json");
   std::ofstream(file) << scene.dump(1);
-  auto loaded = scene::load_scene(file);
+  auto loaded = scene::load_scene(file, performance::scene_load_options());
   EXPECT_TRUE(loaded) << loaded.error().message;
   if (!loaded) return 0.0;
   auto staged = build_stage(*loaded, {});
@@ -156,7 +156,7 @@ TEST(UserCharacter, EveryFixtureHoldsTrumpetAndTromboneByItsFingertipsAndPalms) 
   for (const std::string& file : files) {
     const std::filesystem::path scene_file = dir.path() / (file + ".json");
     std::ofstream(scene_file) << duo(file, file).dump(1);
-    auto scene = scene::load_scene(scene_file);
+    auto scene = scene::load_scene(scene_file, performance::scene_load_options());
     ASSERT_TRUE(scene) << scene.error().message;
     auto staged = build_stage(*scene, {});
     ASSERT_TRUE(staged) << file << ": " << staged.error().message;
@@ -194,7 +194,7 @@ TEST(UserCharacter, TheUsersJointsSitOnTheStandInsJoints) {
   for (const char* file : {"mixamo_ns_cm_a.glb", "rigify_t.glb"}) {
     const std::filesystem::path scene_file = dir.path() / "duo.json";
     std::ofstream(scene_file) << duo(file, file).dump(1);
-    auto scene = scene::load_scene(scene_file);
+    auto scene = scene::load_scene(scene_file, performance::scene_load_options());
     ASSERT_TRUE(scene) << scene.error().message;
     auto staged = build_stage(*scene, {});
     ASSERT_TRUE(staged) << staged.error().message;
@@ -236,7 +236,7 @@ TEST(UserCharacter, ARigsFaceMorphsFollowTheMouth) {
   test::ScratchDir dir;
   ASSERT_TRUE(make_fixtures(dir.path()));
   std::ofstream(dir.path() / "duo.json") << duo("mixamo_ns_cm_a.glb", "rigify_t.glb").dump(1);
-  auto scene = scene::load_scene(dir.path() / "duo.json");
+  auto scene = scene::load_scene(dir.path() / "duo.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto staged = build_stage(*scene, {});
   ASSERT_TRUE(staged) << staged.error().message;
@@ -269,7 +269,7 @@ TEST(UserCharacter, AMappingFileOnlyOverrides) {
     std::ofstream(dir.path() / "over.mapping.json")
         << nlohmann::json{{"model", "rigify_t.glb"}, {"kind", "character"}, {"nodes", nodes}}.dump();
     std::ofstream(dir.path() / "over.json") << duo("over.mapping.json", "over.mapping.json").dump(1);
-    auto scene = scene::load_scene(dir.path() / "over.json");
+    auto scene = scene::load_scene(dir.path() / "over.json", performance::scene_load_options());
     EXPECT_TRUE(scene) << scene.error().message;
     return build_stage(*scene, {});
   };
@@ -329,7 +329,7 @@ TEST(UserCharacter, APianistPlaysWithItsOwnHandsOnTheKeys) {
     if (!cast.hands.empty()) piano["pianist"]["hands"] = cast.hands;
     const std::filesystem::path scene_file = dir.path() / "piano.json";
     std::ofstream(scene_file) << piano.dump(1);
-    auto scene = scene::load_scene(scene_file);
+    auto scene = scene::load_scene(scene_file, performance::scene_load_options());
     ASSERT_TRUE(scene) << scene.error().message;
     auto staged = build_stage(*scene, {});
     ASSERT_TRUE(staged) << file << ": " << staged.error().message;
@@ -365,7 +365,7 @@ TEST(UserCharacter, NotAHumanoidAndModelHandsAreOneLineErrors) {
                              dir.path() / "horn_not_a_man.glb");
   const std::filesystem::path file = dir.path() / "duo.json";
   std::ofstream(file) << duo("horn_not_a_man.glb", "horn_not_a_man.glb").dump(1);
-  auto scene = scene::load_scene(file);
+  auto scene = scene::load_scene(file, performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto staged = build_stage(*scene, {});
   ASSERT_FALSE(staged);
@@ -379,7 +379,7 @@ TEST(UserCharacter, NotAHumanoidAndModelHandsAreOneLineErrors) {
   piano["music"] = (kSource / "content/music" / piano["music"].get<std::string>()).string();
   piano["pianist"]["hands"] = "horn_not_a_man.glb";
   std::ofstream(dir.path() / "piano.json") << piano.dump(1);
-  auto piano_scene = scene::load_scene(dir.path() / "piano.json");
+  auto piano_scene = scene::load_scene(dir.path() / "piano.json", performance::scene_load_options());
   ASSERT_TRUE(piano_scene) << piano_scene.error().message;
   auto refused = build_stage(*piano_scene, {});
   ASSERT_FALSE(refused);

@@ -14,6 +14,7 @@
 #include <tutti/render/offscreen_target.hpp>
 #include "render/render_test_support.hpp"
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 namespace tutti::runtime {
 namespace {
@@ -34,7 +35,7 @@ class ScenePlayerTest : public render::test::VulkanTest {
     auto target = render::OffscreenTarget::create(*context_, 160, 90, 2, VK_SAMPLE_COUNT_1_BIT);
     ASSERT_TRUE(target) << target.error().message;
     target_ = std::move(*target);
-    auto scene = scene::load_scene(std::string(TUTTI_SOURCE_DIR) + "/content/scenes/piano.json");
+    auto scene = scene::load_scene(std::string(TUTTI_SOURCE_DIR) + "/content/scenes/piano.json", performance::scene_load_options());
     ASSERT_TRUE(scene) << scene.error().message;
     ScenePlayerOptions options;
     options.sound = false;

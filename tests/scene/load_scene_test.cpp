@@ -11,6 +11,7 @@
 
 #include <tutti/music/load_score.hpp>
 #include <tutti/scene/asset_mapping.hpp>
+#include <tutti/performance/families.hpp>
 #include "scene_test_support.hpp"
 
 namespace tutti::scene {
@@ -23,7 +24,7 @@ using test::ScratchDir;
 // ---- the shipped scenes -------------------------------------------------------------------
 
 TEST(ShippedScenes, QuartetLoads) {
-  auto scene = load_scene(scenes_dir() / "quartet.json");
+  auto scene = load_scene(scenes_dir() / "quartet.json", performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->source, "quartet.json");
   ASSERT_EQ(scene->music.size(), 1u);
@@ -68,7 +69,7 @@ TEST(ShippedScenes, QuartetLoads) {
 }
 
 TEST(ShippedScenes, PianoLoads) {
-  auto scene = load_scene(scenes_dir() / "piano.json");
+  auto scene = load_scene(scenes_dir() / "piano.json", performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_TRUE(scene->performers.empty());
   ASSERT_EQ(scene->pianists.size(), 1u);
@@ -85,7 +86,7 @@ TEST(ShippedScenes, PianoLoads) {
 
 TEST(ShippedScenes, MusicLoadsAndHasEveryPart) {
   for (const char* name : {"quartet.json", "piano.json"}) {
-    auto scene = load_scene(scenes_dir() / name);
+    auto scene = load_scene(scenes_dir() / name, performance::scene_load_options());
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     auto scores = load_scene_music(*scene);
     ASSERT_TRUE(scores.ok()) << scores.error().message;
@@ -152,13 +153,13 @@ json valid_scene() {
 }
 
 std::string error_of(const json& document) {
-  auto scene = parse_scene(document, "s.json", scenes_dir());
+  auto scene = parse_scene(document, "s.json", scenes_dir(), performance::scene_load_options());
   if (scene.ok()) return "(loaded)";
   return scene.error().message;
 }
 
 TEST(SceneErrors, TheValidBaseLoads) {
-  auto scene = parse_scene(valid_scene(), "s.json", scenes_dir());
+  auto scene = parse_scene(valid_scene(), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->performers.size(), 2u);
   EXPECT_EQ(scene->shots.size(), 3u);
@@ -167,7 +168,7 @@ TEST(SceneErrors, TheValidBaseLoads) {
   EXPECT_EQ(scene->lights.fill.intensity, 0.6);
   json soft = valid_scene();
   soft["output"] = {{"shadows", "soft"}};
-  auto with_soft = parse_scene(soft, "s.json", scenes_dir());
+  auto with_soft = parse_scene(soft, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(with_soft.ok()) << with_soft.error().message;
   EXPECT_TRUE(with_soft->output.soft_shadows);
 }
@@ -299,7 +300,7 @@ TEST(SceneErrors, ShotsOutOfOrder) {
 TEST(SceneErrors, NoShotListMeansTheFirstCamera) {
   json doc = valid_scene();
   doc.erase("shots");
-  auto scene = parse_scene(doc, "s.json", scenes_dir());
+  auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   ASSERT_EQ(scene->shots.size(), 1u);
   EXPECT_EQ(scene->camera_at(100.0).name, "wide");
@@ -318,7 +319,8 @@ TEST(SceneErrors, CamerasAndPeople) {
   EXPECT_EQ(error_of(doc), "s.json: /cameras/0/target_m: must differ from position_m");
   doc = valid_scene();
   doc["performers"] = json::array();
-  EXPECT_EQ(error_of(doc), "s.json: /: a scene needs performers, a pianist, or both");
+  EXPECT_EQ(error_of(doc),
+            "s.json: /: a scene needs at least one player (performers, pianists, pianist)");
   doc = valid_scene();
   doc["performers"][1]["name"] = "T1";
   EXPECT_EQ(error_of(doc),
@@ -361,7 +363,7 @@ TEST(SceneErrors, Pianist) {
   doc["pianist"] = {{"parts", {"Trombone 2"}}, {"hands", 3}};
   EXPECT_EQ(error_of(doc), "s.json: /pianist/hands: expected a string");
   doc["pianist"] = {{"parts", {"Trombone 2"}}};
-  auto scene = parse_scene(doc, "s.json", scenes_dir());
+  auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->pianists.front().hand_size, "medium");  // hands.json's default_preset
 }
@@ -369,7 +371,7 @@ TEST(SceneErrors, Pianist) {
 TEST(SceneErrors, PartMissingFromTheMusic) {
   json doc = valid_scene();
   doc["performers"][1]["part"] = "Trombone 3";
-  auto scene = parse_scene(doc, "s.json", scenes_dir());
+  auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;  // parts are checked against the music later
   auto scores = load_scene_music(*scene);
   ASSERT_FALSE(scores.ok());
@@ -379,7 +381,7 @@ TEST(SceneErrors, PartMissingFromTheMusic) {
   // Names match case-insensitively, ids exactly.
   doc["performers"][1]["part"] = "trombone 1";
   doc["performers"][0]["part"] = "P2";
-  scene = parse_scene(doc, "s.json", scenes_dir());
+  scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok());
   EXPECT_TRUE(load_scene_music(*scene).ok());
 }
@@ -388,7 +390,7 @@ TEST(SceneErrors, UserAssetMappings) {
   const std::string example = (scenes_dir() / "examples/mixamo_character.mapping.json").string();
   json doc = valid_scene();
   doc["performers"][0]["character"] = example;
-  auto scene = parse_scene(doc, "s.json", scenes_dir());
+  auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->performers[0].character_mapping.filename(), "mixamo_character.mapping.json");
 
@@ -412,17 +414,17 @@ TEST(SceneErrors, UserAssetMappings) {
 
 TEST(SceneFileErrors, MissingFile) {
   const auto path = scenes_dir() / "no_such_scene.json";
-  auto scene = load_scene(path);
+  auto scene = load_scene(path, performance::scene_load_options());
   ASSERT_FALSE(scene.ok());
   EXPECT_EQ(scene.error().message, path.string() + ": no such file");
 }
 
 TEST(SceneFileErrors, EmptyFile) {
   ScratchDir dir;
-  auto scene = load_scene(dir.write("empty.json", ""));
+  auto scene = load_scene(dir.write("empty.json", ""), performance::scene_load_options());
   ASSERT_FALSE(scene.ok());
   EXPECT_EQ(scene.error().message, "empty.json: empty file");
-  scene = load_scene(dir.write("blank.json", " \n\t\n"));
+  scene = load_scene(dir.write("blank.json", " \n\t\n"), performance::scene_load_options());
   ASSERT_FALSE(scene.ok());
   EXPECT_EQ(scene.error().message, "blank.json: empty file");
 }
@@ -433,7 +435,7 @@ TEST(SceneFileErrors, TruncatedJson) {
   ScratchDir dir;
   const std::size_t cut = text.find("\"performers\"");
   ASSERT_NE(cut, std::string::npos);
-  auto scene = load_scene(dir.write("quartet.json", text.substr(0, cut + 14)));
+  auto scene = load_scene(dir.write("quartet.json", text.substr(0, cut + 14)), performance::scene_load_options());
   ASSERT_FALSE(scene.ok());
   EXPECT_EQ(scene.error().message,
             "quartet.json: not valid JSON (at line 5, column 17: syntax error while parsing value "
@@ -442,7 +444,7 @@ TEST(SceneFileErrors, TruncatedJson) {
 
 TEST(SceneFileErrors, NotAnObject) {
   ScratchDir dir;
-  auto scene = load_scene(dir.write("list.json", "[1, 2, 3]\n"));
+  auto scene = load_scene(dir.write("list.json", "[1, 2, 3]\n"), performance::scene_load_options());
   ASSERT_FALSE(scene.ok());
   EXPECT_EQ(scene.error().message, "list.json: /: expected an object");
 }
@@ -453,7 +455,7 @@ TEST(SceneFileErrors, RelativePathsResolveAgainstTheSceneFile) {
                              dir.path() / "piece.musicxml");
   json doc = valid_scene();
   doc["music"] = "piece.musicxml";
-  auto scene = load_scene(dir.write("here.json", doc.dump()));
+  auto scene = load_scene(dir.write("here.json", doc.dump()), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->music[0], dir.path() / "piece.musicxml");
   EXPECT_EQ(scene->source, "here.json");

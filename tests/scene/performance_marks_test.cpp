@@ -5,6 +5,7 @@
 #include <string>
 
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 #include "scene_test_support.hpp"
 
 namespace tutti::scene {
@@ -31,12 +32,12 @@ json scene_with_marks() {
 }
 
 std::string error_of(const json& document) {
-  auto scene = parse_scene(document, "s.json", scenes_dir());
+  auto scene = parse_scene(document, "s.json", scenes_dir(), performance::scene_load_options());
   return scene.ok() ? "(loaded)" : scene.error().message;
 }
 
 TEST(PerformanceMarks, AreReadAndSorted) {
-  auto scene = parse_scene(scene_with_marks(), "s.json", scenes_dir());
+  auto scene = parse_scene(scene_with_marks(), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   const Performer& t1 = scene->performers[0];
   EXPECT_EQ(t1.breaths.add_s, (std::vector<double>{3.25, 9.5}));
@@ -62,14 +63,14 @@ TEST(PerformanceMarks, AbsentMeansNone) {
   doc["performers"][0].erase("breaths");
   doc["performers"][0].erase("expressions");
   doc["pianist"].erase("pins");
-  auto scene = parse_scene(doc, "s.json", scenes_dir());
+  auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_FALSE(scene->cues_s.has_value()) << "no list: the automatic cue";
   EXPECT_TRUE(scene->performers[0].breaths.add_s.empty());
   EXPECT_TRUE(scene->performers[0].expressions.empty());
   EXPECT_TRUE(scene->pianists.front().pins.empty());
   doc["cues"] = json::array();
-  auto no_cues = parse_scene(doc, "s.json", scenes_dir());
+  auto no_cues = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(no_cues.ok());
   ASSERT_TRUE(no_cues->cues_s.has_value()) << "an empty list: no cue at all";
   EXPECT_TRUE(no_cues->cues_s->empty());

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 #include "scene_test_support.hpp"
 
 namespace tutti::scene {
@@ -24,12 +25,12 @@ json piano_scene(const json& pianist_extra) {
 }
 
 std::string error_of(const json& document) {
-  auto scene = parse_scene(document, "s.json", scenes_dir());
+  auto scene = parse_scene(document, "s.json", scenes_dir(), performance::scene_load_options());
   return scene.ok() ? "(loaded)" : scene.error().message;
 }
 
 TEST(PianistStyle, AbsentMeansTheWrittenSoundAndNoStyle) {
-  auto scene = parse_scene(piano_scene(json::object()), "s.json", scenes_dir());
+  auto scene = parse_scene(piano_scene(json::object()), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->pianists.front().style, "");
   EXPECT_FALSE(scene->pianists.front().sound_from_keys);
@@ -37,7 +38,7 @@ TEST(PianistStyle, AbsentMeansTheWrittenSoundAndNoStyle) {
 
 TEST(PianistStyle, AStyleAndTheKeysSound) {
   auto scene =
-      parse_scene(piano_scene({{"style", "beginner"}, {"sound", "keys"}}), "s.json", scenes_dir());
+      parse_scene(piano_scene({{"style", "beginner"}, {"sound", "keys"}}), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->pianists.front().style, "beginner");
   EXPECT_TRUE(scene->pianists.front().sound_from_keys);

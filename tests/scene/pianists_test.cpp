@@ -3,6 +3,7 @@
 // the loader refuses (both keys, a name twice, two pianos on one spot, one part for two players).
 // A pianist may share a brass player's name, as before: the export keeps their clips apart.
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 #include <gtest/gtest.h>
 
@@ -29,14 +30,14 @@ json duo() {
 }
 
 std::string error_of(const json& document) {
-  auto scene = parse_scene(document, "s.json", scenes_dir());
+  auto scene = parse_scene(document, "s.json", scenes_dir(), performance::scene_load_options());
   if (!scene.ok()) return scene.error().message;
   auto scores = load_scene_music(*scene);
   return scores.ok() ? "(loaded)" : scores.error().message;
 }
 
 TEST(Pianists, TheDuoLoadsWithTwoPianists) {
-  auto scene = load_scene(scenes_dir() / "piano_duo.json");
+  auto scene = load_scene(scenes_dir() / "piano_duo.json", performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   ASSERT_EQ(scene->pianists.size(), 2u);
   EXPECT_TRUE(scene->performers.empty());
@@ -50,7 +51,7 @@ TEST(Pianists, TheDuoLoadsWithTwoPianists) {
 }
 
 TEST(Pianists, NamesAndSeedsWhenNotGiven) {
-  auto scene = parse_scene(duo(), "s.json", scenes_dir());
+  auto scene = parse_scene(duo(), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->pianists[0].name, "pianist");
   EXPECT_EQ(scene->pianists[1].name, "pianist 2");
@@ -65,7 +66,7 @@ TEST(Pianists, NamesAndSeedsWhenNotGiven) {
 }
 
 TEST(Pianists, TheOlderSinglePianistStillLoads) {
-  auto scene = load_scene(scenes_dir() / "piano.json");
+  auto scene = load_scene(scenes_dir() / "piano.json", performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   ASSERT_EQ(scene->pianists.size(), 1u);
   EXPECT_EQ(scene->pianists[0].name, "pianist");
@@ -113,13 +114,13 @@ TEST(Pianists, Refused) {
 TEST(Pianists, EachPlaysAKeyboardInstrumentOfTheirOwn) {
   json doc = duo();
   doc["pianists"][1]["instrument"] = "organ";
-  auto scene = parse_scene(doc, "s.json", scenes_dir());
+  auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->pianists[0].instrument, "piano");
   EXPECT_EQ(scene->pianists[1].instrument, "organ");
   EXPECT_EQ(scene->pianists[1].name, "organist") << "an unnamed player is named for the instrument";
   doc["pianists"][0]["instrument"] = "organ";
-  scene = parse_scene(doc, "s.json", scenes_dir());
+  scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_EQ(scene->pianists[0].name, "organist");
   EXPECT_EQ(scene->pianists[1].name, "organist 2");

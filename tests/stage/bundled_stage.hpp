@@ -15,7 +15,7 @@ namespace tutti::stage::test {
 
 inline std::unique_ptr<Stage> stage_bundled_scene(const char* scene_name) {
   const std::filesystem::path scenes = std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes";
-  auto scene = scene::load_scene(scenes / scene_name);
+  auto scene = scene::load_scene(scenes / scene_name, performance::scene_load_options());
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return nullptr;
   auto stage = performance::build_stage(*scene, {});

@@ -37,7 +37,7 @@ TEST(Organist, PlaysABachChoralesBassOnThePedals) {
                                "parts": ["Soprano", "Alto", "Tenor", "Bass"]}],
                                "cameras": [{"name": "wide", "position_m": [1.5, 1.5, 2.5],
                                             "target_m": [0, 0.8, 0], "fov_deg": 45}]})";
-  auto scene = scene::load_scene(scene_path);
+  auto scene = scene::load_scene(scene_path, performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto built = performance::build_stage(*scene, {});
   ASSERT_TRUE(built) << built.error().message;
@@ -108,7 +108,7 @@ TEST(Organist, PlaysABachChoralesBassOnThePedals) {
 // the third is the pedals'. Each note of it is a pedal press, every other note the hands'.
 TEST(Organist, TheThirdStaffIsThePedals) {
   auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "scenes" /
-                                 "organ.json");
+                                 "organ.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto built = performance::build_stage(*scene, {});
   ASSERT_TRUE(built) << built.error().message;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Families plug into the stage through FamilyPlugin alone: a family of the test's own adds a
-// system, a performer and a model, and claims its notes; the stage's own frame systems (the
-// clock, the notes' sounding) run for every family.
+// Families plug into the stage through FamilyPlugin alone: a family of the test's own reads its
+// own section of the scene file, adds a system, a performer and a model, and claims its notes;
+// the stage's own frame systems (the clock, the notes' sounding) run for every family.
 #include <tutti/stage/stage_builder.hpp>
 
 #include <gtest/gtest.h>
@@ -9,6 +9,10 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
@@ -26,9 +30,40 @@ struct Swing {
   double angle_rad = 0.0;
 };
 
+// The test family's section of the scene file: "bells": {"ringer": NAME, "part": PART}.
+struct Bells {
+  std::string ringer;
+  std::string part;
+};
+
+class BellSection final : public scene::SceneSection {
+ public:
+  std::string_view family() const override { return "bells"; }
+  std::vector<std::string_view> keys() const override { return {"bells"}; }
+  Status read(const nlohmann::json& document, const scene::SectionContext& context,
+              scene::Scene& scene) const override {
+    if (!document.contains("bells")) return Status::success();
+    const nlohmann::json& object = document.at("bells");
+    if (auto ok = context.fields().json().check_keys(object, "/bells", {"ringer", "part"}); !ok) {
+      return ok;
+    }
+    Bells bells;
+    auto ringer = context.fields().string(object, "/bells", "ringer");
+    if (!ringer) return ringer.error();
+    auto part = context.fields().string(object, "/bells", "part");
+    if (!part) return part.error();
+    bells.ringer = *ringer;
+    bells.part = *part;
+    scene.part_claims.push_back({bells.part, 0, "/bells/part", "/bells", /*exclusive=*/true});
+    scene.sections.push_back({"bells", bells});
+    return Status::success();
+  }
+};
+
 class BellFamily final : public FamilyPlugin {
  public:
   std::string_view name() const override { return "bells"; }
+  const scene::SceneSection& scene_section() const override { return section_; }
   void add_systems(ecs::Schedule& schedule) const override {
     schedule.add(ecs::Phase::evaluate, "bell_swing",
                  [](ecs::World& world, const ecs::FrameTime& frame) {
@@ -36,8 +71,10 @@ class BellFamily final : public FamilyPlugin {
                  });
   }
   Status build(StageBuilder& builder) const override {
+    const Bells* bells = builder.scene().section<Bells>("bells");
+    const std::string ringer_name = bells != nullptr ? bells->ringer : "ringer";
     const ecs::Entity ringer =
-        builder.add_performer(name(), 0, components::Performer{"ringer", 5});
+        builder.add_performer(name(), 0, components::Performer{ringer_name, 5});
     builder.world().add<Swing>(ringer);
     auto bell = builder.generated_model("chair.glb");
     if (!bell) return bell.error();
@@ -48,13 +85,16 @@ class BellFamily final : public FamilyPlugin {
     for (std::size_t i = 0; i < builder.scores().front().notes.size(); ++i) {
       builder.world().get<components::Note>(builder.note_entity(0, i)).performer = ringer;
     }
-    builder.replanned("ringer");
+    builder.replanned(ringer_name);
     return Status::success();
   }
+
+ private:
+  BellSection section_;
 };
 
 TEST(StageBuilder, AFamilyOfItsOwnPlugsIn) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json");
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   const BellFamily bells;
   const std::array<const FamilyPlugin*, 1> families{&bells};
@@ -87,10 +127,111 @@ TEST(StageBuilder, AFamilyOfItsOwnPlugsIn) {
   EXPECT_GT(sounding, 0u);
 }
 
+// The piano demo with the bells ringing its part instead of the pianist.
+nlohmann::json bell_scene(const nlohmann::json& bells) {
+  std::ifstream in(kSource / "content" / "scenes" / "piano.json");
+  nlohmann::json document = nlohmann::json::parse(in);
+  document.erase("pianist");
+  document["bells"] = bells;
+  return document;
+}
+
+Result<scene::Scene> parse_with(const nlohmann::json& document,
+                                const std::vector<const scene::SceneSection*>& extra) {
+  scene::LoadOptions options = performance::scene_load_options();
+  options.sections.insert(options.sections.end(), extra.begin(), extra.end());
+  return scene::parse_scene(document, "s.json", kSource / "content" / "scenes", options);
+}
+
+// A family's players are written under its own key, read by its own section: the loader and
+// the Scene struct know nothing of bells.
+TEST(StageBuilder, AFamilyReadsItsOwnSectionOfTheSceneFile) {
+  const BellFamily bells;
+  auto scene = parse_with(bell_scene({{"ringer", "Quasimodo"}, {"part", "Piano"}}),
+                          {&bells.scene_section()});
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_TRUE(scene->pianists.empty());
+  EXPECT_TRUE(scene->performers.empty());
+  ASSERT_NE(scene->section<Bells>("bells"), nullptr);
+  EXPECT_EQ(scene->section<Bells>("bells")->ringer, "Quasimodo");
+  EXPECT_EQ(scene->section<int>("bells"), nullptr) << "read back only as the family's own type";
+  EXPECT_EQ(scene->section<Bells>("chimes"), nullptr);
+  ASSERT_EQ(scene->part_claims.size(), 1u);
+  EXPECT_EQ(scene->part_claims[0].pointer, "/bells/part");
+
+  const std::array<const FamilyPlugin*, 1> families{&bells};
+  auto built = build_stage(*scene, families, {});
+  ASSERT_TRUE(built) << built.error().message;
+  const ecs::Entity ringer = (*built)->find_performer("bells", 0);
+  ASSERT_FALSE(ringer.is_null());
+  EXPECT_EQ((*built)->world().get<components::Performer>(ringer).name, "Quasimodo");
+}
+
+// The registered keys are the known ones: a key no family registers is an error, with a
+// did-you-mean over the scene's keys and every family's; a family's errors name its keys.
+TEST(StageBuilder, ASectionNoFamilyRegistersIsAnError) {
+  const BellFamily bells;
+  const nlohmann::json document = bell_scene({{"ringer", "Quasimodo"}, {"part", "Piano"}});
+  auto unregistered = parse_with(document, {});
+  ASSERT_FALSE(unregistered);
+  EXPECT_EQ(unregistered.error().message, "s.json: /bells: unknown key");
+
+  nlohmann::json typo = document;
+  typo["bels"] = typo["bells"];
+  typo.erase("bells");
+  auto mistyped = parse_with(typo, {&bells.scene_section()});
+  ASSERT_FALSE(mistyped);
+  EXPECT_EQ(mistyped.error().message, "s.json: /bels: unknown key (did you mean \"bells\"?)");
+  typo["pianistes"] = nlohmann::json::array();
+  typo.erase("bels");
+  auto piano_typo = parse_with(typo, {&bells.scene_section()});
+  ASSERT_FALSE(piano_typo);
+  EXPECT_EQ(piano_typo.error().message,
+            "s.json: /pianistes: unknown key (did you mean \"pianists\"?)");
+
+  nlohmann::json no_part = nlohmann::json::object();
+  no_part["ringer"] = "Quasimodo";
+  auto missing = parse_with(bell_scene(no_part), {&bells.scene_section()});
+  ASSERT_FALSE(missing);
+  EXPECT_EQ(missing.error().message, "s.json: /bells/part: missing");
+
+  nlohmann::json nobody = document;
+  nobody.erase("bells");
+  auto empty = parse_with(nobody, {&bells.scene_section()});
+  ASSERT_FALSE(empty);
+  EXPECT_EQ(empty.error().message,
+            "s.json: /: a scene needs at least one player (performers, pianists, pianist, "
+            "bells)");
+}
+
+// The parts a family's players claim are checked against the music like everyone's: a part the
+// music lacks, and an exclusive part a pianist plays too.
+TEST(StageBuilder, AFamilysPartsAreCheckedAgainstTheMusic) {
+  const BellFamily bells;
+  auto scene = parse_with(bell_scene({{"ringer", "Quasimodo"}, {"part", "Carillon"}}),
+                          {&bells.scene_section()});
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto music = scene::load_scene_music(*scene);
+  ASSERT_FALSE(music);
+  EXPECT_EQ(music.error().message,
+            "s.json: /bells/part: no part \"Carillon\" in ode_to_joy.musicxml (parts: Piano)");
+
+  nlohmann::json shared = bell_scene({{"ringer", "Quasimodo"}, {"part", "Piano"}});
+  nlohmann::json pianist = nlohmann::json::object();
+  pianist["parts"] = nlohmann::json::array({"Piano"});
+  shared["pianists"] = nlohmann::json::array({pianist});
+  auto both = parse_with(shared, {&bells.scene_section()});
+  ASSERT_TRUE(both) << both.error().message;
+  auto clash = scene::load_scene_music(*both);
+  ASSERT_FALSE(clash);
+  EXPECT_EQ(clash.error().message,
+            "s.json: /bells/part: part \"Piano\" is already played by /pianists/0/parts/0");
+}
+
 // Every note of the music is an entity: the quartet's are claimed by their players, and what is
 // heard is read back from them.
 TEST(StageBuilder, EveryNoteIsAnEntityWithItsPerformer) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "quartet.json");
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "quartet.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto built = performance::build_stage(*scene);
   ASSERT_TRUE(built) << built.error().message;

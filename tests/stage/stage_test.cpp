@@ -59,7 +59,7 @@ const PlacedModel& placed(const Stage& stage, ecs::Entity instance) {
 }
 
 std::unique_ptr<Stage> build(const std::filesystem::path& scene_file) {
-  auto scene = scene::load_scene(scene_file);
+  auto scene = scene::load_scene(scene_file, performance::scene_load_options());
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return nullptr;
   auto stage = build_stage(*scene, {});
@@ -206,7 +206,7 @@ TEST(Stage, PressedKeysTurnTheirNodes) {
 // A finger pinned in the scene (the editor's pin) is the finger that plays the note, and the
 // fingers around it are re-planned to fit.
 TEST(Stage, APinnedFingerPlaysItsNote) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json");
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto plain = build_stage(*scene, {});
   ASSERT_TRUE(plain) << plain.error().message;
@@ -241,7 +241,7 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
 
 // "sound": "keys": the piano is heard as the simulated keys sound it, in the scene's style.
 TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json");
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto written = build_stage(*scene, {});
   ASSERT_TRUE(written) << written.error().message;
@@ -362,7 +362,7 @@ TEST(Stage, AUsersInstrumentThroughAMappingMovesLikeTheGeneratedOne) {
     "model": "user_trumpet.glb", "kind": "trumpet",
     "nodes": {"valve_1": "Piston A", "valve_2": "User:valve_2", "valve_3": "User:valve_3",
               "mouthpiece": "User:mouthpiece"}})";
-  auto scene = scene::load_scene(dir / "user.json");
+  auto scene = scene::load_scene(dir / "user.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto broken = build_stage(*scene, {});
   ASSERT_FALSE(broken);

@@ -95,7 +95,7 @@ TEST(TwoPianists, EachPlaysTheirOwnPartAtTheirOwnPiano) {
 // down is on that pedal's top where a toe presses it, and the pedal is down.
 TEST(TwoPianists, APianistAndAnOrganistUsingThePedals) {
   auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" /
-                                 "keyboards" / "piano_and_organ.json");
+                                 "keyboards" / "piano_and_organ.json", performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto built = performance::build_stage(*scene, {});
   ASSERT_TRUE(built) << built.error().message;
@@ -204,7 +204,7 @@ TEST(TwoPianists, EachKeyboardSoundsWithItsOwnTouch) {
   for (const auto& [instrument, velocity] : {std::pair<std::string, int>{"organ", 100},
                                              {"harpsichord", 80}}) {
     auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" /
-                                   "keyboards" / "piano_and_organ.json");
+                                   "keyboards" / "piano_and_organ.json", performance::scene_load_options());
     ASSERT_TRUE(scene) << scene.error().message;
     scene->pianists[1].instrument = instrument;
     for (scene::Pianist& p : scene->pianists) p.sound_from_keys = true;

@@ -18,6 +18,7 @@
 #include <tutti/render/vulkan_context.hpp>
 #include <tutti/runtime/scene_player.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/performance/families.hpp>
 
 using namespace tutti;
 
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
 
   // 2. The scene, staged once (music, models, every performer's plan) with a renderer for
   //    the target. sound = false: the game plays (or ignores) the music; tutti only shows it.
-  auto scene = scene::load_scene(argv[1]);
+  auto scene = scene::load_scene(argv[1], performance::scene_load_options());
   if (!scene) {
     std::fprintf(stderr, "error: %s\n", scene.error().message.c_str());
     return 2;

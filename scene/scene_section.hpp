@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// A family's section of a scene file (Bevy's plugins own their settings the same way): the
+// top-level keys an instrument family reads, e.g. "performers" for brass players or "pianists"
+// for keyboard players. The loader (load_scene.hpp) knows only the scene's own keys (music,
+// cameras, shots, lights, output, cues, ...); it hands the document to each SceneSection in
+// LoadOptions::sections, and a key no section registers is an error with a did-you-mean over
+// all of them. A family stores what it read in Scene::sections (its own struct) and says which
+// score parts its players play (Scene::part_claims), so that the parts are checked against the
+// music before anything is planned.
+//
+// SectionContext gives a section the readers every family shares: typed fields with one-line
+// "FILE: /json/path: reason" errors, the music file index, the expression controls, asset
+// mapping files, the content folder.
+
+#include <cstddef>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <tutti/core/result.hpp>
+#include <tutti/scene/asset_mapping.hpp>
+#include <tutti/scene/json_fields.hpp>
+#include <tutti/scene/scene.hpp>
+
+namespace tutti::scene {
+
+class SectionContext {
+ public:
+  SectionContext(const FieldReader& fields, std::filesystem::path base_dir,
+                 std::filesystem::path content_dir)
+      : fields_(fields), base_dir_(std::move(base_dir)), content_dir_(std::move(content_dir)) {}
+
+  const FieldReader& fields() const { return fields_; }
+  Error error(std::string_view path, std::string_view reason) const {
+    return fields_.error(path, reason);
+  }
+  // Where relative paths in the scene resolve, and the content the scene is checked against.
+  const std::filesystem::path& base_dir() const { return base_dir_; }
+  const std::filesystem::path& content_dir() const { return content_dir_; }
+
+  // object's "music_file": an index into scene.music (default 0).
+  Result<std::size_t> music_index(const nlohmann::json& object, std::string_view path,
+                                  const Scene& scene) const;
+  // A performer's "variation" object: the keys of kVariationFields, each in [0, 1].
+  Status variation(const nlohmann::json& object, std::string_view path, Variation& out) const;
+  // object[key]: an existing file, resolved against base_dir(): an asset mapping file of kind
+  // `expected`, or (for characters and hands) the model file itself. Absent: out unchanged.
+  Status mapping(const nlohmann::json& object, std::string_view path, const char* key,
+                 AssetKind expected, std::filesystem::path& out) const;
+  // A JSON file of the content folder (e.g. "piano/hands.json"), with one-line errors.
+  Result<nlohmann::json> content_json(const std::filesystem::path& relative) const;
+
+ private:
+  const FieldReader& fields_;
+  std::filesystem::path base_dir_;
+  std::filesystem::path content_dir_;
+};
+
+class SceneSection {
+ public:
+  virtual ~SceneSection() = default;
+
+  // The family it belongs to ("brass", "piano"), for messages.
+  virtual std::string_view family() const = 0;
+  // The top-level keys it reads; unique across the sections a program registers.
+  virtual std::vector<std::string_view> keys() const = 0;
+  // Reads its keys from `document` (called whether or not they are present; the scene's own
+  // keys, music and seed, are already in `scene`), adds its players to `scene` and their parts
+  // to scene.part_claims. Errors name the file and the JSON path.
+  virtual Status read(const nlohmann::json& document, const SectionContext& context,
+                      Scene& scene) const = 0;
+};
+
+}  // namespace tutti::scene
