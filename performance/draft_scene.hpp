@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// A scene drafted from a piece of music alone (`tutti scene new`, `tutti render PIECE.mid`): the
-// piano parts go to the pianist, each brass part gets as many players as it has voices, on the
-// instrument its name or General MIDI program names; the players sit in an arc by section
-// (trumpets, horns, trombones, euphoniums, tubas from the audience's left), beside the piano when
-// there is one; cameras frame the whole group, each section and each player, and the shot list
-// cuts, every few bars, to whoever plays the most notes there. Parts tutti cannot play are
-// left out with a note naming them.
+// A scene drafted from a piece of music alone (`tutti scene new`, `tutti render PIECE.mid`): each
+// family in turn (default_families(): brass, then keyboards) takes the parts it plays, by name
+// or General MIDI program, and drafts its players, their cameras and camera groups
+// (stage/family_draft.hpp); the families sit side by side in their seating order (the
+// keyboards at the origin, the brass arc to their right); a wide camera frames everyone, and the
+// shot list cuts, every few bars, to the group playing the most notes there. Parts no family
+// plays are left out with a note naming them.
 //
 // The result is a scene document (scene/README.md), so what `tutti scene new` writes and what
 // `tutti render PIECE.mid` plays are the same scene. Deterministic: the same score gives the same
@@ -14,12 +14,14 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <tutti/core/result.hpp>
 #include <tutti/music/score.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/stage/family_plugin.hpp>
 
 namespace tutti::performance {
 
@@ -33,6 +35,10 @@ struct DraftedScene {
 // absolute). Error when no part is one tutti plays, naming the parts.
 Result<DraftedScene> draft_scene(const music::Score& score,
                                  const std::filesystem::path& music_reference);
+// The same with these families, in this order.
+Result<DraftedScene> draft_scene(const music::Score& score,
+                                 const std::filesystem::path& music_reference,
+                                 std::span<const stage::FamilyPlugin* const> families);
 
 // The document as the hand-written scenes look: an object per line where it fits in 100
 // characters, number lists on one line.

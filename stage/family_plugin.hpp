@@ -3,14 +3,19 @@
 // An instrument family as a plugin (Bevy's Plugin): everything about one family in one place.
 // A family reads its section of the scene file (scene_section.hpp), adds its systems to the
 // schedule's phases and, for a scene, plans its performers, spawns their entities and binds
-// their models (StageBuilder). The stage knows families only through this interface; the list of
-// families a program uses is a small file of its own (tutti::performance's default_families()).
+// their models (StageBuilder), and drafts its players for `tutti scene new` (family_draft.hpp).
+// The stage knows families only through this interface; the list of families a program uses is
+// a small file of its own (tutti::performance's default_families()).
 
+#include <span>
 #include <string_view>
+#include <vector>
 
 #include <tutti/core/result.hpp>
 #include <tutti/ecs/schedule.hpp>
+#include <tutti/music/score.hpp>
 #include <tutti/scene/scene_section.hpp>
+#include <tutti/stage/family_draft.hpp>
 
 namespace tutti::stage {
 
@@ -26,6 +31,19 @@ class FamilyPlugin {
   // Its section of the scene file: the top-level keys its players are written under. The
   // loader hands the document to it (scene::LoadOptions::sections).
   virtual const scene::SceneSection& scene_section() const = 0;
+
+  // `tutti scene new` (family_draft.hpp). What the family plays, for the note on parts nobody
+  // plays: "trumpet, horn, trombone, euphonium, tuba".
+  virtual std::string_view draft_plays() const = 0;
+  // Its place from the audience's left among the families with players (lower = further left).
+  virtual int draft_seating_order() const = 0;
+  // The parts among `available` (each has notes; no family listed earlier took it) its players
+  // would play, in score order.
+  virtual Result<std::vector<int>> draft_recognise(const music::Score& score,
+                                                   std::span<const int> available) const = 0;
+  // Its players for `parts` (what draft_recognise gave, not empty), drafted at `place`.
+  virtual Result<FamilyDraft> draft(const music::Score& score, std::span<const int> parts,
+                                    const DraftPlace& place) const = 0;
 
   // Adds the family's systems to their phases. Called once for every stage, whether or not the
   // scene has performers of the family (their systems then find nothing to do).

@@ -5,6 +5,8 @@
 // entity) and by ensemble variation (BodyMotion), and their instrument, body, chair and stand
 // posed by brass_skeleton_system (pose_brass.hpp).
 //
+// Drafting for `tutti scene new`: brass_draft.cpp.
+//
 // Systems: brass_motion (Phase::evaluate), ensemble_variation (Phase::express), brass_skeleton
 // (Phase::pose).
 
@@ -17,6 +19,14 @@ class BrassPlugin final : public stage::FamilyPlugin {
  public:
   std::string_view name() const override { return "brass"; }
   const scene::SceneSection& scene_section() const override { return section_; }
+  std::string_view draft_plays() const override {
+    return "trumpet, horn, trombone, euphonium, tuba";
+  }
+  int draft_seating_order() const override { return 10; }  // to the keyboards' right
+  Result<std::vector<int>> draft_recognise(const music::Score& score,
+                                           std::span<const int> available) const override;
+  Result<stage::FamilyDraft> draft(const music::Score& score, std::span<const int> parts,
+                                   const stage::DraftPlace& place) const override;
   void add_systems(ecs::Schedule& schedule) const override;
   Status build(stage::StageBuilder& builder) const override;
 

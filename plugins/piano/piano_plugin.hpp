@@ -4,6 +4,8 @@
 // driven by the finger-motion system, and the piano, hand models, bench and performer rig posed
 // by piano_skeleton_system (pose_piano.hpp).
 //
+// Drafting for `tutti scene new`: piano_draft.cpp.
+//
 // Systems: finger_motion (Phase::evaluate: Hand, Finger from the planned motion), piano_skeleton
 // (Phase::pose: keys, hands, the seated pianist).
 
@@ -16,6 +18,12 @@ class PianoPlugin final : public stage::FamilyPlugin {
  public:
   std::string_view name() const override { return "piano"; }
   const scene::SceneSection& scene_section() const override { return section_; }
+  std::string_view draft_plays() const override { return "keyboards"; }
+  int draft_seating_order() const override { return 0; }  // the piano at the stage's origin
+  Result<std::vector<int>> draft_recognise(const music::Score& score,
+                                           std::span<const int> available) const override;
+  Result<stage::FamilyDraft> draft(const music::Score& score, std::span<const int> parts,
+                                   const stage::DraftPlace& place) const override;
   void add_systems(ecs::Schedule& schedule) const override;
   Status build(stage::StageBuilder& builder) const override;
 

@@ -17,8 +17,11 @@
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/components/transform.hpp>
+#include <tutti/music/load_score.hpp>
+#include <tutti/performance/draft_scene.hpp>
 #include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include "testdata.hpp"
 
 namespace tutti::stage {
 namespace {
@@ -64,6 +67,27 @@ class BellFamily final : public FamilyPlugin {
  public:
   std::string_view name() const override { return "bells"; }
   const scene::SceneSection& scene_section() const override { return section_; }
+  std::string_view draft_plays() const override { return "bells"; }
+  int draft_seating_order() const override { return 5; }  // between the keyboards and brass
+  // A bell ringer takes every part left, the first one's name for the ringer's.
+  Result<std::vector<int>> draft_recognise(const music::Score&,
+                                           std::span<const int> available) const override {
+    return std::vector<int>(available.begin(), available.end());
+  }
+  Result<FamilyDraft> draft(const music::Score& score, std::span<const int> parts,
+                            const DraftPlace& place) const override {
+    FamilyDraft draft;
+    draft.summary = "a bell ringer";
+    draft.section.emplace_back(
+        "bells", nlohmann::ordered_json{{"ringer", "Quasimodo"},
+                                        {"part", draft_part_reference(score, parts.front())}});
+    draft.cameras.push_back(draft_camera("bells", place.origin_x, 1.5, 3.0, place.origin_x, 1.0,
+                                         0.0, 40.0));
+    draft.groups.push_back({"bells", {parts.begin(), parts.end()}, {"bells"}});
+    draft.left_m = place.origin_x - 0.5;
+    draft.right_m = place.origin_x + 0.5;
+    return draft;
+  }
   void add_systems(ecs::Schedule& schedule) const override {
     schedule.add(ecs::Phase::evaluate, "bell_swing",
                  [](ecs::World& world, const ecs::FrameTime& frame) {
@@ -226,6 +250,53 @@ TEST(StageBuilder, AFamilysPartsAreCheckedAgainstTheMusic) {
   ASSERT_FALSE(clash);
   EXPECT_EQ(clash.error().message,
             "s.json: /bells/part: part \"Piano\" is already played by /pianists/0/parts/0");
+}
+
+// `scene new` asks each family in turn for the parts it plays: a family listed after brass and
+// the keyboards takes what they leave (a chorale's voices and timpani beside its trumpets), sits
+// in its seating order (left of the brass), and its section, cameras and groups are in the
+// drafted scene, which loads with its section registered.
+TEST(StageBuilder, AFamilyDraftsItsPlayersForSceneNew) {
+  TUTTI_REQUIRE_TESTDATA();
+  const std::filesystem::path file = test::testdata("musicxml/music21/bwv29.8.mxl");
+  auto score = music::load_score(file);
+  ASSERT_TRUE(score) << score.error().message;
+  auto alone = performance::draft_scene(*score, file);
+  ASSERT_TRUE(alone) << alone.error().message;
+  ASSERT_EQ(alone->notes.size(), 1u) << "the voices and timpani are not played";
+
+  const BellFamily bells;
+  std::vector<const FamilyPlugin*> families(performance::default_families().begin(),
+                                            performance::default_families().end());
+  families.push_back(&bells);
+  auto drafted = performance::draft_scene(*score, file, families);
+  ASSERT_TRUE(drafted) << drafted.error().message;
+  EXPECT_TRUE(drafted->notes.empty()) << drafted->notes.front();
+  const nlohmann::ordered_json& document = drafted->document;
+  EXPECT_EQ(document["description"].get<std::string>(),
+            "Made by tutti scene new from bwv29.8.mxl: 3 trumpets and a bell ringer.");
+  ASSERT_TRUE(document.contains("bells"));
+  EXPECT_EQ(document["bells"]["part"], "Soprano");
+  // The bells sit left of the trumpets' arc, 1.4 m clear of it.
+  double bells_x = 0.0;
+  for (const auto& camera : document["cameras"]) {
+    if (camera["name"] == "bells") bells_x = camera["position_m"][0].get<double>();
+  }
+  double leftmost_trumpet = 1e9;
+  for (const auto& performer : document["performers"]) {
+    leftmost_trumpet = std::min(leftmost_trumpet, performer["position_m"][0].get<double>());
+  }
+  EXPECT_NEAR(leftmost_trumpet - (bells_x + 0.5), 1.4, 1e-9);
+  bool cut_to_bells = false;
+  for (const auto& shot : document["shots"]) cut_to_bells = cut_to_bells || shot["camera"] == "bells";
+  EXPECT_TRUE(cut_to_bells) << "the voices are the bells' group: the shots cut to them";
+
+  auto scene = parse_with(nlohmann::json::parse(document.dump()), {&bells.scene_section()});
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_EQ(scene->performers.size(), 3u);
+  ASSERT_NE(scene->section<Bells>("bells"), nullptr);
+  const Status parts = scene::check_scene_parts(*scene, {&*score, 1});
+  EXPECT_TRUE(parts) << parts.error().message;
 }
 
 // Every note of the music is an entity: the quartet's are claimed by their players, and what is
