@@ -16,14 +16,33 @@ include(CMakePackageConfigHelpers)
 #    tutti::export, the systems): no Vulkan, no window, no sound device;
 #  - tuttiSoundTargets: FluidSynth sound and live MIDI input (tutti::audio, tutti::live);
 #  - tuttiRenderTargets: the Vulkan renderer, windows, the runtime and tutti::tutti.
+#
+# The systems' and the families' libraries are found in their folders (systems/, plugins/), so a
+# new family's libraries are exported with nothing to add here.
+function(_tutti_libraries_under dir out)
+  set(found)
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  foreach(target IN LISTS targets)
+    get_target_property(type ${target} TYPE)
+    if(target MATCHES "^tutti_" AND type MATCHES "_LIBRARY$")
+      list(APPEND found ${target})
+    endif()
+  endforeach()
+  get_property(subdirs DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(subdir IN LISTS subdirs)
+    _tutti_libraries_under(${subdir} below)
+    list(APPEND found ${below})
+  endforeach()
+  set(${out} ${found} PARENT_SCOPE)
+endfunction()
+_tutti_libraries_under(${PROJECT_SOURCE_DIR}/systems _tutti_system_libraries)
+_tutti_libraries_under(${PROJECT_SOURCE_DIR}/plugins _tutti_family_libraries)
 set(TUTTI_PERFORMANCE_TARGETS
   tutti_core tutti_ecs tutti_components tutti_music tutti_content tutti_image tutti_model
   tutti_humanoid
-  tutti_scene tutti_stage tutti_piano_plugin tutti_brass_plugin tutti_performance tutti_c
+  tutti_scene tutti_stage tutti_performance tutti_c
   tutti_export
-  tutti_piano_model tutti_fingering_planner tutti_brass_planner tutti_spline_motion
-  tutti_piano_performance tutti_finger_motion tutti_key_action tutti_note_sounding
-  tutti_brass_model tutti_brass_motion tutti_ensemble_variation tutti_audio_sync)
+  ${_tutti_system_libraries} ${_tutti_family_libraries})
 set(TUTTI_SOUND_TARGETS tutti_audio tutti_live)
 set(TUTTI_RENDER_TARGETS
   tutti_render tutti_render_window tutti_shader_compiler tutti_runtime tutti_runtime_imgui)

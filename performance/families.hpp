@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The instrument families tutti stages, in order (brass players, then the pianist): the one place
-// that lists them. A program with families of its own passes its list to stage::build_stage.
+// The instrument families tutti stages, in the order of plugins/CMakeLists.txt's list of
+// families (one line each; default_families() is generated from it). A program with families
+// of its own passes its list to stage::build_stage and performance::draft_scene.
 
 #include <filesystem>
 #include <memory>
