@@ -3,7 +3,8 @@
 // An instrument family as a plugin (Bevy's Plugin): everything about one family in one place.
 // A family reads its section of the scene file (scene_section.hpp), adds its systems to the
 // schedule's phases and, for a scene, plans its performers, spawns their entities and binds
-// their models (StageBuilder), and drafts its players for `tutti scene new` (family_draft.hpp).
+// their models (StageBuilder), drafts its players for `tutti scene new` (family_draft.hpp) and
+// measures their poses for `tutti check-pose` (pose_checker.hpp).
 // The stage knows families only through this interface; the list of families a program uses is
 // a small file of its own (tutti::performance's default_families()).
 
@@ -19,6 +20,7 @@
 
 namespace tutti::stage {
 
+class PoseChecker;
 class StageBuilder;
 
 class FamilyPlugin {
@@ -48,6 +50,15 @@ class FamilyPlugin {
   // Adds the family's systems to their phases. Called once for every stage, whether or not the
   // scene has performers of the family (their systems then find nothing to do).
   virtual void add_systems(ecs::Schedule& schedule) const = 0;
+
+  // `tutti check-pose` (pose_checker.hpp): measures `performer`, one of its performers, in the
+  // frame just posed; after the last frame, finish_pose_check adds figures over the whole range.
+  // Families without measures of their own take none.
+  virtual void check_pose(PoseChecker& checker, ecs::Entity performer) const {
+    (void)checker;
+    (void)performer;
+  }
+  virtual void finish_pose_check(PoseChecker& checker) const { (void)checker; }
 
   // Loads the family's content, plans the scene's performers of the family (or shares the plans
   // of builder.previous() whose inputs did not change), spawns their entities and places and

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <tutti/core/result.hpp>
+#include <tutti/stage/pose_checker.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::cli {
@@ -25,37 +26,12 @@ struct PoseCheckOptions {
   std::filesystem::path content_dir;
 };
 
-// One figure over the frames it applies to: a distance (mm) or a share (%).
-struct PoseMeasure {
-  std::string name;     // "Trumpet 1: pressing fingertip to its button top"
-  std::string unit;     // "mm", "%"
-  std::vector<double> samples;  // one per frame (and finger, hand, ...) it applied to
-  double limit = -1.0;          // the most allowed for `worst` (p95 if by_p95), < 0: no limit
-  bool by_p95 = false;
-  bool two_sided = false;  // the limit bounds |sample| (a signed distance: above or into)
-  // Where the worst sample (the largest, or the largest |x| when two-sided) was: its music time
-  // and what it was of ("right index on key 64"), so a figure over its limit can be looked at.
-  double worst_at_s = 0.0;
-  std::string worst_of;
+// The measures and the report: stage/pose_checker.hpp.
+using PoseMeasure = stage::PoseMeasure;
+using PoseReport = stage::PoseReport;
 
-  // Adds a sample taken at music time `t_s`; `of` names what it measured (may be empty).
-  void add(double value, double t_s, const std::string& of = {});
-
-  double percentile(double p) const;  // of the samples; 0 when there are none
-  double worst() const { return percentile(1.0); }
-  bool within_limit() const;
-
-  std::size_t worst_index_ = 0;  // of samples; kept by add()
-};
-
-struct PoseReport {
-  std::vector<PoseMeasure> measures;
-  std::size_t frames = 0;
-  const PoseMeasure* find(const std::string& name) const;
-};
-
-// Poses `stage` at every frame of the options' range and measures, for every performer the
-// stage has:
+// Poses `stage` at every frame of the options' range and measures every performer the stage has
+// by their family's measures (FamilyPlugin::check_pose; the default families'):
 //  - brass, valves: each pressing fingertip (the finger the hold puts on that valve) to its
 //    button's top while the valve is down (mm; limit p95 ≤ 10);
 //  - brass: each palm the hold puts on a grip to it (the trumpet's left palm round the valve

@@ -5,7 +5,8 @@
 // entity) and by ensemble variation (BodyMotion), and their instrument, body, chair and stand
 // posed by brass_skeleton_system (pose_brass.hpp).
 //
-// Drafting for `tutti scene new`: brass_draft.cpp.
+// Drafting for `tutti scene new`: brass_draft.cpp; its `tutti check-pose` measures:
+// check_pose_brass.cpp.
 //
 // Systems: brass_motion (Phase::evaluate), ensemble_variation (Phase::express), brass_skeleton
 // (Phase::pose).
@@ -27,6 +28,7 @@ class BrassPlugin final : public stage::FamilyPlugin {
                                            std::span<const int> available) const override;
   Result<stage::FamilyDraft> draft(const music::Score& score, std::span<const int> parts,
                                    const stage::DraftPlace& place) const override;
+  void check_pose(stage::PoseChecker& checker, ecs::Entity performer) const override;
   void add_systems(ecs::Schedule& schedule) const override;
   Status build(stage::StageBuilder& builder) const override;
 

@@ -4,7 +4,8 @@
 // driven by the finger-motion system, and the piano, hand models, bench and performer rig posed
 // by piano_skeleton_system (pose_piano.hpp).
 //
-// Drafting for `tutti scene new`: piano_draft.cpp.
+// Drafting for `tutti scene new`: piano_draft.cpp; its `tutti check-pose` measures:
+// check_pose_piano.cpp.
 //
 // Systems: finger_motion (Phase::evaluate: Hand, Finger from the planned motion), piano_skeleton
 // (Phase::pose: keys, hands, the seated pianist).
@@ -24,6 +25,8 @@ class PianoPlugin final : public stage::FamilyPlugin {
                                            std::span<const int> available) const override;
   Result<stage::FamilyDraft> draft(const music::Score& score, std::span<const int> parts,
                                    const stage::DraftPlace& place) const override;
+  void check_pose(stage::PoseChecker& checker, ecs::Entity performer) const override;
+  void finish_pose_check(stage::PoseChecker& checker) const override;
   void add_systems(ecs::Schedule& schedule) const override;
   Status build(stage::StageBuilder& builder) const override;
 
