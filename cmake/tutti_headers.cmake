@@ -39,3 +39,17 @@ function(tutti_headers target)
     $<BUILD_INTERFACE:${TUTTI_LIBRARY_INCLUDE_ROOTS}/${folder}>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 endfunction()
+
+# tutti_add_folders(): add_subdirectory for every folder of the current source folder that has a
+# CMakeLists.txt, in name order, so that a new family's folders (its systems, its tests) need no
+# line in a list.
+function(tutti_add_folders)
+  file(GLOB folders LIST_DIRECTORIES true RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}
+       CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*)
+  list(SORT folders)
+  foreach(folder IN LISTS folders)
+    if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${folder}/CMakeLists.txt)
+      add_subdirectory(${folder})
+    endif()
+  endforeach()
+endfunction()

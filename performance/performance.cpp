@@ -11,7 +11,6 @@
 #include <tutti/components/breath_schedule.hpp>
 #include <tutti/components/finger.hpp>
 #include <tutti/components/hand.hpp>
-#include <tutti/components/instrument.hpp>
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/components/slide.hpp>
@@ -220,14 +219,12 @@ Status Performance::init(const Options& options) {
     index_of[entity.bits()] = static_cast<std::int32_t>(p);
     PerformerInfo info;
     info.name = clips[p];
-    if (const auto* seat = world.try_get<stage::Seat>(entity)) info.family = seat->family;
-    info.instrument = info.family == "piano" ? "piano" : "";
+    if (const auto* seat = world.try_get<stage::Seat>(entity)) {
+      info.family = seat->family;
+      info.instrument = seat->instrument;
+    }
     performers_.push_back(std::move(info));
   }
-  world.view<const components::Instrument>().each([&](const components::Instrument& instrument) {
-    const auto it = index_of.find(instrument.performer.bits());
-    if (it != index_of.end()) performers_[static_cast<std::size_t>(it->second)].instrument = instrument.id;
-  });
 
   const std::vector<InstanceLabel> labels = label_instances(*stage_);
   for (std::size_t i = 0; i < stage_->instances().size(); ++i) {

@@ -71,7 +71,7 @@ struct ModelInfo {
 struct PerformerInfo {
   std::string name;
   std::string family;      // "brass", "piano"
-  std::string instrument;  // "trumpet_bb", "trombone_tenor", ..., "piano"
+  std::string instrument;  // "trumpet_bb", "trombone_tenor", ..., "piano", "organ"
   std::vector<std::size_t> models;  // indices into models()
 };
 

@@ -49,8 +49,8 @@ int find_part(const music::Score& score, std::string_view wanted);
 // Loads every music file of the scene (tutti::music::load_score) and checks that every part a
 // player claims (Scene::part_claims) exists in its music file and that no exclusive part has two
 // players, e.g.
-// "quartet.json: /performers/1/part: no part "Trumpet 3" in quartet.musicxml (parts: Trumpet in
-// B♭ 1, ...)". Returns the scores in Scene::music order.
+// "quintet.json: /performers/1/part: no part "Horn 3" in quintet.musicxml (parts: Horn in F,
+// ...)". Returns the scores in Scene::music order.
 Result<std::vector<music::Score>> load_scene_music(const Scene& scene);
 // The same check on scores already loaded (one per Scene::music entry).
 Status check_scene_parts(const Scene& scene, std::span<const music::Score> scores);

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // A family's section of a scene file (Bevy's plugins own their settings the same way): the
-// top-level keys an instrument family reads, e.g. "performers" for brass players or "pianists"
-// for keyboard players. The loader (load_scene.hpp) knows only the scene's own keys (music,
+// top-level keys an instrument family reads (each family's README names its own). The loader (load_scene.hpp) knows only the scene's own keys (music,
 // cameras, shots, lights, output, cues, ...); it hands the document to each SceneSection in
 // LoadOptions::sections, and a key no section registers is an error with a did-you-mean over
 // all of them. A family stores what it read in Scene::sections (its own struct) and says which
@@ -50,7 +49,7 @@ class SectionContext {
   // `expected`, or (for characters and hands) the model file itself. Absent: out unchanged.
   Status mapping(const nlohmann::json& object, std::string_view path, const char* key,
                  AssetKind expected, std::filesystem::path& out) const;
-  // A JSON file of the content folder (e.g. "piano/hands.json"), with one-line errors.
+  // A JSON file of the content folder (e.g. "<family>/settings.json"), with one-line errors.
   Result<nlohmann::json> content_json(const std::filesystem::path& relative) const;
 
  private:
@@ -63,7 +62,7 @@ class SceneSection {
  public:
   virtual ~SceneSection() = default;
 
-  // The family it belongs to ("brass", "piano"), for messages.
+  // The family it belongs to (its FamilyPlugin's name), for messages.
   virtual std::string_view family() const = 0;
   // The top-level keys it reads; unique across the sections a program registers.
   virtual std::vector<std::string_view> keys() const = 0;

@@ -27,7 +27,7 @@ namespace tutti::stage {
 
 // A set of cameras the shot list cycles through while its parts play the most notes.
 struct DraftedGroup {
-  std::string name;                  // unique across the scene: "trumpet", "piano", "organ"
+  std::string name;                  // unique across the scene: "horn", "organ", "violins"
   std::vector<int> parts;            // score parts whose onsets count for it
   std::vector<std::string> cameras;  // names, in the order they are cut to
 };
@@ -37,7 +37,7 @@ struct FamilyDraft {
   std::vector<std::pair<std::string, nlohmann::ordered_json>> section;
   std::vector<nlohmann::ordered_json> cameras;
   std::vector<DraftedGroup> groups;
-  // For the description: "2 trumpets, 1 horn", "a pianist and an organist".
+  // For the description: "2 horns, 1 tuba", "an organist and a harpsichordist".
   std::string summary;
   // What the players occupy along x (metres, in the frame the family drafted in), for placing
   // the families side by side and framing the wide shot.

@@ -35,7 +35,7 @@ class FamilyPlugin {
   virtual const scene::SceneSection& scene_section() const = 0;
 
   // `tutti scene new` (family_draft.hpp). What the family plays, for the note on parts nobody
-  // plays: "trumpet, horn, trombone, euphonium, tuba".
+  // plays: "violin, viola, cello, double bass".
   virtual std::string_view draft_plays() const = 0;
   // Its place from the audience's left among the families with players (lower = further left).
   virtual int draft_seating_order() const = 0;

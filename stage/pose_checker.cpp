@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <algorithm>
 #include <cmath>
+#include <tutti/components/performer.hpp>
 #include <tutti/model/model_asset.hpp>
 #include <tutti/stage/pose_checker.hpp>
 
@@ -21,11 +22,11 @@ constexpr float kForearmRadiusM = 0.037f;
 constexpr float kSleeveShortOfWristM = 0.03f;
 // How fast a joint may turn, from one sampled frame to the next (deg/s; at check-pose's default
 // 30 frames a second, the mean over 33 ms). Outside strokes, 1000: issue 29's figure, above what
-// a player's sway, breathing, cues and hand shifts need (the pianist's arms reach 509 on
-// third-party music, a brass player's 176) and below a one-frame snap (a 43 deg turn in one frame
-// is 1290). A finger striking a key or pressing a valve moves faster: 2500 (the pianist's little
-// finger reaches 2176 in the octaves of pianoplayer's test_octaves.xml). An arm making a stroke,
-// as the trombonist's slide arm moving the slide, a stroke as quick as the slide's top speed (4
+// a player's sway, breathing, cues and hand shifts need (a keyboard player's arms reach 509 on
+// third-party music, a horn player's 176) and below a one-frame snap (a 43 deg turn in one frame
+// is 1290). A finger striking a key or pressing a valve moves faster: 2500 (a little finger
+// reaches 2176 in third-party octave studies). An arm making a stroke, as the trombonist's slide
+// arm moving the slide, a stroke as quick as the slide's top speed (4
 // m/s, content/instruments/trombone_tenor.json), bends the elbow at up to 1620: 2000.
 constexpr double kBodyJointSpeedLimitDegPerS = 1000.0;
 constexpr double kFingerJointSpeedLimitDegPerS = 2500.0;
@@ -111,6 +112,11 @@ PoseChecker::PoseChecker(Stage& stage, PoseReport& report, const FingerJointLimi
     : stage_(stage), report_(report), limits_(limits) {
   stage_.world().view<const components::Note>().each(
       [&](ecs::Entity e, const components::Note& note) { notes_.emplace_back(e, &note); });
+}
+
+std::string PoseChecker::performer_name(ecs::Entity performer) const {
+  const auto* about = stage_.world().try_get<components::Performer>(performer);
+  return about != nullptr ? about->name : std::string("?");
 }
 
 void PoseChecker::at_time(double t_s, double dt_s) {

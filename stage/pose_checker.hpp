@@ -24,6 +24,7 @@
 #include <tutti/components/note.hpp>
 #include <tutti/ecs/world.hpp>
 #include <tutti/stage/finger_joint_limits.hpp>
+#include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/stage/performer_rig.hpp>
 #include <tutti/stage/stage.hpp>
 #include <tutti/stage/two_bone_ik.hpp>
@@ -32,7 +33,7 @@ namespace tutti::stage {
 
 // One figure over the frames it applies to: a distance (mm) or a share (%).
 struct PoseMeasure {
-  std::string name;     // "Trumpet 1: pressing fingertip to its button top"
+  std::string name;     // "Horn: fastest joint's angular speed outside strokes"
   std::string unit;     // "mm", "%"
   std::vector<double> samples;  // one per frame (and finger, hand, ...) it applied to
   double limit = -1.0;          // the most allowed for `worst` (p95 if by_p95), < 0: no limit
@@ -67,6 +68,11 @@ void world_of(const PlacedModel& placed, std::vector<glm::mat4>& out);
 double distance_to_line(const glm::vec3& p, const glm::vec3& on_line, const glm::vec3& direction);
 double distance_to_segment(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b);
 inline constexpr const char* kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
+// The fingertip pad's radius (content/generator/hand_rig.json: finger radius × tip ratio).
+inline constexpr double kPadRadiusMm[5] = {
+    1000.0 * kFingertipPadRadiusM[0], 1000.0 * kFingertipPadRadiusM[1],
+    1000.0 * kFingertipPadRadiusM[2], 1000.0 * kFingertipPadRadiusM[3],
+    1000.0 * kFingertipPadRadiusM[4]};
 }  // namespace pose
 
 class PoseChecker {
@@ -82,6 +88,8 @@ class PoseChecker {
   double t_s() const { return t_s_; }
   double dt_s() const { return dt_s_; }
   const ecs::World& world() const { return stage_.world(); }
+  // A performer's name, as the measures are named ("?" when it has none).
+  std::string performer_name(ecs::Entity performer) const;
   // Every note entity of the stage (read once).
   const std::vector<std::pair<ecs::Entity, const components::Note*>>& notes() const {
     return notes_;

@@ -66,12 +66,13 @@ struct PlacedModel {
   bool after_performer = false;
 };
 
-// Component on every performer entity: the family that plays it and which of the family's
-// performers it is (its index in the family's scene section: a brass player's in `performers`, a
-// pianist's in `pianists`).
+// Component on every performer entity: the family that plays it, which of the family's
+// performers it is (its index in the family's scene section) and the id of the instrument it
+// plays ("horn_double", "organ"; set by the family).
 struct Seat {
   std::string family;
   std::size_t index = 0;
+  std::string instrument;
 };
 
 // A caller's own state for computing frames from a shared stage (ozz-animation's sampling

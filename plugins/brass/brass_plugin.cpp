@@ -235,6 +235,7 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
 
     const ecs::Entity player = builder.add_performer(
         name(), seat, components::Performer{performer.name, performer.seed});
+    world.get<stage::Seat>(player).instrument = played.id;
     claim_notes(builder, performer.music_file, plan, player);
     world.add<components::Transform>(
         player, stage::stage_transform(performer.position_m, performer.facing_deg));

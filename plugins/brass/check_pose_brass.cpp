@@ -11,11 +11,9 @@
 #include <string>
 #include <tutti/brass/brass_components.hpp>
 #include <tutti/brass/brass_plugin.hpp>
-#include <tutti/components/performer.hpp>
 #include <tutti/components/slide.hpp>
 #include <tutti/components/valve.hpp>
 #include <tutti/stage/body_retarget.hpp>
-#include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/stage/pose_checker.hpp>
 #include <vector>
 
@@ -24,19 +22,10 @@ namespace {
 
 using stage::pose::distance_to_line;
 using stage::pose::kFingerNames;
+using stage::pose::kPadRadiusMm;
 using stage::pose::origin;
 
-// The fingertip pad's radius (content/generator/hand_rig.json: finger radius × tip ratio).
-constexpr double kPadRadiusMm[5] = {
-    1000.0 * stage::kFingertipPadRadiusM[0], 1000.0 * stage::kFingertipPadRadiusM[1],
-    1000.0 * stage::kFingertipPadRadiusM[2], 1000.0 * stage::kFingertipPadRadiusM[3],
-    1000.0 * stage::kFingertipPadRadiusM[4]};
-
-std::string name_of(const ecs::World& world, ecs::Entity performer) {
-  const auto* about = world.try_get<components::Performer>(performer);
-  return about != nullptr ? about->name : std::string("?");
-}
-
+// A hand held in the bell (the horn's right hand: its palm_at node inside the bell): how far its
 // fingertips' pads reach through the bell's wall, by the profile the model's bell_rim carries.
 void hand_in_bell(stage::PoseChecker& c, const std::string& who, const stage::PlacedModel& horn,
                   const BrassRig& rig) {
@@ -76,6 +65,7 @@ void hand_in_bell(stage::PoseChecker& c, const std::string& who, const stage::Pl
   }
 }
 
+// One brass player in the frame just posed.
 void check_brass_player(stage::PoseChecker& c, ecs::Entity performer, const BrassRig& rig) {
   const ecs::World& world = c.world();
   const auto* horn = world.try_get<stage::PlacedModel>(rig.horn);
@@ -83,7 +73,7 @@ void check_brass_player(stage::PoseChecker& c, ecs::Entity performer, const Bras
   const auto* body =
       stage::posed_body(world.try_get<stage::PlacedModel>(rig.body), rig.body_retarget);
   if (horn == nullptr || body == nullptr) return;
-  const std::string who = name_of(world, performer);
+  const std::string who = c.performer_name(performer);
   stage::pose::world_of(*horn, c.instrument_world());
   stage::pose::world_of(*body, c.body_world());
   // The slide moves in this frame when it is moving now or has moved since the last frame.

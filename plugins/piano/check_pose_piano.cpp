@@ -9,14 +9,12 @@
 #include <map>
 #include <string>
 #include <tutti/components/finger.hpp>
-#include <tutti/components/performer.hpp>
 #include <tutti/piano/hand_capsules.hpp>
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/piano/piano_plugin.hpp>
 #include <tutti/piano/pose_feet.hpp>
 #include <tutti/piano_model/pedal_geometry.hpp>
 #include <tutti/stage/body_retarget.hpp>
-#include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/stage/pose_checker.hpp>
 #include <vector>
 
@@ -25,19 +23,9 @@ namespace {
 
 using stage::PoseMeasure;
 using stage::pose::kFingerNames;
+using stage::pose::kPadRadiusMm;
 using stage::pose::origin;
 using FingerNodes = stage::PoseChecker::FingerNodes;
-
-// The fingertip pad's radius (content/generator/hand_rig.json: finger radius × tip ratio).
-constexpr double kPadRadiusMm[5] = {
-    1000.0 * stage::kFingertipPadRadiusM[0], 1000.0 * stage::kFingertipPadRadiusM[1],
-    1000.0 * stage::kFingertipPadRadiusM[2], 1000.0 * stage::kFingertipPadRadiusM[3],
-    1000.0 * stage::kFingertipPadRadiusM[4]};
-
-std::string name_of(const ecs::World& world, ecs::Entity performer) {
-  const auto* about = world.try_get<components::Performer>(performer);
-  return about != nullptr ? about->name : std::string("?");
-}
 
 // Each keyboard player's keys over the checked range (seconds summed over keys).
 struct KeyTally {
@@ -133,8 +121,8 @@ void hands_apart(stage::PoseChecker& c, const State& state, const std::string& w
                : std::string("right ") + deepest_right->name + " in left " + deepest_left->name);
 }
 
-// A key's top in its own frame: from the pivot (its back edge, z = 0) toward the player, as
-
+// One keyboard player in the frame just posed: the pressing pads on their keys, the hands apart,
+// the keys' travel against the notes sounding, the toes on their pedals, the shared measures.
 void check_keyboard_player(stage::PoseChecker& c, ecs::Entity performer, const PianoRig& rig) {
   const double t_s = c.t_s();
   const double dt_s = c.dt_s();
@@ -142,7 +130,7 @@ void check_keyboard_player(stage::PoseChecker& c, ecs::Entity performer, const P
   const ecs::World& world = c.world();
   const auto* piano = world.try_get<stage::PlacedModel>(rig.piano);
   if (piano == nullptr) return;
-  const std::string who = name_of(world, performer);
+  const std::string who = c.performer_name(performer);
   stage::pose::world_of(*piano, c.instrument_world());
   std::vector<glm::vec3> tips;
   // A user's hands play: a hand model's stand-in, else a user's character's own (its

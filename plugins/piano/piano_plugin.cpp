@@ -272,6 +272,7 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   ecs::World& world = builder.world();
   const ecs::Entity performer =
       builder.add_performer(name(), index, components::Performer{pianist.name, pianist.seed});
+  world.get<stage::Seat>(performer).instrument = pianist.instrument;
   claim_notes(builder, pianist.music_file, plan, performer, pianist.sound_from_keys,
               static_cast<int>(action->velocity.fixed));
   world.add<components::Transform>(

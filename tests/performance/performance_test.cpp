@@ -72,6 +72,25 @@ TEST(Performance, TheQuintetsInstrumentsAreTheirOwnModels) {
   node_named(horn, "rotor_1");
 }
 
+// Each performer's instrument by its id, whatever the family: a keyboard player's is their own
+// keyboard's (it was "piano" for every keyboard player).
+TEST(Performance, EachPerformerSaysWhichInstrumentTheyPlay) {
+  auto opened = Performance::open(std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" /
+                                  "keyboards" / "piano_and_organ.json");
+  ASSERT_TRUE(opened) << opened.error().message;
+  const Performance& p = **opened;
+  ASSERT_EQ(p.performers().size(), 2u);
+  EXPECT_EQ(p.performers()[0].family, "piano");
+  EXPECT_EQ(p.performers()[0].instrument, "piano");
+  EXPECT_EQ(p.performers()[1].family, "piano");
+  EXPECT_EQ(p.performers()[1].instrument, "organ");
+  auto quintet = open_scene("quintet.json");
+  ASSERT_TRUE(quintet);
+  for (const PerformerInfo& performer : quintet->performers()) {
+    EXPECT_FALSE(performer.instrument.empty()) << performer.name;
+  }
+}
+
 TEST(Performance, TheQuartetsPerformersAndTheirModels) {
   auto p = open_scene("quartet.json");
   ASSERT_TRUE(p);
