@@ -52,12 +52,15 @@ Trs to_trs(const model::NodeTransform& t) {
   return out;
 }
 
+// The performance's own event kinds, first in event_kinds().
+constexpr std::uint16_t kNoteOn = 0, kNoteOff = 1, kBreathStart = 2, kBreathEnd = 3, kCue = 4;
+
 bool event_before(const Event& a, const Event& b) {
   return std::tie(a.t_s, a.performer, a.kind, a.value) <
          std::tie(b.t_s, b.performer, b.kind, b.value);
 }
 
-// Keys, valves and slides reaching their stops (stage/contact_detector.hpp), on a grid of
+// The stops the families' players reach (stage/contact_detector.hpp): keys, valves, ..., on a grid of
 // `step_s` over the stage's range, as events of the performers they belong to.
 void add_contact_events(stage::Stage& stage, const std::map<std::uint64_t, std::int32_t>& index_of,
                         double step_s, std::vector<Event>& out) {
@@ -66,18 +69,10 @@ void add_contact_events(stage::Stage& stage, const std::map<std::uint64_t, std::
   for (const stage::Stop& stop : stops) {
     const auto it = index_of.find(stop.performer.bits());
     if (it == index_of.end()) continue;
-    EventKind kind = EventKind::key_down;
-    switch (stop.kind) {
-      case stage::StopKind::key_down: kind = EventKind::key_down; break;
-      case stage::StopKind::key_up: kind = EventKind::key_up; break;
-      case stage::StopKind::valve_down: kind = EventKind::valve_down; break;
-      case stage::StopKind::valve_up: kind = EventKind::valve_up; break;
-      case stage::StopKind::slide_arrives: kind = EventKind::slide_arrives; break;
-      case stage::StopKind::tongue: continue;  // note_on already says when it sounds
-      case stage::StopKind::pedal_down: kind = EventKind::pedal_down; break;
-      case stage::StopKind::pedal_up: kind = EventKind::pedal_up; break;
-    }
-    out.push_back({stop.t_s, kind, it->second, stop.value});
+    if (!stop.kind->host_event) continue;  // another event says it (a tongue: the note_on)
+    const std::int32_t kind = find_event_kind(stop.kind->name);
+    if (kind < 0) continue;  // a family outside the default list
+    out.push_back({stop.t_s, static_cast<std::uint16_t>(kind), it->second, stop.value});
   }
 }
 
@@ -142,34 +137,31 @@ void read_posed_models(const Placed& placed_model, std::size_t count, std::vecto
 
 }  // namespace
 
-const char* event_kind_name(EventKind kind) {
-  switch (kind) {
-    case EventKind::note_on:
-      return "note_on";
-    case EventKind::note_off:
-      return "note_off";
-    case EventKind::key_down:
-      return "key_down";
-    case EventKind::key_up:
-      return "key_up";
-    case EventKind::valve_down:
-      return "valve_down";
-    case EventKind::valve_up:
-      return "valve_up";
-    case EventKind::slide_arrives:
-      return "slide_arrives";
-    case EventKind::breath_start:
-      return "breath_start";
-    case EventKind::breath_end:
-      return "breath_end";
-    case EventKind::cue:
-      return "cue";
-    case EventKind::pedal_down:
-      return "pedal_down";
-    case EventKind::pedal_up:
-      return "pedal_up";
-  }
-  return "unknown";
+std::span<const std::string_view> event_kinds() {
+  static const std::vector<std::string_view> kinds = [] {
+    // In the order of kNoteOn ... kCue.
+    std::vector<std::string_view> out{"note_on", "note_off", "breath_start", "breath_end", "cue"};
+    for (const stage::FamilyPlugin* family : default_families()) {
+      for (const stage::StopKind* kind : family->stop_kinds()) {
+        if (kind->host_event && std::find(out.begin(), out.end(), kind->name) == out.end()) {
+          out.push_back(kind->name);
+        }
+      }
+    }
+    return out;
+  }();
+  return kinds;
+}
+
+std::string_view event_kind_name(std::uint16_t kind) {
+  const auto kinds = event_kinds();
+  return kind < kinds.size() ? kinds[kind] : std::string_view{};
+}
+
+std::int32_t find_event_kind(std::string_view name) {
+  const auto kinds = event_kinds();
+  const auto it = std::find(kinds.begin(), kinds.end(), name);
+  return it == kinds.end() ? -1 : static_cast<std::int32_t>(it - kinds.begin());
 }
 
 void read_poses(const stage::Stage& stage, std::vector<ModelPose>& out) {
@@ -251,8 +243,8 @@ Status Performance::init(const Options& options) {
   world.view<const components::Note>().each([&](const components::Note& note) {
     const auto it = index_of.find(note.performer.bits());
     if (note.performer.is_null() || it == index_of.end() || note.silent) return;
-    events_.push_back({note.onset_s, EventKind::note_on, it->second, note.pitch});
-    events_.push_back({note.offset_s, EventKind::note_off, it->second, note.pitch});
+    events_.push_back({note.onset_s, kNoteOn, it->second, note.pitch});
+    events_.push_back({note.offset_s, kNoteOff, it->second, note.pitch});
   });
   for (std::size_t p = 0; p < stage_->performers().size(); ++p) {
     const ecs::Entity entity = stage_->performers()[p];
@@ -260,15 +252,15 @@ Status Performance::init(const Options& options) {
     if (const auto* schedule = world.try_get<components::BreathSchedule>(entity)) {
       for (std::size_t b = 0; b < schedule->breaths.size(); ++b) {
         const auto index = static_cast<std::int32_t>(b);
-        events_.push_back({schedule->breaths[b].start_s, EventKind::breath_start, performer, index});
-        events_.push_back({schedule->breaths[b].end_s, EventKind::breath_end, performer, index});
+        events_.push_back({schedule->breaths[b].start_s, kBreathStart, performer, index});
+        events_.push_back({schedule->breaths[b].end_s, kBreathEnd, performer, index});
       }
     }
     if (const auto* ensemble = world.try_get<ensemble_variation::EnsembleMotionHandle>(entity);
         ensemble != nullptr && ensemble->plan && ensemble->performer < ensemble->plan->performers.size()) {
       const bool lead = ensemble->plan->lead == static_cast<int>(ensemble->performer);
       for (const ensemble_variation::CueMotion& cue : ensemble->plan->performers[ensemble->performer].cues) {
-        events_.push_back({cue.dip_s, EventKind::cue, performer, lead ? 1 : 0});
+        events_.push_back({cue.dip_s, kCue, performer, lead ? 1 : 0});
       }
     }
   }

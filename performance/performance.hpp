@@ -23,6 +23,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <tutti/core/result.hpp>
@@ -75,25 +76,22 @@ struct PerformerInfo {
   std::vector<std::size_t> models;  // indices into models()
 };
 
-enum class EventKind : std::uint8_t {
-  note_on,        // value: MIDI key; as heard
-  note_off,       // value: MIDI key
-  key_down,       // a piano key reaches its bed; value: MIDI key
-  key_up,         // it is back up; value: MIDI key
-  valve_down,     // value: valve number, 1-based
-  valve_up,       // value: valve number
-  slide_arrives,  // the slide stops; value: the position, rounded (1..7)
-  breath_start,   // inhaling starts; value: the breath's index
-  breath_end,     // value: the breath's index
-  cue,            // the entrance a cue leads to (E); value: 1 = gives it (the lead), 0 = answers
-  pedal_down,     // an organ pedal reaches its bottom under a foot; value: MIDI key
-  pedal_up,       // it is back up; value: MIDI key
-};
-const char* event_kind_name(EventKind kind);
+// The kinds of event, by name: the performance's own (note_on, note_off: value the MIDI key, as
+// heard; breath_start, breath_end: value the breath's index; cue: the entrance a cue leads to,
+// value 1 = gives it, the lead, 0 = answers), then the stops each default family reports, family
+// by family (the keyboards' key_down and key_up, value the MIDI key; brass valve_down and
+// valve_up, value the valve's number, 1-based; slide_arrives, value the position, 1..7; ...).
+// Event::kind is an index into this list; a host looks kinds up by name, since a family added
+// to the list adds kinds of its own.
+std::span<const std::string_view> event_kinds();
+// event_kinds()[kind], or "" when kind is out of range.
+std::string_view event_kind_name(std::uint16_t kind);
+// The kind called `name`, or -1 when there is none.
+std::int32_t find_event_kind(std::string_view name);
 
 struct Event {
   double t_s = 0.0;  // seconds of the music
-  EventKind kind = EventKind::note_on;
+  std::uint16_t kind = 0;  // index into event_kinds()
   std::int32_t performer = 0;  // index into performers()
   std::int32_t value = 0;
 };

@@ -4,10 +4,13 @@
 // A family reads its section of the scene file (scene_section.hpp), adds its systems to the
 // schedule's phases and, for a scene, plans its performers, spawns their entities and binds
 // their models (StageBuilder), drafts its players for `tutti scene new` (family_draft.hpp) and
-// measures their poses for `tutti check-pose` (pose_checker.hpp).
+// measures their poses for `tutti check-pose` (pose_checker.hpp), and names and finds the stops its
+// players reach, which become the host API's events and `sync-report`'s contacts
+// (contact_detector.hpp).
 // The stage knows families only through this interface; the list of families a program uses is
 // a small file of its own (tutti::performance's default_families()).
 
+#include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -16,6 +19,7 @@
 #include <tutti/ecs/schedule.hpp>
 #include <tutti/music/score.hpp>
 #include <tutti/scene/scene_section.hpp>
+#include <tutti/stage/contact_detector.hpp>
 #include <tutti/stage/family_draft.hpp>
 
 namespace tutti::stage {
@@ -59,6 +63,16 @@ class FamilyPlugin {
     (void)performer;
   }
   virtual void finish_pose_check(PoseChecker& checker) const { (void)checker; }
+
+  // The stops its players reach (contact_detector.hpp): every kind it reports, in a fixed
+  // order (the host API lists them by name), and a tracker for one run of the detector over a
+  // stage's world (nullptr: nothing of the family's to watch there). Families that report no
+  // stops keep both defaults.
+  virtual std::span<const StopKind* const> stop_kinds() const { return {}; }
+  virtual std::unique_ptr<StopTracker> track_stops(ecs::World& world) const {
+    (void)world;
+    return nullptr;
+  }
 
   // Loads the family's content, plans the scene's performers of the family (or shares the plans
   // of builder.previous() whose inputs did not change), spawns their entities and places and

@@ -124,6 +124,9 @@ class Stage {
   const std::vector<ecs::Entity>& instances() const { return instances_; }
   const PlacedModel& placed(std::size_t instance) const;
 
+  // The families it was built with, in their order (they outlive the stage).
+  std::span<const FamilyPlugin* const> families() const { return families_; }
+
   // Performer entities (components::Performer, Seat), family by family in plugin order.
   const std::vector<ecs::Entity>& performers() const { return performers_; }
   // The performer of `family` with Seat::index `index`; null when there is none.
@@ -167,6 +170,7 @@ class Stage {
   std::vector<std::string> model_files_;  // the file each of `models_` came from
   std::vector<ecs::Entity> instances_;
   std::vector<ecs::Entity> performers_;
+  std::vector<const FamilyPlugin*> families_;
   std::vector<std::string> notes_;
   std::vector<std::string> replanned_;
   double start_s_ = 0.0;

@@ -116,6 +116,7 @@ Result<std::unique_ptr<Stage>> build_stage(const scene::Scene& scene,
                                            const StageOptions& options) {
   auto stage = std::make_unique<Stage>();
   stage->scene_ = scene;
+  stage->families_.assign(families.begin(), families.end());
   double music_end = 0.0;
   for (const std::filesystem::path& file : scene.music) {
     auto score = music::load_score(file);

@@ -13,30 +13,12 @@
 namespace tutti::cli {
 namespace {
 
-std::string performer_name(const ecs::World& world, ecs::Entity entity, const char* fallback) {
+std::string performer_name(const ecs::World& world, ecs::Entity entity) {
   const auto* performer = world.try_get<components::Performer>(entity);
-  return performer != nullptr && !performer->name.empty() ? performer->name : fallback;
+  return performer != nullptr ? performer->name : std::string();
 }
 
 }  // namespace
-
-const char* contact_kind_name(ContactKind kind) {
-  switch (kind) {
-    case ContactKind::key_bottom:
-      return "key bottom";
-    case ContactKind::valve_down:
-      return "valve down";
-    case ContactKind::valve_up:
-      return "valve up";
-    case ContactKind::slide_arrives:
-      return "slide arrives";
-    case ContactKind::tongue:
-      return "tongue";
-    case ContactKind::pedal_down:
-      return "pedal down";
-  }
-  return "?";
-}
 
 std::vector<Contact> sample_contacts(stage::Stage& stage, double from_s, double to_s,
                                      double step_s) {
@@ -45,35 +27,8 @@ std::vector<Contact> sample_contacts(stage::Stage& stage, double from_s, double 
   const ecs::World& world = stage.world();
   for (const stage::Stop& stop : stage::detect_stops(stage, {from_s, to_s, step_s, false})) {
     if (!stop.sounding) continue;  // a valve let go or a slide come to rest in a rest
-    switch (stop.kind) {
-      case stage::StopKind::key_down:
-        contacts.push_back({stop.t_s, ContactKind::key_bottom,
-                            performer_name(world, stop.performer, "pianist"), stop.value});
-        break;
-      case stage::StopKind::key_up:
-      case stage::StopKind::pedal_up:
-        break;  // the sound starts at the bottom
-      case stage::StopKind::pedal_down:
-        contacts.push_back({stop.t_s, ContactKind::pedal_down,
-                            performer_name(world, stop.performer, "organist"), stop.value});
-        break;
-      case stage::StopKind::valve_down:
-        contacts.push_back({stop.t_s, ContactKind::valve_down,
-                            performer_name(world, stop.performer, ""), stop.value});
-        break;
-      case stage::StopKind::valve_up:
-        contacts.push_back({stop.t_s, ContactKind::valve_up,
-                            performer_name(world, stop.performer, ""), stop.value});
-        break;
-      case stage::StopKind::slide_arrives:
-        contacts.push_back({stop.t_s, ContactKind::slide_arrives,
-                            performer_name(world, stop.performer, ""), -1});
-        break;
-      case stage::StopKind::tongue:
-        contacts.push_back(
-            {stop.t_s, ContactKind::tongue, performer_name(world, stop.performer, ""), -1});
-        break;
-    }
+    if (stop.kind->sync_label.empty()) continue;  // no sound starts (a key coming back up)
+    contacts.push_back({stop.t_s, stop.kind, performer_name(world, stop.performer), stop.value});
   }
   std::stable_sort(contacts.begin(), contacts.end(),
                    [](const Contact& a, const Contact& b) { return a.time_s < b.time_s; });
@@ -127,9 +82,8 @@ SyncFigures measure_sync(const std::vector<Contact>& contacts, const audio::Audi
     // A key's sound (a struck string) is heard where its energy jumps, as the attack compensation
     // places struck notes (audio/attack_time.hpp); blown notes keep the detector's point.
     double heard = detected[best];
-    const bool struck = std::all_of(e.contacts.begin(), e.contacts.end(), [](const Contact* c) {
-      return c->kind == ContactKind::key_bottom;
-    });
+    const bool struck = std::all_of(e.contacts.begin(), e.contacts.end(),
+                                    [](const Contact* c) { return c->kind->struck; });
     if (struck) {
       const double at = (heard - audio_start_s) / options.tempo_factor;
       heard = audio_start_s + audio::steepest_energy_rise_s(audio, at - 0.020, at + 0.003, at) *

@@ -16,23 +16,23 @@
 
 #include <tutti/audio/offline_synth.hpp>
 #include <tutti/audio/onset_detection.hpp>
+#include <tutti/stage/contact_detector.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::cli {
 
-enum class ContactKind { key_bottom, valve_down, valve_up, slide_arrives, tongue, pedal_down };
-const char* contact_kind_name(ContactKind kind);
-
 struct Contact {
   double time_s = 0.0;  // music time
-  ContactKind kind = ContactKind::key_bottom;
+  // The family's kind of stop (stage/contact_detector.hpp): a sound starts here, called
+  // kind->sync_label in the report.
+  const stage::StopKind* kind = nullptr;
   std::string performer;
-  int detail = -1;  // the key (piano, organ pedal) or the valve number (1-based)
+  int detail = -1;  // the stop's value: a MIDI key, a valve number (1-based), a slide position
 };
 
-// Samples evaluate-phase state at from_s, from_s + step_s, ... < to_s. Key bottoms and valve
-// strokes are placed between samples by linear interpolation. Valve releases and slide
-// arrivals count only while the player sounds (a slide moving in a rest makes no sound).
+// Samples evaluate-phase state at from_s, from_s + step_s, ... < to_s (the one contact
+// detector) and keeps the stops where a sound starts (a kind with a sync_label) while the player
+// sounds (a valve let go or a slide come to rest in a rest makes no sound).
 std::vector<Contact> sample_contacts(stage::Stage& stage, double from_s, double to_s,
                                      double step_s);
 

@@ -32,7 +32,7 @@ std::string kinds_of(const SyncMatch& match) {
   std::string text;
   for (const Contact* c : match.contacts) {
     if (!text.empty()) text += ", ";
-    text += c->performer + " " + contact_kind_name(c->kind);
+    text += c->performer + " " + std::string(c->kind->sync_label);
     if (c->detail >= 0) text += " " + std::to_string(c->detail);
   }
   return text;
@@ -102,7 +102,7 @@ int run_sync_report(const SyncReportOptions& o, std::ostream& out, std::ostream&
       nlohmann::json contacts_json = nlohmann::json::array();
       for (const Contact* c : m.contacts) {
         contacts_json.push_back({{"performer", c->performer},
-                                 {"kind", contact_kind_name(c->kind)},
+                                 {"kind", c->kind->sync_label},
                                  {"detail", c->detail},
                                  {"time_s", c->time_s}});
       }

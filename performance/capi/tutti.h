@@ -26,7 +26,7 @@
 /* The version of this header. tutti_version_number() is the library's: a host built against
  * MAJOR.MINOR runs with any library of the same MAJOR.MINOR (0.x: every minor may change the ABI). */
 #define TUTTI_VERSION_MAJOR 0
-#define TUTTI_VERSION_MINOR 3
+#define TUTTI_VERSION_MINOR 4
 #define TUTTI_VERSION_PATCH 0
 #define TUTTI_VERSION_NUMBER \
   (TUTTI_VERSION_MAJOR * 10000 + TUTTI_VERSION_MINOR * 100 + TUTTI_VERSION_PATCH)
@@ -78,24 +78,9 @@ typedef struct tutti_trs {
   float scale[3];
 } tutti_trs;
 
-typedef enum tutti_event_kind {
-  TUTTI_NOTE_ON = 0,       /* value: MIDI key, as heard */
-  TUTTI_NOTE_OFF = 1,      /* value: MIDI key */
-  TUTTI_KEY_DOWN = 2,      /* a piano key reaches its bed; value: MIDI key */
-  TUTTI_KEY_UP = 3,        /* value: MIDI key */
-  TUTTI_VALVE_DOWN = 4,    /* value: valve number, 1-based */
-  TUTTI_VALVE_UP = 5,      /* value: valve number */
-  TUTTI_SLIDE_ARRIVES = 6, /* value: the slide position (1..7) */
-  TUTTI_BREATH_START = 7,  /* value: the breath's index */
-  TUTTI_BREATH_END = 8,    /* value: the breath's index */
-  TUTTI_CUE = 9,           /* the entrance a cue leads to; value: 1 = gives it, 0 = answers */
-  TUTTI_PEDAL_DOWN = 10,   /* an organ pedal reaches its bottom under a foot; value: MIDI key */
-  TUTTI_PEDAL_UP = 11      /* value: MIDI key */
-} tutti_event_kind;
-
 typedef struct tutti_event {
   double t_s;            /* seconds of the music */
-  int32_t kind;          /* tutti_event_kind */
+  int32_t kind;          /* index of its kind: tutti_event_kind_name, tutti_event_kind_by_name */
   int32_t performer;     /* index of the performer */
   int32_t value;
   int32_t reserved;      /* 0 */
@@ -119,15 +104,22 @@ typedef struct tutti_contact {
   int32_t reserved;      /* 0 */
 } tutti_contact;
 
-/* Any thread. "0.3.0" and MAJOR * 10000 + MINOR * 100 + PATCH of the library loaded. */
+/* Any thread. "0.4.0" and MAJOR * 10000 + MINOR * 100 + PATCH of the library loaded. */
 TUTTI_API const char* tutti_version(void);
 TUTTI_API int32_t tutti_version_number(void);
 /* Any thread. The message of this thread's last failed call ("" when none): one line naming the
  * file or the argument and what is wrong. */
 TUTTI_API const char* tutti_last_error(void);
-/* Any thread. The kinds of event, by name ("note_on", "valve_down", ...): kinds 0 to
- * tutti_event_kind_count() - 1. tutti_event_kind_name gives NULL for a kind out of range, and
- * tutti_event_kind_by_name -1 for a name tutti does not know. */
+/* Any thread. The kinds of event, by name: kinds 0 to tutti_event_kind_count() - 1. The
+ * performance's own come first: "note_on", "note_off" (value: the MIDI key, as heard),
+ * "breath_start", "breath_end" (value: the breath's index), "cue" (the entrance a cue leads to;
+ * value 1 = gives it, 0 = answers); then each instrument family's, family by family: the
+ * keyboards' "key_down", "key_up" (a key at its bed and back up), "pedal_down", "pedal_up" (an
+ * organ pedal under a foot; value: the MIDI key), brass "valve_down", "valve_up" (value: the
+ * valve's number, 1-based) and "slide_arrives" (value: the position, 1..7). (0.4) The numbers
+ * depend on the families the library was built with, so look kinds up by name; the names stay.
+ * tutti_event_kind_name gives NULL for a kind out of range, and tutti_event_kind_by_name -1 for a
+ * name tutti does not know. */
 TUTTI_API int32_t tutti_event_kind_count(void);
 TUTTI_API const char* tutti_event_kind_name(int32_t kind);
 TUTTI_API int32_t tutti_event_kind_by_name(const char* name);

@@ -133,8 +133,6 @@ tutti_status pose_of(const char* function, const tutti_performance* p, int32_t m
   return TUTTI_OK;
 }
 
-constexpr int32_t kEventKinds = static_cast<int32_t>(tutti::performance::EventKind::pedal_up) + 1;
-
 // Every model's root and local transforms of `sample` into the caller's buffers (tutti_poses).
 tutti_status write_poses(const std::string& function, const tutti::performance::Sample& sample,
                          const std::vector<int32_t>& node_offsets, tutti_trs* roots,
@@ -189,28 +187,28 @@ int32_t tutti_version_number(void) { return TUTTI_VERSION_NUMBER; }
 
 const char* tutti_last_error(void) { return last_error.c_str(); }
 
-int32_t tutti_event_kind_count(void) { return kEventKinds; }
+int32_t tutti_event_kind_count(void) {
+  return guarded<int32_t>("tutti_event_kind_count", 0, [&]() -> int32_t {
+    return static_cast<int32_t>(tutti::performance::event_kinds().size());
+  });
+}
 
 const char* tutti_event_kind_name(int32_t kind) {
   return guarded<const char*>("tutti_event_kind_name", nullptr, [&]() -> const char* {
-    if (std::string e = bad_index("tutti_event_kind_name", "event kind", kind,
-                                  static_cast<std::size_t>(kEventKinds));
+    const auto kinds = tutti::performance::event_kinds();
+    if (std::string e = bad_index("tutti_event_kind_name", "event kind", kind, kinds.size());
         !e.empty()) {
       return fail_with<const char*>(nullptr, e);
     }
-    return tutti::performance::event_kind_name(static_cast<tutti::performance::EventKind>(kind));
+    // The names are string literals of the families (stage::StopKind): NUL-terminated, static.
+    return kinds[static_cast<std::size_t>(kind)].data();
   });
 }
 
 int32_t tutti_event_kind_by_name(const char* name) {
   return guarded<int32_t>("tutti_event_kind_by_name", -1, [&]() -> int32_t {
     if (name == nullptr) return fail_with(-1, "tutti_event_kind_by_name: the name is NULL");
-    for (int32_t kind = 0; kind < kEventKinds; ++kind) {
-      if (std::strcmp(name, tutti::performance::event_kind_name(
-                                static_cast<tutti::performance::EventKind>(kind))) == 0) {
-        return kind;
-      }
-    }
+    if (const int32_t kind = tutti::performance::find_event_kind(name); kind >= 0) return kind;
     return fail_with(-1, std::string("tutti_event_kind_by_name: no event kind \"") + name + "\"");
   });
 }

@@ -12,6 +12,7 @@
 // (Phase::pose).
 
 #include <tutti/brass/brass_scene_section.hpp>
+#include <tutti/brass/brass_stops.hpp>
 #include <tutti/stage/family_plugin.hpp>
 
 namespace tutti::brass_family {
@@ -30,6 +31,12 @@ class BrassPlugin final : public stage::FamilyPlugin {
                                    const stage::DraftPlace& place) const override;
   void check_pose(stage::PoseChecker& checker, ecs::Entity performer) const override;
   void add_systems(ecs::Schedule& schedule) const override;
+  std::span<const stage::StopKind* const> stop_kinds() const override {
+    return brass_stop_kinds();
+  }
+  std::unique_ptr<stage::StopTracker> track_stops(ecs::World& world) const override {
+    return track_brass_stops(world, name());
+  }
   Status build(stage::StageBuilder& builder) const override;
 
  private:

@@ -11,6 +11,7 @@
 // (Phase::pose: keys, hands, the seated pianist).
 
 #include <tutti/piano/piano_scene_section.hpp>
+#include <tutti/piano/piano_stops.hpp>
 #include <tutti/stage/family_plugin.hpp>
 
 namespace tutti::piano_family {
@@ -28,6 +29,12 @@ class PianoPlugin final : public stage::FamilyPlugin {
   void check_pose(stage::PoseChecker& checker, ecs::Entity performer) const override;
   void finish_pose_check(stage::PoseChecker& checker) const override;
   void add_systems(ecs::Schedule& schedule) const override;
+  std::span<const stage::StopKind* const> stop_kinds() const override {
+    return keyboard_stop_kinds();
+  }
+  std::unique_ptr<stage::StopTracker> track_stops(ecs::World& world) const override {
+    return track_keyboard_stops(world);
+  }
   Status build(stage::StageBuilder& builder) const override;
 
  private:

@@ -10,9 +10,12 @@
 #include <cstdio>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
+#include <string_view>
 
 #include <tutti/components/note.hpp>
+#include <tutti/performance/families.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::performance {
@@ -25,6 +28,9 @@ std::unique_ptr<Performance> open_scene(const char* name, const Options& options
   EXPECT_TRUE(opened) << opened.error().message;
   return opened ? std::move(*opened) : nullptr;
 }
+
+// Kinds are looked up by name: their numbers depend on the families in the list.
+bool is(const Event& e, std::string_view kind) { return event_kind_name(e.kind) == kind; }
 
 std::size_t model_named(const Performance& p, const std::string& name) {
   for (std::size_t m = 0; m < p.models().size(); ++m) {
@@ -155,7 +161,7 @@ TEST(Performance, ValveEventsMatchTheValveNode) {
   std::size_t checked = 0;
   Sample sample;
   for (const Event& e : p->events()) {
-    if (e.performer != 0 || e.kind != EventKind::valve_down || e.value != 1) continue;
+    if (e.performer != 0 || !is(e, "valve_down") || e.value != 1) continue;
     p->sample(e.t_s + 0.002, sample);
     EXPECT_LT(sample.models[horn].local[valve].translation[1], up_y - 0.015f) << e.t_s;
     ++checked;
@@ -166,21 +172,21 @@ TEST(Performance, ValveEventsMatchTheValveNode) {
 TEST(Performance, EventsCoverNotesBreathsCuesAndContacts) {
   auto p = open_scene("quartet.json");
   ASSERT_TRUE(p);
-  std::map<EventKind, std::size_t> count;
-  for (const Event& e : p->events()) ++count[e.kind];
+  std::map<std::string_view, std::size_t> count;
+  for (const Event& e : p->events()) ++count[event_kind_name(e.kind)];
   auto& world = p->stage().world();
   std::size_t heard = 0;
   world.view<const components::Note>().each([&](const components::Note& n) {
     heard += !n.performer.is_null() && !n.silent ? 1 : 0;
   });
-  EXPECT_EQ(count[EventKind::note_on], heard);
-  EXPECT_EQ(count[EventKind::note_off], heard);
-  EXPECT_GT(count[EventKind::valve_down], 10u);
-  EXPECT_GT(count[EventKind::valve_up], 10u);
-  EXPECT_GT(count[EventKind::slide_arrives], 10u);
-  EXPECT_GT(count[EventKind::breath_start], 4u);
-  EXPECT_EQ(count[EventKind::breath_start], count[EventKind::breath_end]);
-  EXPECT_GE(count[EventKind::cue], 1u);
+  EXPECT_EQ(count["note_on"], heard);
+  EXPECT_EQ(count["note_off"], heard);
+  EXPECT_GT(count["valve_down"], 10u);
+  EXPECT_GT(count["valve_up"], 10u);
+  EXPECT_GT(count["slide_arrives"], 10u);
+  EXPECT_GT(count["breath_start"], 4u);
+  EXPECT_EQ(count["breath_start"], count["breath_end"]);
+  EXPECT_GE(count["cue"], 1u);
   EXPECT_TRUE(std::is_sorted(p->events().begin(), p->events().end(),
                              [](const Event& a, const Event& b) { return a.t_s < b.t_s; }));
   // sample(t) hands each performer its own events around t.
@@ -209,8 +215,8 @@ TEST(Performance, ThePianistsKeysGoDownForTheirNotes) {
   EXPECT_EQ(p->performers()[0].models.size(), 4u);  // piano, two hands, the body
   std::vector<Event> notes, keys;
   for (const Event& e : p->events()) {
-    if (e.kind == EventKind::note_on) notes.push_back(e);
-    if (e.kind == EventKind::key_down) keys.push_back(e);
+    if (is(e, "note_on")) notes.push_back(e);
+    if (is(e, "key_down")) keys.push_back(e);
   }
   ASSERT_FALSE(notes.empty());
   const auto near = [](const std::vector<Event>& list, const Event& e) {
@@ -238,7 +244,7 @@ TEST(Performance, EveryKeyDownIsInsideAFingertipsContactWithThatKey) {
   constexpr double kFrame = 1.0 / 30.0;  // Options::contact_fps
   std::size_t keys = 0;
   for (const Event& e : p->events()) {
-    if (e.kind != EventKind::key_down) continue;
+    if (!is(e, "key_down")) continue;
     ++keys;
     const bool covered = std::any_of(contacts.begin(), contacts.end(), [&](const Contact& c) {
       const ModelInfo& part = p->models()[static_cast<std::size_t>(c.part_model)];
@@ -258,15 +264,40 @@ TEST(Performance, EveryKeyDownIsInsideAFingertipsContactWithThatKey) {
   EXPECT_TRUE(q->contacts().empty());
 }
 
+// The event kinds are the performance's own, then each default family's stops, by name: every
+// name once, each found by its name, and a name nobody registers found nowhere.
+TEST(Performance, EventKindsAreTheFamiliesStopsByName) {
+  const auto kinds = event_kinds();
+  ASSERT_GE(kinds.size(), 5u);
+  EXPECT_EQ(kinds[0], "note_on");
+  std::set<std::string_view> names(kinds.begin(), kinds.end());
+  EXPECT_EQ(names.size(), kinds.size()) << "a name twice";
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    EXPECT_EQ(find_event_kind(kinds[k]), static_cast<std::int32_t>(k)) << kinds[k];
+    EXPECT_EQ(event_kind_name(static_cast<std::uint16_t>(k)), kinds[k]);
+  }
+  for (const stage::FamilyPlugin* family : default_families()) {
+    for (const stage::StopKind* kind : family->stop_kinds()) {
+      EXPECT_EQ(find_event_kind(kind->name) >= 0, kind->host_event) << kind->name;
+    }
+  }
+  for (const char* name : {"key_down", "valve_down", "slide_arrives", "pedal_up"}) {
+    EXPECT_GE(find_event_kind(name), 0) << name;
+  }
+  EXPECT_EQ(find_event_kind("tongue"), -1) << "the note_on says it";
+  EXPECT_EQ(find_event_kind("bow_change"), -1);
+  EXPECT_EQ(event_kind_name(static_cast<std::uint16_t>(kinds.size())), "");
+}
+
 TEST(Performance, NoContactEventsWhenAskedForNone) {
   Options options;
   options.contact_step_s = 0.0;
   auto p = open_scene("quartet.json", options);
   ASSERT_TRUE(p);
   for (const Event& e : p->events()) {
-    EXPECT_TRUE(e.kind == EventKind::note_on || e.kind == EventKind::note_off ||
-                e.kind == EventKind::breath_start || e.kind == EventKind::breath_end ||
-                e.kind == EventKind::cue)
+    EXPECT_TRUE(is(e, "note_on") || is(e, "note_off") ||
+                is(e, "breath_start") || is(e, "breath_end") ||
+                is(e, "cue"))
         << event_kind_name(e.kind);
   }
 }

@@ -17,6 +17,7 @@
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/components/transform.hpp>
+#include <tutti/stage/contact_detector.hpp>
 #include <tutti/music/load_score.hpp>
 #include <tutti/performance/draft_scene.hpp>
 #include <tutti/performance/families.hpp>
@@ -63,6 +64,30 @@ class BellSection final : public scene::SceneSection {
   }
 };
 
+// The test family's stop: the clapper strikes each time the swing passes a whole radian (value:
+// that radian), found by a tracker of its own.
+constexpr StopKind kBellStrike{"bell_strike", "bell strike", /*struck=*/true, true};
+constexpr std::array<const StopKind*, 1> kBellStops{&kBellStrike};
+
+class BellTracker final : public StopTracker {
+ public:
+  explicit BellTracker(ecs::Entity ringer) : ringer_(ringer) {}
+  void sample(const ecs::World& world, const StopSample& sample,
+              std::vector<Stop>& stops) override {
+    const double angle = world.get<Swing>(ringer_).angle_rad;
+    const double whole = std::floor(angle);
+    if (!sample.first && whole > std::floor(previous_)) {
+      stops.push_back({stop_crossing(sample.previous_t, previous_, sample.t, angle, whole),
+                       &kBellStrike, ringer_, static_cast<std::int32_t>(whole), true});
+    }
+    previous_ = angle;
+  }
+
+ private:
+  ecs::Entity ringer_;
+  double previous_ = 0.0;
+};
+
 class BellFamily final : public FamilyPlugin {
  public:
   std::string_view name() const override { return "bells"; }
@@ -93,6 +118,14 @@ class BellFamily final : public FamilyPlugin {
                  [](ecs::World& world, const ecs::FrameTime& frame) {
                    world.view<Swing>().each([&](Swing& swing) { swing.angle_rad = frame.t_s; });
                  });
+  }
+  std::span<const StopKind* const> stop_kinds() const override { return kBellStops; }
+  std::unique_ptr<StopTracker> track_stops(ecs::World& world) const override {
+    std::unique_ptr<StopTracker> tracker;
+    world.view<const Swing>().each([&](ecs::Entity ringer, const Swing&) {
+      tracker = std::make_unique<BellTracker>(ringer);
+    });
+    return tracker;
   }
   Status build(StageBuilder& builder) const override {
     const Bells* bells = builder.scene().section<Bells>("bells");
@@ -149,6 +182,28 @@ TEST(StageBuilder, AFamilyOfItsOwnPlugsIn) {
     sounding += note.sounding ? 1 : 0;
   }
   EXPECT_GT(sounding, 0u);
+}
+
+// A family names its own kinds of stop and finds them with a tracker of its own; the one
+// detector asks it (the host API's events and sync-report read the detector).
+TEST(StageBuilder, AFamilysStopsAreFoundByTheOneDetector) {
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json",
+                                 performance::scene_load_options());
+  ASSERT_TRUE(scene) << scene.error().message;
+  const BellFamily bells;
+  const std::array<const FamilyPlugin*, 1> families{&bells};
+  auto built = build_stage(*scene, families, {});
+  ASSERT_TRUE(built) << built.error().message;
+  Stage& stage = **built;
+  ASSERT_EQ(stage.families().size(), 1u);
+  const std::vector<Stop> stops = detect_stops(stage, {0.5, 3.5, 0.01, false});
+  ASSERT_EQ(stops.size(), 3u);
+  for (std::size_t i = 0; i < stops.size(); ++i) {
+    EXPECT_EQ(stops[i].kind, &kBellStrike);
+    EXPECT_EQ(stops[i].performer, stage.find_performer("bells", 0));
+    EXPECT_EQ(stops[i].value, static_cast<std::int32_t>(i + 1));
+    EXPECT_NEAR(stops[i].t_s, static_cast<double>(i + 1), 1e-9);  // placed between samples
+  }
 }
 
 // The piano demo with the bells ringing its part instead of the pianist.
