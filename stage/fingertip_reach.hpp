@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Hands placed by their fingertips: a trumpeter's right hand whose index, middle and ring
-// fingertips rest on three valve buttons, a pianist's five on the keys. The hand's frame comes from the buttons and the instrument's up, the wrist
+// Hands placed by their fingertips: index, middle and ring on three buttons, or five on keys.
+// The hand's frame comes from the buttons and the instrument's up, the wrist
 // goes where a nominal curl puts the fingertips over the buttons, and each finger is then solved
 // onto its button (PIP and DIP bend together to match the reach, the knuckle aims the finger).
 // Works on tutti's conventions (identity rest rotations, fingers along the hand's -Y, the index

@@ -40,7 +40,7 @@ struct MappedModel {
 Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::path& mapping_file,
                                 const std::string& generated_file);
 
-// A pianist's hands from a user's model: a mapping file of kind hand as it is, or a model file
+// A player's hands from a user's model: a mapping file of kind hand as it is, or a model file
 // whose hands and fingers are recognised by themselves (engine/humanoid); its units from the
 // hands' size (a wrist to middle knuckle of 5-25 units: centimetres, of 0.05-0.25: metres).
 Result<MappedModel> load_hands(StageBuilder& builder, const std::filesystem::path& file);

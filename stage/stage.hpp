@@ -60,8 +60,8 @@ struct PlacedModel {
   // Whose model it is (an export puts it in their clip); null for scenery.
   ecs::Entity performer = ecs::Entity::null;
   // Its name to a user (export node names): with `after_performer`, the performer's name then
-  // the label ("Trumpet 1 trumpet", "pianist hand_r"; an empty label: the performer's body);
-  // else the label alone ("piano"). Empty and no performer: "<file stem> <n>".
+  // the label (its instrument, a hand; an empty label: the performer's body); else the label
+  // alone (an instrument no one carries). Empty and no performer: "<file stem> <n>".
   std::string label;
   bool after_performer = false;
 };
@@ -110,8 +110,8 @@ class Stage {
   // The music as written, one score per scene music file.
   const std::vector<music::Score>& scores() const { return scores_; }
   // What is heard, from the Note entities: `scores()` with the notes as the players play them (a
-  // brass note shortened for a catch breath ends early, the piano notes as the simulated keys
-  // sounded them; missed notes left out).
+  // note shortened for a catch breath ends early, a key's note when the simulated key sounds it;
+  // missed notes left out).
   std::vector<music::Score> heard_scores() const;
   // The Note entity of scores()[score].notes[index].
   ecs::Entity note_entity(std::size_t score, std::size_t index) const;
@@ -134,7 +134,7 @@ class Stage {
 
   // Planning diagnostics worth showing (out of range, ...).
   const std::vector<std::string>& notes() const { return notes_; }
-  // What build_stage planned afresh (performer names, "pianist ...", "ensemble"); with
+  // What build_stage planned afresh (performer names, "ensemble"); with
   // StageOptions::reuse_models, everything else was shared from that stage unchanged.
   const std::vector<std::string>& replanned() const { return replanned_; }
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include <tutti/performance/families.hpp>
+#include <tutti/stage/family_plugin.hpp>
 #include <tutti/stage/finger_joint_limits.hpp>
 #include <tutti/stage/pose_checker.hpp>
 
@@ -19,7 +19,7 @@ Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& optio
   if (!limits) return limits.error();
   PoseReport report;
   stage::PoseChecker checker(stage, report, *limits);
-  const auto families = performance::default_families();
+  const auto families = stage.families();
   const auto family_of = [&](ecs::Entity performer) -> const stage::FamilyPlugin* {
     const auto* seat = stage.world().try_get<stage::Seat>(performer);
     if (seat == nullptr) return nullptr;

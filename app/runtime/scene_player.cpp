@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cstdio>
 
-#include <tutti/audio_sync/audio_sync_system.hpp>
 #include <tutti/performance/families.hpp>
 #include <tutti/runtime/stage_view.hpp>
 
@@ -109,14 +108,9 @@ Status ScenePlayer::use_stage(render::VulkanContext& context, const render::Fram
 
 double ScenePlayer::update(double host_s) {
   transport_->update(host_s);
-  // The frame's time comes from the transport's audio clock (the sync phase).
-  audio_sync::FrameClock clock;
-  clock.source = audio_sync::FrameClock::Source::live;
-  clock.clock = &transport_->clock();
-  stage_->world().set_resource(clock);
+  // The frame's time is the transport's audio clock, given to the frame as its argument.
+  shown_s_ = transport_->clock().time();
   stage_->run({shown_s_, 0.0});
-  stage_->world().set_resource(audio_sync::FrameClock{});
-  shown_s_ = stage_->world().resource<ecs::FrameTime>()->t_s;
   return shown_s_;
 }
 

@@ -69,7 +69,7 @@ class Transport {
 
   bool playing() const { return clock_.playing(); }
   double time() const { return clock_.time(); }
-  // The audio clock the frame follows (audio_sync::FrameClock::Source::live).
+  // The audio clock the frame follows (ScenePlayer::update gives its time to the frame).
   const audio_sync::AudioClock& clock() const { return clock_; }
   double tempo() const { return options_.tempo; }
   double start_s() const { return options_.start_s; }

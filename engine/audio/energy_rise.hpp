@@ -2,7 +2,7 @@
 #pragma once
 // Where a sound starts, read the way a plain listener reads a waveform: the steepest rise of its
 // short-time energy in decibels within a span, timed at the sample that enters the window. The
-// spectral detector (onset_detection.hpp) finds the notes in a mix; a struck note (a piano key)
+// spectral detector (onset_detection.hpp) finds the notes in a mix; a struck note (a hammer's)
 // is heard where its energy jumps, a few milliseconds before the detector's -6 dB point, so the
 // attack compensation and `tutti sync-report` place struck notes here, as an independent reading
 // of the rendered WAV does (scripts/sync-energy-check).

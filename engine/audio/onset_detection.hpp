@@ -17,7 +17,7 @@ namespace tutti::audio {
 
 struct OnsetOptions {
   int window_frames = 4096;       // analysis window (85 ms at 48 kHz: 11.7 Hz bins, so the
-                                  // low brass partials fall in bins of their own), a power of 2
+                                  // low notes' partials fall in bins of their own), a power of 2
   double leading_edge_s = 0.002;  // the window's fall at its newest end
   int bands_per_octave = 24;      // log-frequency bands (quarter tones): a step is a new band
   double compression = 1000.0;    // log(1 + compression * magnitude), full scale = 1

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Where the data files (content/piano/..., content/instruments/...) are, when the caller does not
+// Where the data files (content/<family>/..., content/scenes/...) are, when the caller does not
 // say (the APIs take a content folder as an option): the environment variable TUTTI_CONTENT_DIR
 // when set and non-empty; else, for a program installed as <prefix>/bin/..., the installation's
 // <prefix>/share/tutti/content; else the source tree's content/ folder baked in at build time.

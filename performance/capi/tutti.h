@@ -115,7 +115,7 @@ TUTTI_API const char* tutti_last_error(void);
  * "breath_start", "breath_end" (value: the breath's index), "cue" (the entrance a cue leads to;
  * value 1 = gives it, 0 = answers); then each instrument family's, family by family: the
  * keyboards' "key_down", "key_up" (a key at its bed and back up), "pedal_down", "pedal_up" (an
- * organ pedal under a foot; value: the MIDI key), brass "valve_down", "valve_up" (value: the
+ * organ pedal under a foot; value: the MIDI key), the winds' "valve_down", "valve_up" (value: the
  * valve's number, 1-based) and "slide_arrives" (value: the position, 1..7). (0.4) The numbers
  * depend on the families the library was built with, so look kinds up by name; the names stay.
  * tutti_event_kind_name gives NULL for a kind out of range, and tutti_event_kind_by_name -1 for a

@@ -181,7 +181,11 @@ ensemble_variation::PerformerInput ensemble_input(const scene::Performer& perfor
   input.params = ensemble_variation::resolve_variation(performer.seed, performer.variation);
   input.lead = performer.lead;
   input.score = &score;
-  input.breaths = &plan.player->breaths;
+  for (const brass::BreathEvent& e : plan.player->breaths.events) {
+    input.breaths.push_back({e.prepare_start_s, e.start_s, e.end_s, e.depth,
+                             e.kind != brass::BreathKind::catch_breath &&
+                                 e.kind != brass::BreathKind::before_entrance});
+  }
   for (const scene::Expression& e : performer.expressions) {
     ensemble_variation::ExpressionSpan span;
     span.kind = e.kind == scene::ExpressionKind::strain ? ensemble_variation::ExpressionKind::strain

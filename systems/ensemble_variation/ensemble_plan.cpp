@@ -85,16 +85,14 @@ Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs,
     p.active_end_s = in.last_offset_s;
     p.expressions = clean_expressions(in.expressions);
 
-    if (in.breaths != nullptr) {
-      for (const brass::BreathEvent& e : in.breaths->events) {
-        BreathMotion b;
-        b.rise_start_s = std::min(e.prepare_start_s, e.start_s);
-        b.peak_s = e.end_s;
-        b.release_end_s = e.end_s + kBreathRelease_s;
-        b.size = static_cast<float>(std::clamp(e.depth, 0.0, 1.0) * (0.4 + 0.6 * v.breath_depth));
-        p.breaths.push_back(b);
-        p.active_start_s = std::min(p.active_start_s, b.rise_start_s);
-      }
+    for (const BreathInput& e : in.breaths) {
+      BreathMotion b;
+      b.rise_start_s = std::min(e.prepare_start_s, e.start_s);
+      b.peak_s = e.end_s;
+      b.release_end_s = e.end_s + kBreathRelease_s;
+      b.size = static_cast<float>(std::clamp(e.depth, 0.0, 1.0) * (0.4 + 0.6 * v.breath_depth));
+      p.breaths.push_back(b);
+      p.active_start_s = std::min(p.active_start_s, b.rise_start_s);
     }
 
     // Weight shifts on every n-th bar line while the player is on stage, and at every phrase
@@ -104,22 +102,17 @@ Result<EnsemblePlan> plan_ensemble(const std::vector<PerformerInput>& inputs,
     const float width = static_cast<float>(0.012 + 0.010 * v.sway_amount);
     p.initial_shift_m = unit_from_seed(in.seed, 20) < 0.5 ? width : -width;
     std::vector<WeightShift> phrases;
-    if (in.breaths != nullptr) {
-      for (const brass::BreathEvent& e : in.breaths->events) {
-        if (e.kind == brass::BreathKind::catch_breath ||
-            e.kind == brass::BreathKind::before_entrance) {
-          continue;
-        }
-        const double beat_s =
-            score.tempo_map.seconds_at_beats(
-                score.tempo_map.beats_at_seconds(e.start_s) +
-                music::beat_length_at(score, score.tempo_map.beats_at_seconds(e.start_s))) -
-            e.start_s;
-        WeightShift shift;
-        shift.start_s = e.start_s;
-        shift.end_s = std::max(e.start_s + 1e-3, std::min(e.end_s, e.start_s + beat_s));
-        phrases.push_back(shift);
-      }
+    for (const BreathInput& e : in.breaths) {
+      if (!e.phrase) continue;
+      const double beat_s =
+          score.tempo_map.seconds_at_beats(
+              score.tempo_map.beats_at_seconds(e.start_s) +
+              music::beat_length_at(score, score.tempo_map.beats_at_seconds(e.start_s))) -
+          e.start_s;
+      WeightShift shift;
+      shift.start_s = e.start_s;
+      shift.end_s = std::max(e.start_s + 1e-3, std::min(e.end_s, e.start_s + beat_s));
+      phrases.push_back(shift);
     }
     std::vector<WeightShift> shifts = phrases;
     const double end_beats = score.tempo_map.beats_at_seconds(p.active_end_s + 2.0);

@@ -31,7 +31,6 @@
 #include <optional>
 #include <vector>
 
-#include <tutti/brass_motion/breath_plan.hpp>
 #include <tutti/core/result.hpp>
 #include <tutti/ensemble_variation/expression.hpp>
 #include <tutti/ensemble_variation/variation_params.hpp>
@@ -77,12 +76,24 @@ struct PerformerMotionPlan {
   std::vector<ExpressionSpan> expressions;  // by start_s, not overlapping, amount in [0, 1]
 };
 
+// A breath the player takes, from their family's breath plan (a wind player's, a singer's): the
+// chest rises with it, and a phrase breath also moves the weight.
+struct BreathInput {
+  double prepare_start_s = 0.0;  // the preparation starts (<= start_s)
+  double start_s = 0.0;          // inhaling from start_s to end_s
+  double end_s = 0.0;
+  double depth = 1.0;  // 0..1, how full the lungs get
+  // Taken where a phrase ends (in a rest); false for a catch-breath within a phrase or the breath
+  // before the first entrance, which move no weight.
+  bool phrase = true;
+};
+
 struct PerformerInput {
   std::uint64_t seed = 0;
   VariationParams params;
   bool lead = false;
   const music::Score* score = nullptr;  // the player's score (tempo map, time signatures)
-  const brass::BreathPlan* breaths = nullptr;
+  std::vector<BreathInput> breaths;  // in time order
   double first_onset_s = 0.0;  // first note the player plays
   double last_offset_s = 0.0;
   // The editor's expression spans, any order. Spans with end_s <= start_s or non-finite times

@@ -16,7 +16,7 @@ using namespace tutti;
 
 struct Fixture {
   music::Score score;
-  brass::BreathPlan breaths;
+  std::vector<ensemble_variation::BreathInput> breaths;
   std::vector<ensemble_variation::PerformerInput> inputs;
 };
 
@@ -25,11 +25,11 @@ Fixture make_fixture() {
   music::TimeSignature ts;
   f.score.time_signatures.push_back(ts);
   for (double t = 7.0; t < 600.0; t += 8.0) {
-    brass::BreathEvent e;
+    ensemble_variation::BreathInput e;
     e.prepare_start_s = t;
     e.start_s = t + 0.3;
     e.end_s = t + 0.9;
-    f.breaths.events.push_back(e);
+    f.breaths.push_back(e);
   }
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     ensemble_variation::PerformerInput in;
@@ -37,7 +37,7 @@ Fixture make_fixture() {
     in.params = ensemble_variation::draw_variation(seed);
     in.lead = seed == 1;
     in.score = &f.score;
-    in.breaths = &f.breaths;
+    in.breaths = f.breaths;
     in.first_onset_s = 1.0;
     in.last_offset_s = 600.0;
     f.inputs.push_back(in);

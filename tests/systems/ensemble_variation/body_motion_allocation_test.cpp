@@ -15,7 +15,7 @@ namespace {
 
 TEST(EvaluateBodyMotionAllocation, NoAllocationPerCallWithCuesAndExpressions) {
   const music::Score score = test::four_four();
-  const brass::BreathPlan breath = test::breaths({{3.0, 3.5, 4.0}, {11.0, 11.2, 11.6}});
+  const test::Breaths breath = test::breaths({{3.0, 3.5, 4.0}, {11.0, 11.2, 11.6}});
   std::vector<PerformerInput> inputs = {test::player(score, breath, 1, true),
                                         test::player(score, breath, 2, false)};
   for (int i = 0; i < 40; ++i) {

@@ -23,7 +23,7 @@ using test::player;
 
 TEST(BodyMotion, TheLeadCuesOneBeatBeforeTheFirstEntranceAndTheOthersAnswerLate) {
   const music::Score score = four_four();
-  const brass::BreathPlan none;
+  const test::Breaths none;
   std::vector<PerformerInput> inputs = {player(score, none, 1, true),
                                         player(score, none, 2, false)};
   inputs[0].params.cue_strength = 1.0;
@@ -61,8 +61,8 @@ TEST(BodyMotion, TheLeadCuesOneBeatBeforeTheFirstEntranceAndTheOthersAnswerLate)
 TEST(BodyMotion, BreathingMovesTheBodyExactlyWhenTheBreathPlanBreathes) {
   const music::Score score = four_four();
   // Both players breathe in the same rest (the same rule window); the first also prepares.
-  const brass::BreathPlan first = breaths({{9.0, 9.5, 10.0}});
-  const brass::BreathPlan second = breaths({{9.5, 9.5, 10.0}});
+  const test::Breaths first = breaths({{9.0, 9.5, 10.0}});
+  const test::Breaths second = breaths({{9.5, 9.5, 10.0}});
   std::vector<PerformerInput> inputs = {player(score, first, 3, false),
                                         player(score, second, 4, false)};
   inputs[0].params.breath_depth = 1.0;
@@ -91,7 +91,7 @@ TEST(BodyMotion, BreathingMovesTheBodyExactlyWhenTheBreathPlanBreathes) {
 
 TEST(BodyMotion, WeightShiftsOnlyAcrossTheBeatAfterABarLine) {
   const music::Score score = four_four();
-  const brass::BreathPlan none;
+  const test::Breaths none;
   std::vector<PerformerInput> inputs = {player(score, none, 5, false)};
   inputs[0].params.weight_shift_rate = 1.0;  // every bar (2 s at 120 BPM in 4/4)
   auto plan = plan_ensemble(inputs);
@@ -119,8 +119,8 @@ TEST(BodyMotion, WeightShiftsOnlyAcrossTheBeatAfterABarLine) {
 // phrase's gives way to it.
 TEST(BodyMotion, WeightShiftsAtPhraseBoundaries) {
   const music::Score score = four_four();  // 120 BPM: a beat is 0.5 s, a bar 2 s
-  brass::BreathPlan plan = breaths({{9.0, 9.3, 10.0}, {14.5, 14.5, 14.8}, {21.1, 21.1, 21.6}});
-  plan.events[1].kind = brass::BreathKind::catch_breath;
+  test::Breaths plan = breaths({{9.0, 9.3, 10.0}, {14.5, 14.5, 14.8}, {21.1, 21.1, 21.6}});
+  plan[1].phrase = false;  // a catch-breath
   std::vector<PerformerInput> inputs = {player(score, plan, 5, false)};
   inputs[0].params.weight_shift_rate = 0.0;  // bar shifts every 8 bars (16 s) only
   auto ensemble = plan_ensemble(inputs);
@@ -166,7 +166,7 @@ double relative_difference(const PerformerMotionPlan& a, const PerformerMotionPl
 
 TEST(BodyMotion, DifferentSeedsMoveVisiblyDifferentlyAndTheSameSeedIdentically) {
   const music::Score score = four_four();
-  const brass::BreathPlan none;
+  const test::Breaths none;
   auto one = plan_ensemble({player(score, none, 100, false), player(score, none, 100, false)});
   ASSERT_TRUE(one);
   EXPECT_EQ(relative_difference(one->performers[0], one->performers[1]), 0.0);
@@ -179,7 +179,7 @@ TEST(BodyMotion, DifferentSeedsMoveVisiblyDifferentlyAndTheSameSeedIdentically) 
 
 TEST(BodyMotion, ThePoseAtTDependsOnTAlone) {
   const music::Score score = four_four();
-  const brass::BreathPlan plan_breaths = breaths({{3.0, 3.5, 4.0}, {11.0, 11.2, 11.6}});
+  const test::Breaths plan_breaths = breaths({{3.0, 3.5, 4.0}, {11.0, 11.2, 11.6}});
   auto plan = plan_ensemble({player(score, plan_breaths, 9, true)});
   ASSERT_TRUE(plan);
   const PerformerMotionPlan& p = plan->performers[0];

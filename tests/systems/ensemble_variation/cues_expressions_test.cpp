@@ -43,7 +43,7 @@ std::vector<double> bell_peaks(const PerformerMotionPlan& p, double from_s, doub
 }
 
 std::vector<PerformerInput> lead_and_follower(const music::Score& score,
-                                              const brass::BreathPlan& none) {
+                                              const test::Breaths& none) {
   std::vector<PerformerInput> inputs = {player(score, none, 1, true),
                                         player(score, none, 2, false)};
   inputs[0].params.cue_strength = 1.0;
@@ -53,7 +53,7 @@ std::vector<PerformerInput> lead_and_follower(const music::Score& score,
 
 TEST(Cues, AutomaticIsOneCueAtTheFirstEntrance) {
   const music::Score score = four_four();
-  const brass::BreathPlan none;
+  const test::Breaths none;
   const auto inputs = lead_and_follower(score, none);
   auto automatic = plan_ensemble(inputs);
   ASSERT_TRUE(automatic);
@@ -82,7 +82,7 @@ TEST(Cues, AutomaticIsOneCueAtTheFirstEntrance) {
 
 TEST(Cues, AnExplicitListGivesEveryCueAndTheFollowersAnswerEach) {
   const music::Score score = four_four();
-  const brass::BreathPlan none;
+  const test::Breaths none;
   EnsembleOptions options;
   options.cues_s = std::vector<double>{6.0, 2.0};  // any order
   auto plan = plan_ensemble(lead_and_follower(score, none), options);
@@ -114,7 +114,7 @@ TEST(Cues, AnExplicitListGivesEveryCueAndTheFollowersAnswerEach) {
 
 TEST(Cues, AnEmptyListOrNoLeadMeansNoCue) {
   const music::Score score = four_four();
-  const brass::BreathPlan none;
+  const test::Breaths none;
   EnsembleOptions empty;
   empty.cues_s = std::vector<double>{};
   auto plan = plan_ensemble(lead_and_follower(score, none), empty);
@@ -139,7 +139,7 @@ TEST(Cues, AnEmptyListOrNoLeadMeansNoCue) {
 
 TEST(Cues, ACueTooCloseToThePreviousOneIsDropped) {
   const music::Score score = four_four();
-  const brass::BreathPlan none;
+  const test::Breaths none;
   EnsembleOptions options;
   // 2.2 would lift at 1.7 s, before the cue at 2.0 settles (2.25 s); 2.75 starts exactly then.
   options.cues_s =
@@ -162,7 +162,7 @@ struct Pair {
 
 Pair with_and_without(const std::vector<ExpressionSpan>& spans) {
   const music::Score score = four_four();
-  const brass::BreathPlan breath = test::breaths({{11.0, 11.2, 11.6}, {21.0, 21.3, 21.8}});
+  const test::Breaths breath = test::breaths({{11.0, 11.2, 11.6}, {21.0, 21.3, 21.8}});
   PerformerInput in = player(score, breath, 7, true);
   auto without = plan_ensemble({in});
   in.expressions = spans;
@@ -279,7 +279,7 @@ TEST(Expressions, OverlappingSpansAreMadeDisjointInStartOrder) {
 
 TEST(Expressions, TheSystemShowsTheExpressedStrainOfTheBreath) {
   const music::Score score = four_four();
-  const brass::BreathPlan none;
+  const test::Breaths none;
   PerformerInput in = player(score, none, 7, true);
   in.expressions = {span(ExpressionKind::strain, 10.0, 14.0, 0.8)};
   auto plan = plan_ensemble({in});

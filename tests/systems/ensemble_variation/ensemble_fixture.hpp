@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <vector>
 
-#include <tutti/brass_motion/breath_plan.hpp>
 #include <tutti/ensemble_variation/ensemble_plan.hpp>
 #include <tutti/music/score.hpp>
 
@@ -23,27 +22,29 @@ inline music::Score four_four() {
   return score;
 }
 
-inline brass::BreathPlan breaths(std::vector<std::array<double, 3>> events) {
-  brass::BreathPlan plan;
+using Breaths = std::vector<BreathInput>;
+
+inline Breaths breaths(std::vector<std::array<double, 3>> events) {
+  Breaths plan;
   for (const auto& e : events) {
-    brass::BreathEvent b;
+    BreathInput b;
     b.prepare_start_s = e[0];
     b.start_s = e[1];
     b.end_s = e[2];
     b.depth = 1.0;
-    plan.events.push_back(b);
+    plan.push_back(b);
   }
   return plan;
 }
 
-inline PerformerInput player(const music::Score& score, const brass::BreathPlan& plan,
+inline PerformerInput player(const music::Score& score, const Breaths& plan,
                              std::uint64_t seed, bool lead) {
   PerformerInput in;
   in.seed = seed;
   in.params = draw_variation(seed);
   in.lead = lead;
   in.score = &score;
-  in.breaths = &plan;
+  in.breaths = plan;
   in.first_onset_s = 2.0;
   in.last_offset_s = 30.0;
   return in;
