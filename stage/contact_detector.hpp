@@ -26,9 +26,6 @@ struct StopKind {
   // `sync-report`: a sound starts here, named so in its report; empty: no sound starts (a key
   // coming back up).
   std::string_view sync_label;
-  // The sound is heard where its energy jumps (a struck or plucked string), as the attack
-  // compensation places such notes, rather than where the onset detector marks it.
-  bool struck = false;
   // A host event; false when another event already says it (a tongue: the note's note_on).
   bool host_event = true;
 };

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
+#include <tutti/audio/attack_time.hpp>
+#include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/stage/contact_detector.hpp>
 
@@ -18,17 +21,37 @@ std::string performer_name(const ecs::World& world, ecs::Entity entity) {
   return performer != nullptr ? performer->name : std::string();
 }
 
+// Whether each player's sound is struck: every note they play is of a part whose General MIDI
+// program is (a piano's; an organ's is blown), as the attack compensation hears it.
+std::map<std::uint64_t, bool> players_struck(stage::Stage& stage) {
+  std::map<std::uint64_t, bool> struck;
+  stage.world().view<const components::Note>().each([&](const components::Note& note) {
+    if (note.performer.is_null() || note.score < 0 || note.score_index < 0) return;
+    const music::Score& score = stage.scores()[static_cast<std::size_t>(note.score)];
+    const music::Note& written = score.notes[static_cast<std::size_t>(note.score_index)];
+    const bool part_struck =
+        written.part >= 0 && static_cast<std::size_t>(written.part) < score.parts.size() &&
+        audio::is_struck_program(score.parts[static_cast<std::size_t>(written.part)].program);
+    const auto [it, first] = struck.try_emplace(note.performer.bits(), part_struck);
+    if (!first) it->second = it->second && part_struck;
+  });
+  return struck;
+}
+
 }  // namespace
 
 std::vector<Contact> sample_contacts(stage::Stage& stage, double from_s, double to_s,
                                      double step_s) {
   std::vector<Contact> contacts;
   if (!(step_s > 0.0) || !(to_s > from_s)) return contacts;
+  const std::map<std::uint64_t, bool> struck_players = players_struck(stage);
   const ecs::World& world = stage.world();
   for (const stage::Stop& stop : stage::detect_stops(stage, {from_s, to_s, step_s, false})) {
     if (!stop.sounding) continue;  // a valve let go or a slide come to rest in a rest
     if (stop.kind->sync_label.empty()) continue;  // no sound starts (a key coming back up)
-    contacts.push_back({stop.t_s, stop.kind, performer_name(world, stop.performer), stop.value});
+    const auto struck = struck_players.find(stop.performer.bits());
+    contacts.push_back({stop.t_s, stop.kind, performer_name(world, stop.performer),
+                        struck != struck_players.end() && struck->second, stop.value});
   }
   std::stable_sort(contacts.begin(), contacts.end(),
                    [](const Contact& a, const Contact& b) { return a.time_s < b.time_s; });
@@ -79,11 +102,12 @@ SyncFigures measure_sync(const std::vector<Contact>& contacts, const audio::Audi
       continue;
     }
     used[best] = true;
-    // A key's sound (a struck string) is heard where its energy jumps, as the attack compensation
-    // places struck notes (audio/attack_time.hpp); blown notes keep the detector's point.
+    // A struck sound (a piano's string) is heard where its energy jumps, as the attack
+    // compensation places struck notes (audio/attack_time.hpp); blown notes (an organ's pipe, a
+    // trumpet's) keep the detector's point.
     double heard = detected[best];
     const bool struck = std::all_of(e.contacts.begin(), e.contacts.end(),
-                                    [](const Contact* c) { return c->kind->struck; });
+                                    [](const Contact* c) { return c->struck; });
     if (struck) {
       const double at = (heard - audio_start_s) / options.tempo_factor;
       heard = audio_start_s + audio::steepest_energy_rise_s(audio, at - 0.020, at + 0.003, at) *

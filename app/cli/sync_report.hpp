@@ -27,6 +27,9 @@ struct Contact {
   // kind->sync_label in the report.
   const stage::StopKind* kind = nullptr;
   std::string performer;
+  // The sound it starts is struck (its player's part has a struck General MIDI program:
+  // audio::is_struck_program), so it is heard where its energy jumps.
+  bool struck = false;
   int detail = -1;  // the stop's value: a MIDI key, a valve number (1-based), a slide position
 };
 

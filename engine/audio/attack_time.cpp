@@ -20,7 +20,6 @@ constexpr double kSlotS = 0.6;  // one note per slot
 // energy jump is its own.
 constexpr double kStruckSlotS = 1.2;
 
-bool is_struck(int program) { return program < 16; }  // GM piano and chromatic percussion
 constexpr double kOnS = 0.02;   // its note-on, into the slot
 constexpr double kOffS = 0.45;  // and its note-off
 
@@ -31,6 +30,8 @@ std::int64_t on_block(double seconds, int rate) {
 
 }  // namespace
 
+bool is_struck_program(int program) { return program >= 0 && program < 16; }
+
 Result<std::vector<double>> measure_attack_times(const std::filesystem::path& sound_font,
                                                  std::span<const SampledNote> notes,
                                                  int sample_rate, const AttackOptions& o) {
@@ -40,7 +41,7 @@ Result<std::vector<double>> measure_attack_times(const std::filesystem::path& so
   timeline.sample_rate = sample_rate;
   std::vector<double> slot_start(notes.size() + 1, 0.0);
   for (std::size_t i = 0; i < notes.size(); ++i) {
-    slot_start[i + 1] = slot_start[i] + (is_struck(notes[i].program) ? kStruckSlotS : kSlotS);
+    slot_start[i + 1] = slot_start[i] + (is_struck_program(notes[i].program) ? kStruckSlotS : kSlotS);
   }
   for (std::size_t i = 0; i < notes.size(); ++i) {
     const double slot = slot_start[i];
@@ -77,7 +78,7 @@ Result<std::vector<double>> measure_attack_times(const std::filesystem::path& so
     // percussion families, programs 0-15) is heard where its energy jumps (energy_rise.hpp), a
     // few milliseconds after its note-on where the detector's -6 dB point hears it some 7 ms
     // later; a blown note swells and is heard at the detector's point.
-    const bool struck = is_struck(notes[i].program);
+    const bool struck = is_struck_program(notes[i].program);
     const double heard =
         struck ? steepest_energy_rise_s(slot, on_s - 0.001, onsets.front().time_s + 0.005,
                                         onsets.front().time_s)

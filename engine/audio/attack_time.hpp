@@ -31,6 +31,10 @@
 
 namespace tutti::audio {
 
+// Whether a General MIDI program's notes are struck (programs 0-15: pianos, chromatic
+// percussion): heard where their energy jumps rather than at the detector's point.
+bool is_struck_program(int program);
+
 struct SampledNote {
   int program = 56;
   int key = 60;

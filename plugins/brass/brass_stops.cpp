@@ -13,10 +13,10 @@
 namespace tutti::brass_family {
 namespace {
 
-constexpr stage::StopKind kValveDown{"valve_down", "valve down", false, true};
-constexpr stage::StopKind kValveUp{"valve_up", "valve up", false, true};
-constexpr stage::StopKind kSlideArrives{"slide_arrives", "slide arrives", false, true};
-constexpr stage::StopKind kTongue{"tongue", "tongue", false, /*host_event=*/false};
+constexpr stage::StopKind kValveDown{"valve_down", "valve down", true};
+constexpr stage::StopKind kValveUp{"valve_up", "valve up", true};
+constexpr stage::StopKind kSlideArrives{"slide_arrives", "slide arrives", true};
+constexpr stage::StopKind kTongue{"tongue", "tongue", /*host_event=*/false};
 constexpr std::array<const stage::StopKind*, 4> kKinds{&kValveDown, &kValveUp, &kSlideArrives,
                                                        &kTongue};
 

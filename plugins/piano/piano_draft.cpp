@@ -187,11 +187,15 @@ Result<stage::FamilyDraft> PianoPlugin::draft(const music::Score& score,
     if (!place.alone) group.cameras.push_back("piano");
     draft.groups.push_back(std::move(group));
   }
-  // Each other keyboard player: their hands from over the right shoulder, as the pianist's.
+  // Each other keyboard player: their hands from over the right shoulder, as the pianist's, and
+  // as much higher as the console stands raised (an organ's manual over its pedalboard).
   for (std::size_t k = 0; k < keyboardists.size(); ++k) {
     const double x = x0 + keyboardist_x(with_piano, k);
     const std::string name = keyboardists[k].instrument->id + "_hands";
-    draft.cameras.push_back(stage::draft_camera(name, x + 0.55, 1.45, 0.75, x, 0.74, -0.05, 38.0));
+    const auto& pedalboard = keyboardists[k].instrument->pedalboard;
+    const double raise_m = pedalboard ? pedalboard->seat_raise_mm / 1000.0 : 0.0;
+    draft.cameras.push_back(stage::draft_camera(name, x + 0.55, 1.45 + raise_m, 0.75, x,
+                                                0.74 + raise_m, -0.05, 38.0));
     draft.groups.push_back({keyboardists[k].instrument->id, keyboardists[k].parts, {name}});
   }
   return draft;

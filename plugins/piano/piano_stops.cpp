@@ -11,11 +11,10 @@
 namespace tutti::piano_family {
 namespace {
 
-// A key's sound is a struck string (a harpsichord's a plucked one): heard where its energy jumps.
-constexpr stage::StopKind kKeyDown{"key_down", "key bottom", /*struck=*/true, true};
-constexpr stage::StopKind kKeyUp{"key_up", "", false, true};
-constexpr stage::StopKind kPedalDown{"pedal_down", "pedal down", false, true};
-constexpr stage::StopKind kPedalUp{"pedal_up", "", false, true};
+constexpr stage::StopKind kKeyDown{"key_down", "key bottom", true};
+constexpr stage::StopKind kKeyUp{"key_up", "", true};
+constexpr stage::StopKind kPedalDown{"pedal_down", "pedal down", true};
+constexpr stage::StopKind kPedalUp{"pedal_up", "", true};
 constexpr std::array<const stage::StopKind*, 4> kKinds{&kKeyDown, &kKeyUp, &kPedalDown, &kPedalUp};
 
 class KeyboardStopTracker final : public stage::StopTracker {

@@ -68,8 +68,14 @@ TEST(DraftKeyboards, OrganAndSynthPartsGetPlayersBesideThePianist) {
   // Side by side on the audience's left of the piano, a piano's width and more apart.
   EXPECT_LT(scene.pianists[1].position_m.x, -1.4);
   EXPECT_LT(scene.pianists[2].position_m.x, scene.pianists[1].position_m.x - 1.4);
-  EXPECT_GE(scene.find_camera("organ_hands"), 0);
-  EXPECT_GE(scene.find_camera("synth_hands"), 0);
+  ASSERT_GE(scene.find_camera("organ_hands"), 0);
+  ASSERT_GE(scene.find_camera("synth_hands"), 0);
+  // The hands cameras look at each manual: the organ's stands 130 mm higher, on its platform.
+  const auto target_y = [&](const char* camera) {
+    return scene.cameras[static_cast<std::size_t>(scene.find_camera(camera))].target_m.y;
+  };
+  EXPECT_NEAR(target_y("synth_hands"), 0.74, 1e-9);
+  EXPECT_NEAR(target_y("organ_hands"), 0.74 + 0.13, 1e-9);
   std::string notes;
   for (const std::string& n : drafted->notes) notes += n + "\n";
   EXPECT_NE(notes.find("not played (tutti plays trumpet, horn, trombone, euphonium, tuba and "

@@ -66,7 +66,7 @@ class BellSection final : public scene::SceneSection {
 
 // The test family's stop: the clapper strikes each time the swing passes a whole radian (value:
 // that radian), found by a tracker of its own.
-constexpr StopKind kBellStrike{"bell_strike", "bell strike", /*struck=*/true, true};
+constexpr StopKind kBellStrike{"bell_strike", "bell strike", true};
 constexpr std::array<const StopKind*, 1> kBellStops{&kBellStrike};
 
 class BellTracker final : public StopTracker {
