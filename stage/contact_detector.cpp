@@ -29,12 +29,17 @@ void track_press(PressTrack& track, double depth, std::int32_t key, const StopSa
   track.depth = depth;
 }
 
-std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid) {
+namespace {
+
+// The grid's frames in `world`, each run by `run_frame(frame)` up to the evaluate phase.
+template <typename RunFrame>
+std::vector<Stop> detect_in(std::span<const FamilyPlugin* const> families, ecs::World& world,
+                            const StopGrid& grid, RunFrame run_frame) {
   std::vector<Stop> stops;
   if (!(grid.step_s > 0.0) || !(grid.to_s >= grid.from_s)) return stops;
   std::vector<std::unique_ptr<StopTracker>> trackers;
-  for (const FamilyPlugin* family : stage.families()) {
-    if (auto tracker = family->track_stops(stage.world())) trackers.push_back(std::move(tracker));
+  for (const FamilyPlugin* family : families) {
+    if (auto tracker = family->track_stops(world)) trackers.push_back(std::move(tracker));
   }
   if (trackers.empty()) return stops;
   const double span = grid.to_s - grid.from_s;
@@ -43,12 +48,26 @@ std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid) {
   double previous_t = grid.from_s;
   for (std::int64_t i = 0; i < steps; ++i) {
     const double t = grid.from_s + static_cast<double>(i) * grid.step_s;
-    stage.run({t, grid.step_s}, ecs::Phase::evaluate);
+    run_frame(ecs::FrameTime{t, grid.step_s});
     const StopSample sample{previous_t, t, i == 0};
-    for (const auto& tracker : trackers) tracker->sample(stage.world(), sample, stops);
+    for (const auto& tracker : trackers) tracker->sample(world, sample, stops);
     previous_t = t;
   }
   return stops;
+}
+
+}  // namespace
+
+std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid) {
+  return detect_in(stage.families(), stage.world(), grid, [&](const ecs::FrameTime& frame) {
+    stage.run(frame, ecs::Phase::evaluate);
+  });
+}
+
+std::vector<Stop> detect_stops(const Stage& stage, StageContext& context, const StopGrid& grid) {
+  return detect_in(stage.families(), context.world(), grid, [&](const ecs::FrameTime& frame) {
+    stage.run(context, frame, ecs::Phase::evaluate);
+  });
 }
 
 }  // namespace tutti::stage

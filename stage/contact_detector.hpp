@@ -70,6 +70,9 @@ class StopTracker {
 // were found: per sample, family by family in the stage's order, each in its tracker's order.
 // Leaves the stage evaluated at the grid's last time. Nothing for a step <= 0 or an empty range.
 std::vector<Stop> detect_stops(Stage& stage, const StopGrid& grid);
+// The same in a caller's sampling context (Stage::make_context): const on the stage, the same
+// stops; the context is left evaluated at the grid's last time.
+std::vector<Stop> detect_stops(const Stage& stage, StageContext& context, const StopGrid& grid);
 
 // For trackers: a pressed thing (a key under a finger, a pedal under a foot) whose press depth
 // runs from 0 (up) to 1 (at its bed). Down when the depth crosses 0.999 upward with a key

@@ -108,14 +108,14 @@ const PoseMeasure* PoseReport::find(const std::string& name) const {
   return nullptr;
 }
 
-PoseChecker::PoseChecker(Stage& stage, PoseReport& report, const FingerJointLimits& limits)
-    : stage_(stage), report_(report), limits_(limits) {
-  stage_.world().view<const components::Note>().each(
+PoseChecker::PoseChecker(ecs::World& world, PoseReport& report, const FingerJointLimits& limits)
+    : world_(world), report_(report), limits_(limits) {
+  world.view<const components::Note>().each(
       [&](ecs::Entity e, const components::Note& note) { notes_.emplace_back(e, &note); });
 }
 
 std::string PoseChecker::performer_name(ecs::Entity performer) const {
-  const auto* about = stage_.world().try_get<components::Performer>(performer);
+  const auto* about = world_.try_get<components::Performer>(performer);
   return about != nullptr ? about->name : std::string("?");
 }
 

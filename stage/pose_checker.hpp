@@ -81,13 +81,14 @@ class PoseChecker {
   // -1 where it has none (BodyNodes::fingers).
   using FingerNodes = std::array<std::array<std::array<int, 3>, 5>, 2>;
 
-  PoseChecker(Stage& stage, PoseReport& report, const FingerJointLimits& limits);
+  // Measures the frames posed in `world` (a sampling context's, StageContext::world()).
+  PoseChecker(ecs::World& world, PoseReport& report, const FingerJointLimits& limits);
 
   // The frame just posed: its music time and the step since the last one.
   void at_time(double t_s, double dt_s);
   double t_s() const { return t_s_; }
   double dt_s() const { return dt_s_; }
-  const ecs::World& world() const { return stage_.world(); }
+  const ecs::World& world() const { return world_; }
   // A performer's name, as the measures are named ("?" when it has none).
   std::string performer_name(ecs::Entity performer) const;
   // Every note entity of the stage (read once).
@@ -144,7 +145,7 @@ class PoseChecker {
   };
   const DeskPanel& desk_panel(const model::ModelAsset& asset);
 
-  Stage& stage_;
+  const ecs::World& world_;
   PoseReport& report_;
   FingerJointLimits limits_;
   std::vector<glm::mat4> instrument_world_, body_world_, hand_world_, stand_world_;

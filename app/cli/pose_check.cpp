@@ -12,16 +12,18 @@
 
 namespace tutti::cli {
 
-Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& options) {
+Result<PoseReport> check_pose(const stage::Stage& stage, const PoseCheckOptions& options) {
   if (options.fps < 1 || options.fps > 240) return Error{"fps must be 1..240"};
   if (!(options.to_s > options.from_s)) return Error{"nothing to check: the range is empty"};
   auto limits = stage::load_finger_joint_limits(options.content_dir);
   if (!limits) return limits.error();
   PoseReport report;
-  stage::PoseChecker checker(stage, report, *limits);
+  // The frames are posed in a sampling context of its own: the stage is only read.
+  stage::StageContext context = stage.make_context();
+  stage::PoseChecker checker(context.world(), report, *limits);
   const auto families = stage.families();
   const auto family_of = [&](ecs::Entity performer) -> const stage::FamilyPlugin* {
-    const auto* seat = stage.world().try_get<stage::Seat>(performer);
+    const auto* seat = context.world().try_get<stage::Seat>(performer);
     if (seat == nullptr) return nullptr;
     for (const stage::FamilyPlugin* family : families) {
       if (family->name() == seat->family) return family;
@@ -32,7 +34,7 @@ Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& optio
   const auto frames = static_cast<std::int64_t>(std::ceil((options.to_s - options.from_s) * options.fps));
   for (std::int64_t k = 0; k < frames; ++k) {
     const double t = options.from_s + static_cast<double>(k) * dt;
-    stage.run({t, dt});
+    stage.run(context, {t, dt});
     ++report.frames;
     checker.at_time(t, dt);
     for (ecs::Entity performer : stage.performers()) {

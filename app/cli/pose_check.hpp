@@ -44,7 +44,7 @@ using PoseReport = stage::PoseReport;
 //  - everyone: how deep hands, fingertips and elbows go into the head's or the torso's capsule
 //    (mm; 0 = outside); how far the fingers (index .. little, tutti's rig) bend or spread past
 //    their joint limits (degrees; content/generator/hand_rig.json).
-Result<PoseReport> check_pose(stage::Stage& stage, const PoseCheckOptions& options);
+Result<PoseReport> check_pose(const stage::Stage& stage, const PoseCheckOptions& options);
 
 // The report as a table, one measure a line: samples, median, p95, max, limit, ok.
 std::string format_pose_report(const PoseReport& report);

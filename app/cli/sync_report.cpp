@@ -23,9 +23,9 @@ std::string performer_name(const ecs::World& world, ecs::Entity entity) {
 
 // Whether each player's sound is struck: every note they play is of a part whose General MIDI
 // program is (a piano's; an organ's is blown), as the attack compensation hears it.
-std::map<std::uint64_t, bool> players_struck(stage::Stage& stage) {
+std::map<std::uint64_t, bool> players_struck(const stage::Stage& stage, ecs::World& world) {
   std::map<std::uint64_t, bool> struck;
-  stage.world().view<const components::Note>().each([&](const components::Note& note) {
+  world.view<const components::Note>().each([&](const components::Note& note) {
     if (note.performer.is_null() || note.score < 0 || note.score_index < 0) return;
     const music::Score& score = stage.scores()[static_cast<std::size_t>(note.score)];
     const music::Note& written = score.notes[static_cast<std::size_t>(note.score_index)];
@@ -40,13 +40,15 @@ std::map<std::uint64_t, bool> players_struck(stage::Stage& stage) {
 
 }  // namespace
 
-std::vector<Contact> sample_contacts(stage::Stage& stage, double from_s, double to_s,
+std::vector<Contact> sample_contacts(const stage::Stage& stage, double from_s, double to_s,
                                      double step_s) {
   std::vector<Contact> contacts;
   if (!(step_s > 0.0) || !(to_s > from_s)) return contacts;
-  const std::map<std::uint64_t, bool> struck_players = players_struck(stage);
-  const ecs::World& world = stage.world();
-  for (const stage::Stop& stop : stage::detect_stops(stage, {from_s, to_s, step_s, false})) {
+  stage::StageContext context = stage.make_context();
+  const std::map<std::uint64_t, bool> struck_players = players_struck(stage, context.world());
+  const ecs::World& world = context.world();
+  for (const stage::Stop& stop :
+       stage::detect_stops(stage, context, {from_s, to_s, step_s, false})) {
     if (!stop.sounding) continue;  // a valve let go or a slide come to rest in a rest
     if (stop.kind->sync_label.empty()) continue;  // no sound starts (a key coming back up)
     const auto struck = struck_players.find(stop.performer.bits());

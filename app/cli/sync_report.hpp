@@ -36,7 +36,8 @@ struct Contact {
 // Samples evaluate-phase state at from_s, from_s + step_s, ... < to_s (the one contact
 // detector) and keeps the stops where a sound starts (a kind with a sync_label) while the player
 // sounds (a valve let go or a slide come to rest in a rest makes no sound).
-std::vector<Contact> sample_contacts(stage::Stage& stage, double from_s, double to_s,
+// Runs in a sampling context of its own: the stage is only read.
+std::vector<Contact> sample_contacts(const stage::Stage& stage, double from_s, double to_s,
                                      double step_s);
 
 struct SyncMatch {
