@@ -250,16 +250,18 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     return Status::success();
   };
   // Frame k is posed at its time on the offline frame clock (where the rendered sound has it),
-  // given as the frame's time; a still shows its own time.
+  // given as the frame's time; a still shows its own time. The frames are posed in a sampling
+  // context of the render's own: the stage is only read.
+  stage::StageContext posed = st.make_context();
   for (std::int64_t k = range.first; k < range.end; ++k) {
     const double t = o.still.empty()
                          ? audio_sync::offline_frame_time(st.start_s(), fps, k, o.tempo)
                          : std::strtod(o.still.c_str(), nullptr);
-    st.run({t, o.still.empty() ? o.tempo / fps : 0.0});
+    st.run(posed, {t, o.still.empty() ? o.tempo / fps : 0.0});
     auto frame = (*target)->begin_frame();
     if (!frame) return fail(frame.error());
     if (Status s = (*renderer)->record(
-            *frame, **target, st,
+            *frame, **target, st, posed,
             fixed_camera >= 0
                 ? runtime::scene_camera(st, static_cast<std::size_t>(fixed_camera), aspect)
                 : runtime::camera_at(st, t, aspect));

@@ -41,4 +41,11 @@ Status StageRenderer::record(const render::RecordingFrame& frame, render::FrameT
   return renderer_->record(frame, target, instances_, camera, lighting_, clear_);
 }
 
+Status StageRenderer::record(const render::RecordingFrame& frame, render::FrameTarget& target,
+                             const stage::Stage& stage, const stage::StageContext& posed,
+                             const render::Camera& camera) {
+  collect_instances(stage, posed, instances_);
+  return renderer_->record(frame, target, instances_, camera, lighting_, clear_);
+}
+
 }  // namespace tutti::runtime

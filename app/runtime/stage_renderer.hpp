@@ -30,6 +30,10 @@ class StageRenderer {
   // Shadow pass and main pass of `frame`: `stage`'s placed models seen by `camera`.
   Status record(const render::RecordingFrame& frame, render::FrameTarget& target,
                 const stage::Stage& stage, const render::Camera& camera);
+  // The same with the models as `posed` (a sampling context of `stage`) last posed them.
+  Status record(const render::RecordingFrame& frame, render::FrameTarget& target,
+                const stage::Stage& stage, const stage::StageContext& posed,
+                const render::Camera& camera);
 
   const render::ModelRenderer& renderer() const { return *renderer_; }
 

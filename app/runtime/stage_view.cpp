@@ -18,12 +18,31 @@ render::Camera camera_from(const scene::Camera& camera, float aspect) {
 
 }  // namespace
 
-void collect_instances(const stage::Stage& stage, std::vector<render::ModelInstance>& out) {
+namespace {
+
+template <typename Placed>
+void collect_placed(std::size_t count, const Placed& placed_model,
+                    std::vector<render::ModelInstance>& out) {
   out.clear();
-  for (std::size_t i = 0; i < stage.instances().size(); ++i) {
-    const stage::PlacedModel& placed = stage.placed(i);
+  for (std::size_t i = 0; i < count; ++i) {
+    const stage::PlacedModel& placed = placed_model(i);
     out.push_back({placed.model, &placed.pose, placed.root, placed.casts_shadows});
   }
+}
+
+}  // namespace
+
+void collect_instances(const stage::Stage& stage, std::vector<render::ModelInstance>& out) {
+  collect_placed(
+      stage.instances().size(),
+      [&](std::size_t i) -> const stage::PlacedModel& { return stage.placed(i); }, out);
+}
+
+void collect_instances(const stage::Stage& stage, const stage::StageContext& context,
+                       std::vector<render::ModelInstance>& out) {
+  collect_placed(
+      stage.instances().size(),
+      [&](std::size_t i) -> const stage::PlacedModel& { return context.placed(i); }, out);
 }
 
 render::Camera camera_at(const stage::Stage& stage, double t_s, float aspect) {

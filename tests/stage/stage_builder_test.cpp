@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -150,14 +151,23 @@ class BellFamily final : public FamilyPlugin {
   BellSection section_;
 };
 
-TEST(StageBuilder, AFamilyOfItsOwnPlugsIn) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json", performance::scene_load_options());
-  ASSERT_TRUE(scene) << scene.error().message;
-  const BellFamily bells;
+// The piano demo staged with the bells as the only family.
+std::unique_ptr<Stage> stage_with(const BellFamily& bells) {
+  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json",
+                                 performance::scene_load_options());
+  EXPECT_TRUE(scene) << scene.error().message;
+  if (!scene) return nullptr;
   const std::array<const FamilyPlugin*, 1> families{&bells};
   auto built = build_stage(*scene, families, {});
-  ASSERT_TRUE(built) << built.error().message;
-  Stage& stage = **built;
+  EXPECT_TRUE(built) << built.error().message;
+  return built ? std::move(*built) : nullptr;
+}
+
+TEST(StageBuilder, AFamilyOfItsOwnPlugsIn) {
+  const BellFamily bells;
+  auto built = stage_with(bells);
+  ASSERT_NE(built, nullptr);
+  Stage& stage = *built;
   // Only the families given: the scene's pianist has no family here.
   ASSERT_EQ(stage.performers().size(), 1u);
   const ecs::Entity ringer = stage.find_performer("bells", 0);
@@ -187,14 +197,10 @@ TEST(StageBuilder, AFamilyOfItsOwnPlugsIn) {
 // A family names its own kinds of stop and finds them with a tracker of its own; the one
 // detector asks it (the host API's events and sync-report read the detector).
 TEST(StageBuilder, AFamilysStopsAreFoundByTheOneDetector) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json",
-                                 performance::scene_load_options());
-  ASSERT_TRUE(scene) << scene.error().message;
   const BellFamily bells;
-  const std::array<const FamilyPlugin*, 1> families{&bells};
-  auto built = build_stage(*scene, families, {});
-  ASSERT_TRUE(built) << built.error().message;
-  Stage& stage = **built;
+  auto built = stage_with(bells);
+  ASSERT_NE(built, nullptr);
+  Stage& stage = *built;
   ASSERT_EQ(stage.families().size(), 1u);
   const std::vector<Stop> stops = detect_stops(stage, {0.5, 3.5, 0.01, false});
   ASSERT_EQ(stops.size(), 3u);
