@@ -139,12 +139,13 @@ void read_posed_models(const Placed& placed_model, std::size_t count, std::vecto
 
 std::span<const std::string_view> event_kinds() {
   static const std::vector<std::string_view> kinds = [] {
-    // In the order of kNoteOn ... kCue.
+    // In the order of kNoteOn ... kCue. Every name is a string literal (stage::StopName), as the C
+    // API's tutti_event_kind_name needs.
     std::vector<std::string_view> out{"note_on", "note_off", "breath_start", "breath_end", "cue"};
     for (const stage::FamilyPlugin* family : default_families()) {
       for (const stage::StopKind* kind : family->stop_kinds()) {
-        if (kind->host_event && std::find(out.begin(), out.end(), kind->name) == out.end()) {
-          out.push_back(kind->name);
+        if (kind->host_event && std::find(out.begin(), out.end(), kind->name.view()) == out.end()) {
+          out.push_back(kind->name.view());
         }
       }
     }

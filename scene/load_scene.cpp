@@ -36,11 +36,6 @@ std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
-bool is_file(const fs::path& path) {
-  std::error_code ec;
-  return fs::is_regular_file(path, ec);
-}
-
 class SceneParser {
  public:
   SceneParser(const std::string& file_name, fs::path base_dir, fs::path content_dir,
@@ -92,7 +87,9 @@ Status SceneParser::parse_music(const json& document, Scene& scene) const {
     const std::string written = entry.get<std::string>();
     if (written.empty()) return reader_.error(where, "must not be empty");
     const fs::path resolved = (base_dir_ / written).lexically_normal();
-    if (!is_file(resolved)) return reader_.error(where, "no such file \"" + written + "\"");
+    if (!is_existing_file(resolved)) {
+      return reader_.error(where, "no such file \"" + written + "\"");
+    }
     scene.music.push_back(resolved);
     return {};
   };

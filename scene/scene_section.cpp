@@ -13,12 +13,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_file(const fs::path& path) {
+}  // namespace
+
+bool is_existing_file(const std::filesystem::path& path) {
   std::error_code ec;
   return fs::is_regular_file(path, ec);
 }
-
-}  // namespace
 
 Result<std::size_t> SectionContext::music_index(const nlohmann::json& object,
                                                 std::string_view path, const Scene& scene) const {
@@ -58,7 +58,7 @@ Status SectionContext::mapping(const nlohmann::json& object, std::string_view pa
   if (!written) return written.error();
   const std::string where = join_path(path, key);
   const fs::path resolved = (base_dir_ / *written).lexically_normal();
-  if (!is_file(resolved)) return error(where, "no such file \"" + *written + "\"");
+  if (!is_existing_file(resolved)) return error(where, "no such file \"" + *written + "\"");
   // A character or a player's hands may be the model file itself: the stage recognises the
   // humanoid or the hands in it (engine/humanoid); instruments still need a mapping file.
   const std::string extension = resolved.extension().string();

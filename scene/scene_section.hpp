@@ -26,6 +26,9 @@
 
 namespace tutti::scene {
 
+// Whether `path` names an existing regular file (an error reading it counts as no).
+bool is_existing_file(const std::filesystem::path& path);
+
 class SectionContext {
  public:
   SectionContext(const FieldReader& fields, std::filesystem::path base_dir,

@@ -7,8 +7,10 @@
 // detector only runs the frame and asks the trackers, family by family in the stage's order.
 // The performance's events (performance.hpp), `sync-report` and the C API all read these stops.
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <ostream>
 #include <string_view>
 #include <vector>
 
@@ -17,12 +19,30 @@
 
 namespace tutti::stage {
 
+// A stop kind's name: text that lives as long as the program and ends in a NUL, because the C
+// API hands it to hosts as a C string (tutti_event_kind_name). Only a constant made from a
+// string literal converts to it: a std::string or a buffer on the stack does not compile.
+class StopName {
+ public:
+  template <std::size_t N>
+  consteval StopName(const char (&literal)[N]) : text_(literal, N - 1) {}  // NOLINT: implicit
+  constexpr operator std::string_view() const { return text_; }            // NOLINT: implicit
+  constexpr std::string_view view() const { return text_; }
+  constexpr const char* c_str() const { return text_.data(); }
+  constexpr bool empty() const { return text_.empty(); }
+  friend constexpr bool operator==(StopName a, std::string_view b) { return a.text_ == b; }
+  friend std::ostream& operator<<(std::ostream& out, StopName name) { return out << name.text_; }
+
+ private:
+  std::string_view text_;
+};
+
 // A kind of stop, declared once by the family that reports it (a static object: stops point at
 // it, and two stops are of one kind when they point at the same one).
 struct StopKind {
   // The host API's event kind (performance::event_kinds(), the C API's tutti_event_kind_name);
   // families reporting the same name share the kind there.
-  std::string_view name;
+  StopName name;
   // `sync-report`: a sound starts here, named so in its report; empty: no sound starts (a key
   // coming back up).
   std::string_view sync_label;
@@ -55,10 +75,11 @@ struct StopSample {
 };
 
 // A family's watch over its components for one run of the detector. Made on the stage's world
-// before the first sample (it finds its entities there); sample() is called after every grid time's evaluate phase and appends the stops crossed
-// since the previous one, placed between the two samples where they can be (linear
-// interpolation), else at the sample that sees them. It may also set `sounding` on stops it
-// appended at the previous sample (their indices stay valid: stops are only appended).
+// before the first sample (it finds its entities there); sample() is called after every grid
+// time's evaluate phase and appends the stops crossed since the previous one, placed between
+// the two samples where they can be (linear interpolation), else at the sample that sees them. It
+// may also set `sounding` on stops it appended at the previous sample (their indices stay valid:
+// stops are only appended).
 class StopTracker {
  public:
   virtual ~StopTracker() = default;

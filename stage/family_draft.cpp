@@ -3,12 +3,12 @@
 
 #include <cctype>
 #include <cmath>
+#include <numbers>
 
 namespace tutti::stage {
 namespace {
 
 using json = nlohmann::ordered_json;
-constexpr double kPi = 3.14159265358979323846;
 
 std::string lower(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -32,7 +32,7 @@ json draft_vec3(double x, double y, double z) {
 }
 
 std::pair<double, double> draft_ahead(double x, double z, double angle_deg, double distance) {
-  const double a = angle_deg * kPi / 180.0;
+  const double a = angle_deg * std::numbers::pi / 180.0;
   return {x + distance * std::sin(a), z + distance * std::cos(a)};
 }
 
@@ -48,7 +48,7 @@ json draft_wide_camera(const std::string& name, double left, double right, doubl
                        double fov_deg) {
   const double aspect = 16.0 / 9.0;
   const double half_width = (right - left) / 2.0;
-  const double tan_half = std::tan(fov_deg * kPi / 360.0) * aspect;
+  const double tan_half = std::tan(fov_deg * std::numbers::pi / 360.0) * aspect;
   const double distance = half_width / tan_half + 0.8;
   const double cx = (left + right) / 2.0;
   return draft_camera(name, cx, 1.5 + 0.05 * distance, front_z + distance, cx, 0.95,

@@ -4,15 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <numbers>
 #include <string>
 
 namespace tutti::stage {
-namespace {
-
-constexpr float kPi = 3.14159265f;
-
-}  // namespace
-
 Result<BodyNodes> find_body_nodes(const model::ModelAsset& asset, const MappedModel& body) {
   BodyNodes n;
   int* const slots[] = {&n.hips,         &n.spine,           &n.chest,           &n.neck,
@@ -110,10 +105,10 @@ void pose_body_base(const BodyNodes& n, bool seated, const model::ModelAsset& bo
                     const components::Breath* breath, model::ModelPose& pose) {
   if (seated) {
     // Thighs forward, shins down again, the hips lowered onto a 460 mm seat.
-    turn(pose, n.thigh_left, -kPi / 2, {1, 0, 0});
-    turn(pose, n.thigh_right, -kPi / 2, {1, 0, 0});
-    turn(pose, n.shin_left, kPi / 2, {1, 0, 0});
-    turn(pose, n.shin_right, kPi / 2, {1, 0, 0});
+    turn(pose, n.thigh_left, -std::numbers::pi_v<float> / 2, {1, 0, 0});
+    turn(pose, n.thigh_right, -std::numbers::pi_v<float> / 2, {1, 0, 0});
+    turn(pose, n.shin_left, std::numbers::pi_v<float> / 2, {1, 0, 0});
+    turn(pose, n.shin_right, std::numbers::pi_v<float> / 2, {1, 0, 0});
     if (n.hips >= 0 && n.thigh_left >= 0 && n.shin_left >= 0) {
       const float thigh_length = rest_length(body, n.shin_left);
       move(pose, n.hips, {0.0f, -thigh_length * 0.92f, -0.05f});

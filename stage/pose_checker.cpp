@@ -192,7 +192,7 @@ void PoseChecker::head_clearance(const std::string& who, int head,
                                  const std::vector<glm::vec3>& points) {
   if (head < 0) return;
   const glm::mat4& h = body_world_[static_cast<std::size_t>(head)];
-  const glm::vec3 bottom = pose::origin(h);
+  const glm::vec3 bottom = origin(h);
   const glm::vec3 top = bottom + glm::normalize(glm::vec3(h[1])) * kHeadLengthM;
   double clearance = 1e9;
   for (const glm::vec3& p : points) {
@@ -206,8 +206,8 @@ void PoseChecker::head_clearance(const std::string& who, int head,
 void PoseChecker::torso_clearance(const std::string& who, int hips, int neck,
                                   const std::vector<glm::vec3>& points) {
   if (hips < 0 || neck < 0) return;
-  const glm::vec3 bottom = pose::origin(body_world_[static_cast<std::size_t>(hips)]);
-  const glm::vec3 top = pose::origin(body_world_[static_cast<std::size_t>(neck)]);
+  const glm::vec3 bottom = origin(body_world_[static_cast<std::size_t>(hips)]);
+  const glm::vec3 top = origin(body_world_[static_cast<std::size_t>(neck)]);
   double clearance = 1e9;
   for (const glm::vec3& p : points) {
     clearance = std::min(clearance, distance_to_segment(p, bottom, top) - kTorsoRadiusM);
@@ -229,9 +229,9 @@ void PoseChecker::arms_clear_of_instrument(const std::string& who, const PlacedM
   for (const TwoBoneChain* arm : {&nodes.arm_left, &nodes.arm_right}) {
     if (arm->upper < 0 || arm->lower < 0 || arm->end < 0) continue;
     const bool left = arm == &nodes.arm_left;
-    const glm::vec3 shoulder = pose::origin(body_world_[static_cast<std::size_t>(arm->upper)]);
-    const glm::vec3 elbow = pose::origin(body_world_[static_cast<std::size_t>(arm->lower)]);
-    const glm::vec3 wrist = pose::origin(body_world_[static_cast<std::size_t>(arm->end)]);
+    const glm::vec3 shoulder = origin(body_world_[static_cast<std::size_t>(arm->upper)]);
+    const glm::vec3 elbow = origin(body_world_[static_cast<std::size_t>(arm->lower)]);
+    const glm::vec3 wrist = origin(body_world_[static_cast<std::size_t>(arm->end)]);
     const float forearm = glm::distance(elbow, wrist);
     if (forearm <= kSleeveShortOfWristM) continue;
     const glm::vec3 cuff = elbow + (wrist - elbow) * ((forearm - kSleeveShortOfWristM) / forearm);

@@ -62,7 +62,6 @@ struct PoseReport {
 
 // Geometry the measures share.
 namespace pose {
-inline glm::vec3 origin(const glm::mat4& m) { return glm::vec3(m[3]); }
 // World matrices of a placed model's nodes as posed.
 void world_of(const PlacedModel& placed, std::vector<glm::mat4>& out);
 double distance_to_line(const glm::vec3& p, const glm::vec3& on_line, const glm::vec3& direction);

@@ -6,20 +6,10 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <tutti/model/world_matrices_below.hpp>
+#include <tutti/stage/performer_rig.hpp>
 
 namespace tutti::stage {
 namespace {
-
-glm::vec3 origin(const glm::mat4& m) { return glm::vec3(m[3]); }
-
-glm::quat world_rotation(const glm::mat4& m) {
-  // Uniform scale only (tutti's rigs): normalise the columns before reading the rotation.
-  glm::mat3 r(m);
-  r[0] = glm::normalize(r[0]);
-  r[1] = glm::normalize(r[1]);
-  r[2] = glm::normalize(r[2]);
-  return glm::normalize(glm::quat_cast(r));
-}
 
 // Sets node's local rotation so that its world rotation becomes `wanted`.
 void set_world_rotation(const model::ModelAsset& asset, int node, const glm::quat& wanted,
@@ -27,7 +17,7 @@ void set_world_rotation(const model::ModelAsset& asset, int node, const glm::qua
                         model::ModelPose& pose) {
   const int parent = asset.nodes[static_cast<std::size_t>(node)].parent;
   const glm::quat parent_rotation =
-      parent >= 0 ? world_rotation(world[static_cast<std::size_t>(parent)]) : world_rotation(root);
+      parent >= 0 ? rotation_of(world[static_cast<std::size_t>(parent)]) : rotation_of(root);
   pose.local[static_cast<std::size_t>(node)].rotation =
       glm::normalize(glm::inverse(parent_rotation) * wanted);
 }
@@ -103,7 +93,7 @@ void solve_two_bone_ik(const model::ModelAsset& asset, const TwoBoneChain& chain
       a + upper_length * (std::cos(shoulder_angle) * axis + std::sin(shoulder_angle) * bend);
 
   const glm::quat turn_upper = rotation_between(glm::normalize(b - a), glm::normalize(elbow - a));
-  const glm::quat upper_world = turn_upper * world_rotation(world[u]);
+  const glm::quat upper_world = turn_upper * rotation_of(world[u]);
   set_world_rotation(asset, chain.upper, upper_world, world, root, pose);
   update_chain(asset, pose, root, chain, world);
 
@@ -112,7 +102,7 @@ void solve_two_bone_ik(const model::ModelAsset& asset, const TwoBoneChain& chain
   const glm::vec3 wanted_end = a + axis * d;
   const glm::quat turn_lower =
       rotation_between(glm::normalize(new_end - new_elbow), glm::normalize(wanted_end - new_elbow));
-  const glm::quat lower_world = turn_lower * world_rotation(world[l]);
+  const glm::quat lower_world = turn_lower * rotation_of(world[l]);
   set_world_rotation(asset, chain.lower, lower_world, world, root, pose);
   model::update_world_matrices_below(asset, pose, root, chain.upper, world);
 }

@@ -7,11 +7,6 @@
 
 namespace tutti::content_generator {
 
-namespace {
-constexpr double kPi = std::numbers::pi;
-}  // namespace
-
-float m(double mm) { return static_cast<float>(mm / 1000.0); }
 Vec3 mm(double x, double y, double z) { return {m(x), m(y), m(z)}; }
 
 // A constant-radius pipe through `points` (millimetres), open ends.

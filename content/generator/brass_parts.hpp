@@ -12,7 +12,6 @@
 
 namespace tutti::content_generator {
 
-float m(double mm);
 Vec3 mm(double x, double y, double z);
 
 // A constant-radius pipe through `points` (metres, as mm() makes them), open ends by default.

@@ -34,13 +34,6 @@ void push_quad(MeshData& mesh, Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 normal) {
   }
 }
 
-Vec3 sub(Vec3 a, Vec3 b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 add(Vec3 a, Vec3 b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 scaled(Vec3 a, float s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-float dot(Vec3 a, Vec3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(Vec3 a, Vec3 b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 Vec3 normalised(Vec3 a) {
   const float length = std::sqrt(dot(a, a));
   return length > 0.0f ? scaled(a, 1.0f / length) : a;

@@ -20,6 +20,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,25 @@ namespace tutti::content_generator {
 using Vec3 = std::array<float, 3>;    // mesh data
 using DVec3 = std::array<double, 3>;  // node transforms
 using Quat = std::array<double, 4>;   // unit quaternion x, y, z, w
+
+inline constexpr double kPi = std::numbers::pi;
+// Millimetres (the dimensions' unit) to metres (glTF's), as mesh data.
+inline float m(double mm) { return static_cast<float>(mm / 1000.0); }
+
+// Vector arithmetic on mesh data (float) and on transforms (double).
+inline Vec3 sub(Vec3 a, Vec3 b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline Vec3 add(Vec3 a, Vec3 b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline Vec3 scaled(Vec3 a, float s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+inline float dot(Vec3 a, Vec3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(Vec3 a, Vec3 b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline DVec3 add(DVec3 a, DVec3 b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline DVec3 scaled(DVec3 a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+inline double dot(DVec3 a, DVec3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline DVec3 cross(DVec3 a, DVec3 b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 using Mat4 = std::array<double, 16>;  // column-major 4x4, like glTF
 
 // Vertex deltas of one morph target (same vertex count as the base mesh).

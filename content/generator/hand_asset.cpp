@@ -6,8 +6,6 @@
 namespace tutti::content_generator {
 namespace {
 
-float m(double mm) { return static_cast<float>(mm / 1000.0); }
-
 Vec3 to_vec3(const DVec3& v) {
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
 }

@@ -14,7 +14,6 @@ namespace {
 
 using content::NumberField;
 
-constexpr const char* kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
 constexpr double kAngleMin = -180.0;
 constexpr double kAngleMax = 180.0;
 

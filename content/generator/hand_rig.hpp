@@ -49,6 +49,8 @@ struct HandRigData {
 
 // Bone names without the side suffix: "thumb_1" .. "little_3"; `finger` 1..5, `segment` 1..3.
 std::string finger_bone_name(int finger, int segment);
+// The fingers' names in bone names, thumb first.
+inline constexpr const char* kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
 
 struct FingerRig {
   std::array<double, 3> root_mm{};          // x, y, z from the middle finger's MCP

@@ -12,14 +12,6 @@
 namespace tutti::content_generator {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-DVec3 add(DVec3 a, DVec3 b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-DVec3 scaled(DVec3 a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-double dot(DVec3 a, DVec3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-DVec3 cross(DVec3 a, DVec3 b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 DVec3 unit(DVec3 a) { return scaled(a, 1.0 / std::sqrt(dot(a, a))); }
 Vec3 at_mm(DVec3 p) { return mm(p[0], p[1], p[2]); }
 

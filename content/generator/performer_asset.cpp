@@ -16,12 +16,9 @@
 namespace tutti::content_generator {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 DVec3 operator+(DVec3 a, DVec3 b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 DVec3 operator-(DVec3 a, DVec3 b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 DVec3 operator*(double s, DVec3 a) { return {s * a[0], s * a[1], s * a[2]}; }
-double dot(DVec3 a, DVec3 b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double length(DVec3 a) { return std::sqrt(dot(a, a)); }
 Vec3 f3(DVec3 a) {
   return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2])};
@@ -204,7 +201,6 @@ void add_hanging_hand(Skeleton& skeleton, MeshData& skin, const HandRig& rig,
   constexpr double kCurlDeg[3] = {12.0, 18.0, 10.0};
   constexpr double kThumbCurlDeg[3] = {8.0, 10.0, 10.0};
   constexpr double kThumbOutDeg = 28.0;
-  static const char* const kFingerNames[5] = {"thumb", "index", "middle", "ring", "little"};
   for (std::size_t fi = 0; fi < 5; ++fi) {
     const FingerRig& finger = rig.fingers[fi];
     const bool thumb = fi == 0;

@@ -10,8 +10,6 @@
 namespace tutti::content_generator {
 namespace {
 
-float m(double mm) { return static_cast<float>(mm / 1000.0); }
-
 // The pedals (pedal_geometry.hpp) hinged at the console's front `hinge_z_m`, on a frame on the
 // floor: `root` > `pedalboard` > `pedal_36`..`pedal_67`.
 void add_pedalboard(ModelBuilder& builder, const piano::Pedalboard& board, double hinge_z_m,

@@ -6,12 +6,6 @@
 #include <tutti/generator/gltf_builder.hpp>
 
 namespace tutti::content_generator {
-namespace {
-
-float m(double mm) { return static_cast<float>(mm / 1000.0); }
-
-}  // namespace
-
 tinygltf::Model build_music_stand(const MusicStandDimensions& dims) {
   ModelBuilder builder;
   const int steel = builder.add_material({"stand_steel", {0.05, 0.05, 0.055, 1.0}, 1.0, 0.45});

@@ -6,12 +6,6 @@
 #include <tutti/generator/gltf_builder.hpp>
 
 namespace tutti::content_generator {
-namespace {
-
-float m(double mm) { return static_cast<float>(mm / 1000.0); }
-
-}  // namespace
-
 tinygltf::Model build_stage(const StageDimensions& dims) {
   ModelBuilder builder;
   const int oak = builder.add_material({"stage_oak", {0.32, 0.17, 0.07, 1.0}, 0.0, 0.55});

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <tutti/audio/synth_events.hpp>
+#include <tutti/music/general_midi.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,6 @@
 namespace tutti::audio {
 namespace {
 
-constexpr int kPercussionChannel = 9;
 constexpr int kSustainPedal = 64;
 constexpr int kMaxParts = 240;
 
@@ -52,9 +52,9 @@ Result<SynthTimeline> build_synth_timeline(std::span<const music::Score* const> 
     std::vector<int> channel_of_part(score.parts.size(), 0);
     for (std::size_t p = 0; p < score.parts.size(); ++p) {
       const music::Part& part = score.parts[p];
-      int channel = kPercussionChannel;
+      int channel = music::kPercussionChannel;
       if (!part.percussion) {
-        if (next_melodic % 16 == kPercussionChannel) ++next_melodic;
+        if (next_melodic % 16 == music::kPercussionChannel) ++next_melodic;
         channel = next_melodic++;
         timeline.events.push_back(
             {0, SynthEventKind::program, channel, std::clamp(part.program, 0, 127), 0, -1, -1});

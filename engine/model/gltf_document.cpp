@@ -19,12 +19,6 @@ constexpr std::uint32_t kChunkJson = 0x4E4F534A;
 constexpr std::uint32_t kChunkBin = 0x004E4942;
 constexpr std::size_t kMaxMessage = 300;
 
-std::uint32_t read_u32(std::span<const std::uint8_t> bytes, std::size_t offset) {
-  std::uint32_t value = 0;
-  std::memcpy(&value, bytes.data() + offset, 4);  // little-endian host (x86-64, arm64)
-  return value;
-}
-
 // A JSON pre-pass that tinygltf never sees fail: nlohmann's SAX parser is iterative, so depth and
 // size are checked before anything recursive or large runs. Also collects buffers[i].uri and
 // images[i].uri (the files a .gltf may read next to it).

@@ -12,6 +12,7 @@
 #include <tiny_gltf.h>
 
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <string>
@@ -24,6 +25,16 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 inline constexpr std::size_t kMaxJsonValues = 2'000'000;
 // A model file (and each external buffer) is read up to this size.
 inline constexpr std::size_t kMaxModelFileBytes = std::size_t{256} << 20;
+// The most elements a decoded (compressed) view or primitive may hold.
+inline constexpr std::size_t kMaxDecodedCount = std::size_t{1} << 24;
+
+// The little-endian 32-bit word at `offset` (the caller checks the bounds): the host is
+// little-endian (x86-64, arm64).
+inline std::uint32_t read_u32(std::span<const std::uint8_t> bytes, std::size_t offset) {
+  std::uint32_t value = 0;
+  std::memcpy(&value, bytes.data() + offset, 4);
+  return value;
+}
 
 // `base_dir`: where external buffers of a .gltf are looked for; nullopt = external files are
 // refused (bytes from memory, the fuzzer). The error is a reason without the file name.

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include <tutti/model/gltf_accessors.hpp>
+#include <tutti/model/gltf_document.hpp>
 
 namespace tutti::model::detail {
 namespace {
 
 constexpr const char* kDraco = "KHR_draco_mesh_compression";
-constexpr std::size_t kMaxDecodedCount = std::size_t{1} << 24;
 
 int add_view(tinygltf::Model& model, std::vector<unsigned char> data) {
   tinygltf::Buffer buffer;

@@ -21,7 +21,6 @@ using json = nlohmann::json;
 constexpr const char* kMeshopt = "EXT_meshopt_compression";
 // What a decoded view or a dense accessor may grow to (the file cap).
 constexpr std::size_t kMaxDecodedBytes = kMaxModelFileBytes;
-constexpr std::size_t kMaxDecodedCount = std::size_t{1} << 24;
 
 // Extensions whose data tutti decodes.
 const std::set<std::string> kDecoded = {"KHR_mesh_quantization", kMeshopt,
@@ -33,12 +32,6 @@ bool appearance_only(const std::string& name) {
          name == "MSFT_texture_dds" || name == "KHR_lights_punctual" ||
          name == "EXT_lights_image_based" || name == "KHR_xmp_json_ld" ||
          name == "KHR_materials_variants";
-}
-
-std::uint32_t read_u32(std::span<const std::uint8_t> bytes, std::size_t offset) {
-  std::uint32_t value = 0;
-  std::memcpy(&value, bytes.data() + offset, 4);
-  return value;
 }
 
 void append_u32(std::vector<std::uint8_t>& out, std::uint32_t value) {

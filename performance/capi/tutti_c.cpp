@@ -200,7 +200,8 @@ const char* tutti_event_kind_name(int32_t kind) {
         !e.empty()) {
       return fail_with<const char*>(nullptr, e);
     }
-    // The names are string literals of the families (stage::StopKind): NUL-terminated, static.
+    // The names are string literals (performance::event_kinds, stage::StopName): NUL-terminated
+    // and static.
     return kinds[static_cast<std::size_t>(kind)].data();
   });
 }

@@ -17,7 +17,7 @@
 namespace tutti::brass_family {
 namespace {
 
-using json = nlohmann::ordered_json;
+using nlohmann::ordered_json;
 
 // Sections in seating order, from the audience's left.
 struct Section {
@@ -134,16 +134,16 @@ Result<stage::FamilyDraft> BrassPlugin::draft(const music::Score& score,
     draft.summary += (draft.summary.empty() ? "" : ", ") + std::to_string(count) + " " +
                      std::string(kSections[section].model) + (count > 1 ? "s" : "");
   }
-  json performers = json::array();
+  ordered_json performers = ordered_json::array();
   for (std::size_t i = 0; i < players.size(); ++i) {
     const Player& p = players[i];
-    json performer{{"name", p.name},
-                   {"instrument", p.instrument->id},
-                   {"part", stage::draft_part_reference(score, p.part)},
-                   {"position_m", stage::draft_vec3(p.x, 0.0, p.z)},
-                   {"facing_deg", stage::draft_round_mm(p.facing_deg)},
-                   {"stance", "seated"},
-                   {"music_stand", false}};
+    ordered_json performer{{"name", p.name},
+                           {"instrument", p.instrument->id},
+                           {"part", stage::draft_part_reference(score, p.part)},
+                           {"position_m", stage::draft_vec3(p.x, 0.0, p.z)},
+                           {"facing_deg", stage::draft_round_mm(p.facing_deg)},
+                           {"stance", "seated"},
+                           {"music_stand", false}};
     if (p.voice != 1) performer["voice"] = p.voice;
     if (i == 0) performer["lead"] = true;
     performers.push_back(std::move(performer));

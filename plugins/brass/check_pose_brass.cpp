@@ -20,10 +20,10 @@
 namespace tutti::brass_family {
 namespace {
 
+using stage::origin;
 using stage::pose::distance_to_line;
 using stage::pose::kFingerNames;
 using stage::pose::kPadRadiusMm;
-using stage::pose::origin;
 
 // A hand held in the bell (the horn's right hand: its palm_at node inside the bell): how far its
 // fingertips' pads reach through the bell's wall, by the profile the model's bell_rim carries.

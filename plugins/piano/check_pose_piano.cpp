@@ -21,10 +21,10 @@
 namespace tutti::piano_family {
 namespace {
 
+using stage::origin;
 using stage::PoseMeasure;
 using stage::pose::kFingerNames;
 using stage::pose::kPadRadiusMm;
-using stage::pose::origin;
 using FingerNodes = stage::PoseChecker::FingerNodes;
 
 // Each keyboard player's keys over the checked range (seconds summed over keys).

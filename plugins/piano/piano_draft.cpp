@@ -18,7 +18,7 @@
 namespace tutti::piano_family {
 namespace {
 
-using json = nlohmann::ordered_json;
+using nlohmann::ordered_json;
 
 bool any_word_in(const std::vector<std::string>& words,
                  std::initializer_list<std::string_view> set) {
@@ -85,8 +85,8 @@ Result<piano::KeyboardInstruments> load_instruments() {
       piano::keyboard_instruments_path(piano::default_content_dir()));
 }
 
-json part_references(const music::Score& score, const std::vector<int>& parts) {
-  json references = json::array();
+ordered_json part_references(const music::Score& score, const std::vector<int>& parts) {
+  ordered_json references = ordered_json::array();
   for (int p : parts) references.push_back(stage::draft_part_reference(score, p));
   return references;
 }
@@ -144,22 +144,22 @@ Result<stage::FamilyDraft> PianoPlugin::draft(const music::Score& score,
 
   // The pianist alone is written the older way ("pianist", at the default bench).
   if (with_piano && keyboardists.empty()) {
-    json pianist{{"parts", part_references(score, piano_parts)}};
+    ordered_json pianist{{"parts", part_references(score, piano_parts)}};
     if (x0 != 0.0) pianist["position_m"] = stage::draft_vec3(x0, 0.0, 0.6);
     draft.section.emplace_back("pianist", std::move(pianist));
   } else {
-    json pianists = json::array();
+    ordered_json pianists = ordered_json::array();
     if (with_piano) {
-      json pianist{{"parts", part_references(score, piano_parts)}};
+      ordered_json pianist{{"parts", part_references(score, piano_parts)}};
       if (x0 != 0.0) pianist["position_m"] = stage::draft_vec3(x0, 0.0, 0.6);
       pianists.push_back(std::move(pianist));
     }
     for (std::size_t k = 0; k < keyboardists.size(); ++k) {
-      pianists.push_back(
-          json{{"instrument", keyboardists[k].instrument->id},
-               {"parts", part_references(score, keyboardists[k].parts)},
-               {"position_m", stage::draft_vec3(x0 + keyboardist_x(with_piano, k), 0.0, 0.6)},
-               {"facing_deg", 180}});
+      pianists.push_back(ordered_json{
+          {"instrument", keyboardists[k].instrument->id},
+          {"parts", part_references(score, keyboardists[k].parts)},
+          {"position_m", stage::draft_vec3(x0 + keyboardist_x(with_piano, k), 0.0, 0.6)},
+          {"facing_deg", 180}});
     }
     draft.section.emplace_back("pianists", std::move(pianists));
   }
@@ -173,8 +173,8 @@ Result<stage::FamilyDraft> PianoPlugin::draft(const music::Score& score,
 
   if (with_piano) {
     // content/scenes/piano.json's cameras.
-    const json overview = stage::draft_camera(place.alone ? "wide" : "piano", x0 + 2.4, 1.55, 3.0,
-                                              x0, 0.95, 0.25, 40.0);
+    const ordered_json overview = stage::draft_camera(place.alone ? "wide" : "piano", x0 + 2.4,
+                                                      1.55, 3.0, x0, 0.95, 0.25, 40.0);
     if (keyboardists.empty() && place.alone) draft.wide_camera_alone = overview;
     if (!place.alone) draft.cameras.push_back(overview);
     draft.cameras.push_back(

@@ -6,13 +6,13 @@
 namespace tutti::brass {
 namespace {
 
-bool down(std::uint8_t mask, std::size_t valve) { return (mask & (1u << valve)) != 0; }
+bool valve_is_down(std::uint8_t mask, std::size_t valve) { return (mask & (1u << valve)) != 0; }
 
 std::string joined(std::span<const ValveSpec> valves, std::uint8_t mask) {
   std::string name;
   for (const bool side_first : {true, false}) {
     for (std::size_t i = 0; i < valves.size(); ++i) {
-      if (!down(mask, i) || valves[i].switches_side != side_first) continue;
+      if (!valve_is_down(mask, i) || valves[i].switches_side != side_first) continue;
       name += (name.empty() ? "" : "-") + valves[i].name;
     }
   }
@@ -36,7 +36,7 @@ std::optional<std::uint8_t> parse_combination(std::span<const ValveSpec> valves,
     bool found = false;
     for (std::size_t i = 0; i < valves.size() && !found; ++i) {
       if (valves[i].name != token) continue;
-      if (down(mask, i)) return std::nullopt;  // "1-1"
+      if (valve_is_down(mask, i)) return std::nullopt;  // "1-1"
       mask = static_cast<std::uint8_t>(mask | (1u << i));
       found = true;
     }

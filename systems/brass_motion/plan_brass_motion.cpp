@@ -7,13 +7,13 @@
 namespace tutti::brass {
 namespace {
 
-struct Played {
+struct PlayedFingering {
   const LineNote* note;
   const Fingering* fingering;
 };
 
-std::vector<Played> played_notes(const BrassLine& line) {
-  std::vector<Played> out;
+std::vector<PlayedFingering> played_notes(const BrassLine& line) {
+  std::vector<PlayedFingering> out;
   out.reserve(line.notes.size());
   for (const LineNote& n : line.notes) {
     if (!n.playable || n.fingering < 0) continue;
@@ -24,7 +24,7 @@ std::vector<Played> played_notes(const BrassLine& line) {
   return out;
 }
 
-void plan_valves(const std::vector<Played>& played, const BrassMotionParams& p,
+void plan_valves(const std::vector<PlayedFingering>& played, const BrassMotionParams& p,
                  const ChangeWindow& window, BrassMotionPlan& plan) {
   for (int v = 0; v < plan.valve_count; ++v) {
     const auto bit = static_cast<std::uint8_t>(1u << v);
@@ -70,7 +70,7 @@ void plan_valves(const std::vector<Played>& played, const BrassMotionParams& p,
   }
 }
 
-void plan_slide(const std::vector<Played>& played, const Instrument& instrument,
+void plan_slide(const std::vector<PlayedFingering>& played, const Instrument& instrument,
                 const BrassMotionParams& p, const ChangeWindow& window, BrassMotionPlan& plan) {
   plan.has_slide = instrument.mechanism == Mechanism::slide;
   if (!plan.has_slide || played.empty()) return;
@@ -107,7 +107,7 @@ void plan_slide(const std::vector<Played>& played, const Instrument& instrument,
 // leaves, each move at its farther end), eased in before and out after over slide_reach_ramp_s.
 // The trombonist turns the chest and dips the slide for the far positions by this, not by the
 // slide's own extension, so a quick move between far positions does not swing the body with it.
-void plan_slide_reach(const std::vector<Played>& played, const BrassMotionParams& p,
+void plan_slide_reach(const std::vector<PlayedFingering>& played, const BrassMotionParams& p,
                       BrassMotionPlan& plan) {
   if (!plan.has_slide || played.empty()) return;
   // Before the first move and after the last, the slide stays out while the phrase's notes last
@@ -124,13 +124,13 @@ void plan_slide_reach(const std::vector<Played>& played, const BrassMotionParams
     held_mm = m.to_mm;
   }
   double last_offset = held_from;
-  for (const Played& n : played) last_offset = std::max(last_offset, n.note->offset_s);
+  for (const PlayedFingering& n : played) last_offset = std::max(last_offset, n.note->offset_s);
   needs.push_back({held_from, last_offset + kAfterLastS, held_mm});
   plan.slide_reach = tutti::spline_motion::plan_plateau_envelope(std::move(needs), p.slide_reach_ramp_s,
                                                           p.slide_reach_bridge_s);
 }
 
-void plan_mouth(const std::vector<Played>& played, const Instrument& instrument,
+void plan_mouth(const std::vector<PlayedFingering>& played, const Instrument& instrument,
                 const BrassMotionParams& p, BrassMotionPlan& plan) {
   plan.rest_tension = static_cast<float>(p.mouth_rest_tension);
   plan.corner_pull_from = static_cast<float>(p.corner_pull_from);
@@ -176,7 +176,7 @@ BrassMotionPlan plan_brass_motion(const BrassLine& line, const BrassMotionParams
   if (line.instrument == nullptr) return plan;
   const Instrument& instrument = *line.instrument;
   plan.valve_count = std::min<int>(static_cast<int>(instrument.valves.size()), kMaxValves);
-  const std::vector<Played> played = played_notes(line);
+  const std::vector<PlayedFingering> played = played_notes(line);
   plan_valves(played, params, window, plan);
   plan_slide(played, instrument, params, window, plan);
   plan_slide_reach(played, params, plan);

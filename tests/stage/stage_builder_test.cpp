@@ -13,6 +13,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <tutti/components/note.hpp>
@@ -68,6 +69,11 @@ class BellSection final : public scene::SceneSection {
 // The test family's stop: the clapper strikes each time the swing passes a whole radian (value:
 // that radian), found by a tracker of its own.
 constexpr StopKind kBellStrike{"bell_strike", "bell strike", true};
+// A stop's name reaches hosts as a C string, so only a string literal makes one: text that a
+// family builds at run time (and frees) does not compile.
+static_assert(!std::is_constructible_v<StopName, std::string>);
+static_assert(!std::is_constructible_v<StopName, const char*>);
+static_assert(kBellStrike.name == "bell_strike" && kBellStrike.name.c_str()[11] == '\0');
 constexpr std::array<const StopKind*, 1> kBellStops{&kBellStrike};
 
 class BellTracker final : public StopTracker {

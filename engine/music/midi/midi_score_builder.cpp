@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <tutti/music/midi/midi_score_builder.hpp>
+#include <tutti/music/general_midi.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -13,7 +14,6 @@ namespace tutti::music::midi_detail {
 namespace {
 
 constexpr int kSustainController = 64;
-constexpr int kPercussionChannel = 9;
 constexpr int kMaxDenominatorPower = 10;     // 1/1024 notes; anything beyond is corrupt data
 constexpr int kDefaultReleaseVelocity = 64;  // what a note-on with velocity 0 implies
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <tutti/music/midi/midi_writer.hpp>
+#include <tutti/music/general_midi.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,6 @@ using midi_detail::SmfTrackEncoder;
 constexpr int kFallbackTicksPerQuarter = 480;
 constexpr int kMaxTicksPerQuarter = 0x7FFF;  // the division field has 15 bits
 constexpr std::size_t kMaxTracks = 0xFFFF;
-constexpr int kPercussionChannel = 9;
 
 // The rank orders events at one tick. Lifts before presses and note-offs before note-ons, so a
 // note or pedal that ends where the next one starts is read back as two, and zero-length notes

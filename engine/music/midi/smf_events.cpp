@@ -9,7 +9,6 @@ namespace {
 
 constexpr std::uint8_t kSysex = 0xF0;
 constexpr std::uint8_t kSysexEscape = 0xF7;
-constexpr std::uint8_t kMeta = 0xFF;
 
 // Data bytes after the status byte, by the high nibble of a channel status 0x80..0xE0.
 int channel_data_bytes(std::uint8_t status) {

@@ -25,6 +25,7 @@ namespace tutti::music::midi_detail {
 
 enum class SmfEventKind : std::uint8_t { channel, sysex, meta };
 
+inline constexpr std::uint8_t kMeta = 0xFF;  // the status byte of a meta event
 inline constexpr std::uint8_t kMetaEndOfTrack = 0x2F;
 
 struct SmfEvent {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <tutti/music/midi/smf_track_encoder.hpp>
+#include <tutti/music/midi/smf_events.hpp>
 
 #include <algorithm>
 #include <tuple>
@@ -8,9 +9,7 @@ namespace tutti::music::midi_detail {
 namespace {
 
 constexpr std::uint32_t kMaxVarLen = 0x0FFFFFFF;  // 4 bytes of 7 bits
-constexpr std::uint8_t kMeta = 0xFF;
 constexpr std::uint8_t kMetaSequencerSpecific = 0x7F;
-constexpr std::uint8_t kMetaEndOfTrack = 0x2F;
 
 std::uint8_t data_byte(int value) { return static_cast<std::uint8_t>(std::clamp(value, 0, 127)); }
 

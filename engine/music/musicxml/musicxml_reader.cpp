@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <tutti/music/musicxml/musicxml_reader.hpp>
+#include <tutti/music/general_midi.hpp>
 
 #include <algorithm>
 #include <pugixml.hpp>
@@ -18,7 +19,6 @@ namespace {
 using musicxml::PartLayout;
 using musicxml::PartTimeline;
 
-constexpr int kPercussionChannel = 9;
 
 // Channels for parts that state none: one per part in order, skipping the percussion channel.
 int automatic_channel(std::size_t part_index) {

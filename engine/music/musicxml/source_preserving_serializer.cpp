@@ -2,12 +2,11 @@
 #include <tutti/music/musicxml/source_preserving_serializer.hpp>
 
 #include <tutti/music/musicxml/xml_source_range.hpp>
+#include <tutti/music/musicxml/xml_text_values.hpp>
 
 namespace tutti::music::musicxml {
 
 namespace {
-
-bool is_xml_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 // "<x a='1'/>" -> "<x a='1'>", for an originally empty element that has children now.
 std::string_view open_form(std::string_view self_closing_tag) {

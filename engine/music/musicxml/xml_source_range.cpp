@@ -3,11 +3,11 @@
 
 #include <cstring>
 
+#include <tutti/music/musicxml/xml_text_values.hpp>
+
 namespace tutti::music::musicxml {
 
 namespace {
-
-bool is_xml_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 // Index of the '>' closing the start tag whose name ends at `from`. Attribute values may hold
 // '>', so quoted text is skipped.

@@ -7,8 +7,6 @@
 namespace tutti::music::musicxml {
 
 namespace {
-bool is_xml_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-
 // from_chars rejects a leading '+', which XML numbers allow.
 std::string_view without_plus(std::string_view text) {
   if (text.size() > 1 && text.front() == '+' && text[1] != '-') text.remove_prefix(1);

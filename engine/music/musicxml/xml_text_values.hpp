@@ -12,6 +12,9 @@
 
 namespace tutti::music::musicxml {
 
+// XML's whitespace: space, tab, line feed, carriage return.
+constexpr bool is_xml_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
 // The element's text (first PCDATA/CDATA child) without leading or trailing XML whitespace.
 std::string_view trimmed_text(pugi::xml_node element);
 std::string_view trim_xml_space(std::string_view text);
