@@ -11,18 +11,18 @@
 namespace tutti::audio {
 namespace {
 
-constexpr int kRate = 48000;
+constexpr int kSampleRate = 48000;
 
 // Stereo 16-bit: a `bass_hz` tone throughout (amplitude `bass`), plus a `tone_hz` tone from
 // `start_s` (amplitude `tone`, a 1 ms linear fade-in).
 AudioBuffer tones(double seconds, double bass_hz, double bass, double tone_hz, double tone,
                   double start_s) {
   AudioBuffer audio;
-  audio.sample_rate = kRate;
+  audio.sample_rate = kSampleRate;
   audio.channels = 2;
-  const auto frames = static_cast<std::size_t>(seconds * kRate);
+  const auto frames = static_cast<std::size_t>(seconds * kSampleRate);
   for (std::size_t f = 0; f < frames; ++f) {
-    const double t = static_cast<double>(f) / kRate;
+    const double t = static_cast<double>(f) / kSampleRate;
     double x = bass * std::sin(2 * std::numbers::pi * bass_hz * t);
     if (t >= start_s) {
       x += tone * std::min(1.0, (t - start_s) / 0.001) *

@@ -19,6 +19,11 @@
 
 namespace tutti::test {
 
+// Indices of a position's axes.
+inline constexpr int kX = 0;
+inline constexpr int kY = 1;
+inline constexpr int kZ = 2;
+
 inline std::filesystem::path content_dir() { return TUTTI_CONTENT_DIR; }
 
 // Generates every asset into a fresh temporary folder (removed by the destructor).

@@ -11,10 +11,6 @@
 namespace tutti::test {
 namespace {
 
-constexpr int kX = 0;
-constexpr int kY = 1;
-constexpr int kZ = 2;
-
 piano::Keyboard keyboard() {
   auto loaded = piano::Keyboard::load(content_dir() / "piano" / "keyboard.json");
   EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message);

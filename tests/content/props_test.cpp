@@ -10,10 +10,6 @@
 namespace tutti::test {
 namespace {
 
-constexpr int kX = 0;
-constexpr int kY = 1;
-constexpr int kZ = 2;
-
 class Props : public ::testing::Test {
  protected:
   void SetUp() override { assets_ = std::make_unique<GeneratedAssets>("props"); }

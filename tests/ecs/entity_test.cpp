@@ -10,7 +10,7 @@
 namespace tutti::ecs {
 namespace {
 
-struct Position {
+struct Heading {
   float x = 0.0F;
 };
 
@@ -56,9 +56,9 @@ TEST(EntityTest, PrintsIndexVGeneration) {
 TEST(TypeNameTest, NamesTheType) {
   static_assert(type_name<int>() == "int");
   EXPECT_EQ(type_name<double>(), "double");
-  EXPECT_NE(type_name<Position>().find("Position"), std::string_view::npos);
-  EXPECT_EQ(type_name<Position>().find(']'), std::string_view::npos);
-  EXPECT_EQ(type_name<Position>().find(';'), std::string_view::npos);
+  EXPECT_NE(type_name<Heading>().find("Heading"), std::string_view::npos);
+  EXPECT_EQ(type_name<Heading>().find(']'), std::string_view::npos);
+  EXPECT_EQ(type_name<Heading>().find(';'), std::string_view::npos);
 }
 
 }  // namespace

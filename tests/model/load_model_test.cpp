@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "gltf_test_builder.hpp"
+#include "glm_expect.hpp"
 #include <tutti/image/png.hpp>
 #include <webp/encode.h>
 #include <webp/types.h>
@@ -19,21 +20,12 @@
 namespace tutti::model {
 namespace {
 
+using test::expect_near;
 using test::GltfBuilder;
 using test::kFloat;
 using test::kUnsignedByte;
 using test::kUnsignedInt;
 using test::kUnsignedShort;
-
-void expect_near(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
-
-void expect_near(const glm::vec4& actual, const glm::vec4& expected, float tolerance = 1e-5f) {
-  for (int i = 0; i < 4; ++i) EXPECT_NEAR(actual[i], expected[i], tolerance) << i;
-}
 
 ModelAsset must_load(const std::vector<std::uint8_t>& bytes, const std::string& name) {
   auto asset = test::load_bytes(bytes, name);

@@ -8,24 +8,14 @@
 #include <numbers>
 
 #include "gltf_test_builder.hpp"
+#include "glm_expect.hpp"
 #include <tutti/model/model_asset.hpp>
 
 namespace tutti::model {
 namespace {
 
+using test::expect_near;
 using test::GltfBuilder;
-
-void expect_near(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
-
-void expect_near(const glm::mat4& actual, const glm::mat4& expected, float tolerance = 1e-5f) {
-  for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) EXPECT_NEAR(actual[c][r], expected[c][r], tolerance) << c << r;
-  }
-}
 
 ModelAsset load_or_fail(const GltfBuilder& b, const std::string& name) {
   auto asset = test::load_bytes(b.glb(), name);

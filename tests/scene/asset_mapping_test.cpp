@@ -67,7 +67,7 @@ json trumpet() {
     "nodes": {"valve_1": "V1", "valve_2": "V2", "valve_3": "V3", "mouthpiece": "MP"}})");
 }
 
-std::string error_of(const json& document) {
+std::string mapping_error_of(const json& document) {
   auto mapping = parse_asset_mapping(document, "m.json", "/assets");
   if (mapping.ok()) return "(loaded)";
   return mapping.error().message;
@@ -84,48 +84,49 @@ TEST(AssetMappingErrors, TheValidBaseLoads) {
 TEST(AssetMappingErrors, UnknownRoleListsTheKnownOnes) {
   json doc = trumpet();
   doc["nodes"]["valve_4"] = "V4";
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(mapping_error_of(doc),
             "m.json: /nodes/valve_4: unknown role (known for a trumpet: valve_1, valve_2, "
             "valve_3, mouthpiece, grip_left, grip_right)");
   doc = trumpet();
   doc["morphs"] = {{"open", "jawOpen"}};
-  EXPECT_EQ(error_of(doc), "m.json: /morphs/open: unknown role (a trumpet has none)");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /morphs/open: unknown role (a trumpet has none)");
 }
 
 TEST(AssetMappingErrors, MissingRequiredRole) {
   json doc = json::parse(R"({"model": "bone.glb", "kind": "trombone",
     "nodes": {"mouthpiece": "MP", "bell_section": "Bell"}})");
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(mapping_error_of(doc),
             "m.json: /nodes: missing role \"slide\" (required for a trombone: slide, mouthpiece)");
 }
 
 TEST(AssetMappingErrors, BadValues) {
   json doc = trumpet();
   doc["kind"] = "horn";
-  EXPECT_EQ(error_of(doc), "m.json: /kind: must be one of character, hand, trumpet, trombone");
+  EXPECT_EQ(mapping_error_of(doc),
+            "m.json: /kind: must be one of character, hand, trumpet, trombone");
   doc = trumpet();
   doc["model"] = "horn.fbx";
-  EXPECT_EQ(error_of(doc), "m.json: /model: expected a .glb, .gltf or .vrm file");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /model: expected a .glb, .gltf or .vrm file");
   doc = trumpet();
   doc["scale"] = 0;
-  EXPECT_EQ(error_of(doc), "m.json: /scale: must be positive");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /scale: must be positive");
   doc["scale"] = 5000;
-  EXPECT_EQ(error_of(doc), "m.json: /scale: must be in [0, 1000]");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /scale: must be in [0, 1000]");
   doc = trumpet();
   doc["rotation_deg"] = {0, 720, 0};
-  EXPECT_EQ(error_of(doc), "m.json: /rotation_deg/1: must be in [-360, 360]");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /rotation_deg/1: must be in [-360, 360]");
   doc = trumpet();
   doc["nodes"]["valve_1"] = "";
-  EXPECT_EQ(error_of(doc), "m.json: /nodes/valve_1: must not be empty");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /nodes/valve_1: must not be empty");
   doc = trumpet();
   doc["nodes"]["valve_1"] = 1;
-  EXPECT_EQ(error_of(doc), "m.json: /nodes/valve_1: expected a string");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /nodes/valve_1: expected a string");
   doc = trumpet();
   doc["bones"] = json::object();
-  EXPECT_EQ(error_of(doc), "m.json: /bones: unknown key");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /bones: unknown key");
   doc = trumpet();
   doc.erase("nodes");
-  EXPECT_EQ(error_of(doc), "m.json: /nodes: missing");
+  EXPECT_EQ(mapping_error_of(doc), "m.json: /nodes: missing");
 }
 
 TEST(AssetMappingErrors, BadFiles) {

@@ -18,6 +18,7 @@ namespace tutti::scene {
 namespace {
 
 using nlohmann::json;
+using test::error_of;
 using test::scenes_dir;
 using test::ScratchDir;
 
@@ -150,12 +151,6 @@ json valid_scene() {
     "shots": [{"camera": "wide", "start_s": 0}, {"camera": "close", "start_s": 8.5},
               {"camera": "wide", "start_s": 12}]
   })");
-}
-
-std::string error_of(const json& document) {
-  auto scene = parse_scene(document, "s.json", scenes_dir(), performance::scene_load_options());
-  if (scene.ok()) return "(loaded)";
-  return scene.error().message;
 }
 
 TEST(SceneErrors, TheValidBaseLoads) {

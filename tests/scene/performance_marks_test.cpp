@@ -12,6 +12,7 @@ namespace tutti::scene {
 namespace {
 
 using nlohmann::json;
+using test::error_of;
 using test::scenes_dir;
 
 json scene_with_marks() {
@@ -29,11 +30,6 @@ json scene_with_marks() {
     "cues": [16, 4.5],
     "cameras": [{"name": "wide", "position_m": [0, 1.6, 6], "target_m": [0, 1.1, 0]}]
   })");
-}
-
-std::string error_of(const json& document) {
-  auto scene = parse_scene(document, "s.json", scenes_dir(), performance::scene_load_options());
-  return scene.ok() ? "(loaded)" : scene.error().message;
 }
 
 TEST(PerformanceMarks, AreReadAndSorted) {

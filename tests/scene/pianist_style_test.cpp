@@ -12,6 +12,7 @@ namespace tutti::scene {
 namespace {
 
 using nlohmann::json;
+using test::error_of;
 using test::scenes_dir;
 
 json piano_scene(const json& pianist_extra) {
@@ -22,11 +23,6 @@ json piano_scene(const json& pianist_extra) {
   })");
   document["pianist"].update(pianist_extra);
   return document;
-}
-
-std::string error_of(const json& document) {
-  auto scene = parse_scene(document, "s.json", scenes_dir(), performance::scene_load_options());
-  return scene.ok() ? "(loaded)" : scene.error().message;
 }
 
 TEST(PianistStyle, AbsentMeansTheWrittenSoundAndNoStyle) {

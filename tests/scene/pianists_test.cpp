@@ -29,7 +29,7 @@ json duo() {
   })");
 }
 
-std::string error_of(const json& document) {
+std::string load_error_of(const json& document) {
   auto scene = parse_scene(document, "s.json", scenes_dir(), performance::scene_load_options());
   if (!scene.ok()) return scene.error().message;
   auto scores = load_scene_music(*scene);
@@ -76,38 +76,38 @@ TEST(Pianists, TheOlderSinglePianistStillLoads) {
 TEST(Pianists, Refused) {
   json doc = duo();
   doc["pianist"] = doc["pianists"][0];
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(load_error_of(doc),
             "s.json: /pianists: give \"pianists\" or the older \"pianist\", not both");
   doc = duo();
   doc["pianists"] = json::array();
-  EXPECT_EQ(error_of(doc), "s.json: /pianists: must list at least one pianist");
+  EXPECT_EQ(load_error_of(doc), "s.json: /pianists: must list at least one pianist");
   doc = duo();
   doc["pianists"] = json::object();
-  EXPECT_EQ(error_of(doc), "s.json: /pianists: expected an array");
+  EXPECT_EQ(load_error_of(doc), "s.json: /pianists: expected an array");
   doc = duo();
   doc["pianists"][1] = "pianist";
-  EXPECT_EQ(error_of(doc), "s.json: /pianists/1: expected an object");
+  EXPECT_EQ(load_error_of(doc), "s.json: /pianists/1: expected an object");
   doc = duo();
   doc["pianists"][1]["name"] = "pianist";
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(load_error_of(doc),
             "s.json: /pianists/1/name: duplicate pianist name \"pianist\" (also /pianists/0)");
   doc = duo();
   doc["pianists"][1]["position_m"] = {-0.2, 0, 0.7};
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(load_error_of(doc),
             "s.json: /pianists/1/position_m: the piano stands on /pianists/0's (benches "
             "0.657647 m apart; two pianos need 1.4 m)");
   doc = duo();
   doc["pianists"][1]["parts"] = {"P1"};  // Piano I by its id
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(load_error_of(doc),
             "s.json: /pianists/1/parts/0: part \"P1\" is already played by /pianists/0/parts/0");
   doc = duo();
   doc["pianists"][1]["parts"] = {"Piano III"};
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(load_error_of(doc),
             "s.json: /pianists/1/parts/0: no part \"Piano III\" in piano_duo.musicxml (parts: "
             "Piano I, Piano II)");
   doc = duo();
   doc["pianists"][0]["hand_sise"] = "large";
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(load_error_of(doc),
             "s.json: /pianists/0/hand_sise: unknown key (did you mean \"hand_size\"?)");
 }
 
@@ -125,7 +125,7 @@ TEST(Pianists, EachPlaysAKeyboardInstrumentOfTheirOwn) {
   EXPECT_EQ(scene->pianists[0].name, "organist");
   EXPECT_EQ(scene->pianists[1].name, "organist 2");
   doc["pianists"][1]["instrument"] = "orgen";
-  EXPECT_EQ(error_of(doc),
+  EXPECT_EQ(load_error_of(doc),
             "s.json: /pianists/1/instrument: unknown keyboard instrument \"orgen\" (did you mean "
             "\"organ\"?) (instruments.json has: celesta, clavinet, electric_piano, harpsichord, "
             "organ, piano, synth)");

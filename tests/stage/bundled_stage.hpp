@@ -6,9 +6,11 @@
 
 #include <filesystem>
 #include <memory>
+#include <string_view>
 
 #include <tutti/performance/families.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include <tutti/stage/contact_detector.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::stage::test {
@@ -22,5 +24,8 @@ inline std::unique_ptr<Stage> stage_bundled_scene(const char* scene_name) {
   EXPECT_TRUE(stage) << stage.error().message;
   return stage ? std::move(*stage) : nullptr;
 }
+
+// Whether the stop is of the kind named `kind` (its host event name).
+inline bool stop_is(const Stop& stop, std::string_view kind) { return stop.kind->name == kind; }
 
 }  // namespace tutti::stage::test

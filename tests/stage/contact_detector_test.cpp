@@ -19,12 +19,6 @@ namespace tutti::stage {
 namespace {
 
 // Stops are of the kinds their families name.
-bool is(const Stop& stop, std::string_view kind) { return stop.kind->name == kind; }
-
-std::unique_ptr<Stage> build(const char* scene_name) {
-  return test::stage_bundled_scene(scene_name);
-}
-
 bool same(const std::vector<Stop>& a, const std::vector<Stop>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -39,18 +33,18 @@ bool same(const std::vector<Stop>& a, const std::vector<Stop>& b) {
 // The organist (content/scenes/organ.json): each pedal the feet play reaches its bottom as its
 // note starts (the pedal is down by the onset), and comes back up, on the pedalboard's keys.
 TEST(ContactDetector, EachPedalTheFeetPlayGoesDownByItsNoteAndComesBackUp) {
-  auto stage = build("organ.json");
+  auto stage = test::stage_bundled_scene("organ.json");
   ASSERT_NE(stage, nullptr);
   const StopGrid grid{stage->start_s(), stage->end_s(), 0.002, true};
   const std::vector<Stop> stops = detect_stops(*stage, grid);
   std::vector<double> pedal_downs;
   int held = 0, ups = 0;
   for (const Stop& stop : stops) {
-    if (!is(stop, "pedal_down") && !is(stop, "pedal_up")) continue;
+    if (!test::stop_is(stop, "pedal_down") && !test::stop_is(stop, "pedal_up")) continue;
     EXPECT_GE(stop.value, 36);
     EXPECT_LE(stop.value, 67);
     ASSERT_NE(stage->world().try_get<components::Performer>(stop.performer), nullptr);
-    if (is(stop, "pedal_down")) {
+    if (test::stop_is(stop, "pedal_down")) {
       pedal_downs.push_back(stop.t_s);
       ++held;
     } else {
@@ -82,7 +76,7 @@ TEST(ContactDetector, EachPedalTheFeetPlayGoesDownByItsNoteAndComesBackUp) {
 // The pianist: every key that reaches its bed leaves it again on the same key (but those still
 // down when the range ends), on the piano's keys, and the same stops on a second run.
 TEST(ContactDetector, EveryKeyThePianistPressesComesBackUp) {
-  auto stage = build("piano.json");
+  auto stage = test::stage_bundled_scene("piano.json");
   ASSERT_NE(stage, nullptr);
   const StopGrid grid{stage->start_s(), stage->start_s() + 8.0, 0.002, false};
   const std::vector<Stop> stops = detect_stops(*stage, grid);
@@ -92,12 +86,12 @@ TEST(ContactDetector, EveryKeyThePianistPressesComesBackUp) {
     EXPECT_GE(stop.t_s, grid.from_s);
     EXPECT_LE(stop.t_s, grid.to_s);
     ASSERT_NE(stage->world().try_get<components::Performer>(stop.performer), nullptr);
-    ASSERT_TRUE(is(stop, "key_down") || is(stop, "key_up"));
+    ASSERT_TRUE(test::stop_is(stop, "key_down") || test::stop_is(stop, "key_up"));
     EXPECT_TRUE(stop.sounding);
     EXPECT_GE(stop.value, 21);
     EXPECT_LE(stop.value, 108);
     int& held = down[{stop.performer.bits(), stop.value}];
-    if (is(stop, "key_down")) {
+    if (test::stop_is(stop, "key_down")) {
       ++held;
       ++downs;
     } else {
@@ -114,7 +108,7 @@ TEST(ContactDetector, EveryKeyThePianistPressesComesBackUp) {
 // The quartet: valves reach both stops, slides come to rest, players start to sound; a valve
 // let go or a slide at rest counts as sounding only where the player sounds around it.
 TEST(ContactDetector, TheBrassValvesSlidesAndTonguesAreFound) {
-  auto stage = build("quartet.json");
+  auto stage = test::stage_bundled_scene("quartet.json");
   ASSERT_NE(stage, nullptr);
   const StopGrid grid{stage->start_s(), stage->start_s() + 20.0, 0.002, false};
   const std::vector<Stop> stops = detect_stops(*stage, grid);
@@ -125,9 +119,9 @@ TEST(ContactDetector, TheBrassValvesSlidesAndTonguesAreFound) {
     EXPECT_NE(stage->world().try_get<components::Performer>(stop.performer), nullptr);
     if (!stop.sounding) {
       ++silent;
-      EXPECT_TRUE(is(stop, "valve_up") || is(stop, "slide_arrives"));
+      EXPECT_TRUE(test::stop_is(stop, "valve_up") || test::stop_is(stop, "slide_arrives"));
     }
-    if (is(stop, "slide_arrives")) {
+    if (test::stop_is(stop, "slide_arrives")) {
       EXPECT_GE(stop.value, 1);
       EXPECT_LE(stop.value, 7);
     }
@@ -141,7 +135,7 @@ TEST(ContactDetector, TheBrassValvesSlidesAndTonguesAreFound) {
 }
 
 TEST(ContactDetector, AnEmptyGridFindsNothing) {
-  auto stage = build("piano.json");
+  auto stage = test::stage_bundled_scene("piano.json");
   ASSERT_NE(stage, nullptr);
   EXPECT_TRUE(detect_stops(*stage, {1.0, 2.0, 0.0, false}).empty());
   EXPECT_TRUE(detect_stops(*stage, {2.0, 1.0, 0.001, false}).empty());

@@ -21,12 +21,6 @@ namespace tutti::stage {
 namespace {
 
 // Stops are of the kinds their families name.
-bool is(const Stop& stop, std::string_view kind) { return stop.kind->name == kind; }
-
-std::unique_ptr<Stage> build(const char* scene_name) {
-  return test::stage_bundled_scene(scene_name);
-}
-
 constexpr double kFps = 60.0;
 
 std::vector<Contact> record(Stage& stage, double seconds) {
@@ -44,7 +38,7 @@ const std::string& node_name(const Stage& stage, std::size_t instance, int node)
 }
 
 TEST(ContactRecorder, EveryKeyThePianistPressesIsInsideAFingertipsContactWithIt) {
-  auto stage = build("piano.json");
+  auto stage = test::stage_bundled_scene("piano.json");
   ASSERT_NE(stage, nullptr);
   const std::vector<Contact> contacts = record(*stage, 8.0);
   ASSERT_FALSE(contacts.empty());
@@ -65,7 +59,7 @@ TEST(ContactRecorder, EveryKeyThePianistPressesIsInsideAFingertipsContactWithIt)
                                                         0.002, false});
   int downs = 0;
   for (const Stop& stop : stops) {
-    if (!is(stop, "key_down")) continue;
+    if (!test::stop_is(stop, "key_down")) continue;
     ++downs;
     const bool covered = std::any_of(contacts.begin(), contacts.end(), [&](const Contact& c) {
       return c.performer == stop.performer &&
@@ -81,7 +75,7 @@ TEST(ContactRecorder, EveryKeyThePianistPressesIsInsideAFingertipsContactWithIt)
 }
 
 TEST(ContactRecorder, BrassPlayersHoldTheirInstrumentsByFingertipsPalmsAndLips) {
-  auto stage = build("quartet.json");
+  auto stage = test::stage_bundled_scene("quartet.json");
   ASSERT_NE(stage, nullptr);
   const std::vector<Contact> contacts = record(*stage, 6.0);
   int valves = 0, lips = 0, slide_grips = 0;
@@ -101,7 +95,7 @@ TEST(ContactRecorder, BrassPlayersHoldTheirInstrumentsByFingertipsPalmsAndLips) 
 }
 
 TEST(ContactRecorder, APointIsWhereItsBodyNodeWasInThePartsFrame) {
-  auto stage = build("piano.json");
+  auto stage = test::stage_bundled_scene("piano.json");
   ASSERT_NE(stage, nullptr);
   const std::vector<Contact> contacts = record(*stage, 4.0);
   ASSERT_FALSE(contacts.empty());
@@ -123,7 +117,7 @@ TEST(ContactRecorder, APointIsWhereItsBodyNodeWasInThePartsFrame) {
 // hand's move). Fingers 2-5, from 100 ms after a span starts to 100 ms before it ends (the
 // stroke and the release move the tip with the key).
 TEST(ContactRecorder, AFingerHoldingItsKeyStaysOnItsSpot) {
-  auto stage = build("piano.json");
+  auto stage = test::stage_bundled_scene("piano.json");
   ASSERT_NE(stage, nullptr);
   const double seconds = stage->end_s() - stage->start_s();
   const std::vector<Contact> contacts = record(*stage, seconds);
@@ -160,8 +154,8 @@ TEST(ContactRecorder, AFingerHoldingItsKeyStaysOnItsSpot) {
 }
 
 TEST(ContactRecorder, TheSameFramesGiveTheSameContacts) {
-  auto a = build("quartet.json");
-  auto b = build("quartet.json");
+  auto a = test::stage_bundled_scene("quartet.json");
+  auto b = test::stage_bundled_scene("quartet.json");
   ASSERT_NE(a, nullptr);
   ASSERT_NE(b, nullptr);
   const std::vector<Contact> first = record(*a, 2.0);

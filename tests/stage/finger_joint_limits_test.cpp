@@ -9,13 +9,13 @@
 #include <filesystem>
 
 #include "scratch_dir.hpp"
+#include "testdata.hpp"
 
 namespace tutti::stage {
 namespace {
 
 constexpr float kDegree = 3.14159265f / 180.0f;
 constexpr int kRight = 1;
-const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
 
 // The index finger's proximal bone at rest: along the hand's -Y (fingertip_reach.hpp).
 const glm::vec3 kBone(0.0f, -0.045f, 0.0f);
@@ -29,7 +29,7 @@ glm::quat knuckle(float flexion_deg, float spread_deg) {
 }
 
 TEST(FingerJointLimits, LoadsTheRigsLimits) {
-  auto limits = load_finger_joint_limits(kSource / "content");
+  auto limits = load_finger_joint_limits(tutti::test::source_dir() / "content");
   ASSERT_TRUE(limits) << limits.error().message;
   const FingerJointLimit& index_knuckle = (*limits)[1][0];
   EXPECT_EQ(index_knuckle.flexion_min_deg, -30.0);
@@ -42,7 +42,7 @@ TEST(FingerJointLimits, LoadsTheRigsLimits) {
 }
 
 TEST(FingerJointLimits, BadFilesAreNamed) {
-  test::ScratchDir dir;
+  tutti::test::ScratchDir dir;
   std::filesystem::create_directories(dir.path() / "generator");
   dir.write("generator/hand_rig.json", R"({"shape_mm": {}})");
   auto missing = load_finger_joint_limits(dir.path());

@@ -28,9 +28,9 @@ using piano_family::PedalPress;
 using piano_family::PianoRig;
 
 TEST(Organist, PlaysABachChoralesBassOnThePedals) {
-  const std::filesystem::path chorale = test::testdata("musicxml/music21/bwv29.8.mxl");
+  const std::filesystem::path chorale = tutti::test::testdata("musicxml/music21/bwv29.8.mxl");
   if (!std::filesystem::exists(chorale)) GTEST_SKIP() << "no " << chorale;
-  test::ScratchDir dir;
+  tutti::test::ScratchDir dir;
   const std::filesystem::path scene_path = dir.path() / "organ_chorale.json";
   std::ofstream(scene_path) << R"({"music": ")" << chorale.string()
                             << R"(", "pianists": [{"instrument": "organ",

@@ -29,8 +29,6 @@
 namespace tutti::stage {
 namespace {
 
-const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
-
 // A bell's swing angle: what the test family's system writes every frame.
 struct Swing {
   double angle_rad = 0.0;
@@ -159,7 +157,7 @@ class BellFamily final : public FamilyPlugin {
 
 // The piano demo staged with the bells as the only family.
 std::unique_ptr<Stage> stage_with(const BellFamily& bells) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json",
+  auto scene = scene::load_scene(tutti::test::source_dir() / "content" / "scenes" / "piano.json",
                                  performance::scene_load_options());
   EXPECT_TRUE(scene) << scene.error().message;
   if (!scene) return nullptr;
@@ -220,7 +218,7 @@ TEST(StageBuilder, AFamilysStopsAreFoundByTheOneDetector) {
 
 // The piano demo with the bells ringing its part instead of the pianist.
 nlohmann::json bell_scene(const nlohmann::json& bells) {
-  std::ifstream in(kSource / "content" / "scenes" / "piano.json");
+  std::ifstream in(tutti::test::source_dir() / "content" / "scenes" / "piano.json");
   nlohmann::json document = nlohmann::json::parse(in);
   document.erase("pianist");
   document["bells"] = bells;
@@ -231,7 +229,8 @@ Result<scene::Scene> parse_with(const nlohmann::json& document,
                                 const std::vector<const scene::SceneSection*>& extra) {
   scene::LoadOptions options = performance::scene_load_options();
   options.sections.insert(options.sections.end(), extra.begin(), extra.end());
-  return scene::parse_scene(document, "s.json", kSource / "content" / "scenes", options);
+  return scene::parse_scene(document, "s.json", tutti::test::source_dir() / "content" / "scenes",
+                            options);
 }
 
 // A family's players are written under its own key, read by its own section: the loader and
@@ -325,7 +324,7 @@ TEST(StageBuilder, AFamilysPartsAreCheckedAgainstTheMusic) {
 // drafted scene, which loads with its section registered.
 TEST(StageBuilder, AFamilyDraftsItsPlayersForSceneNew) {
   TUTTI_REQUIRE_TESTDATA();
-  const std::filesystem::path file = test::testdata("musicxml/music21/bwv29.8.mxl");
+  const std::filesystem::path file = tutti::test::testdata("musicxml/music21/bwv29.8.mxl");
   auto score = music::load_score(file);
   ASSERT_TRUE(score) << score.error().message;
   auto alone = performance::draft_scene(*score, file);
@@ -369,7 +368,8 @@ TEST(StageBuilder, AFamilyDraftsItsPlayersForSceneNew) {
 // Every note of the music is an entity: the quartet's are claimed by their players, and what is
 // heard is read back from them.
 TEST(StageBuilder, EveryNoteIsAnEntityWithItsPerformer) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "quartet.json", performance::scene_load_options());
+  auto scene = scene::load_scene(tutti::test::source_dir() / "content" / "scenes" / "quartet.json",
+                                 performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto built = performance::build_stage(*scene);
   ASSERT_TRUE(built) << built.error().message;

@@ -23,11 +23,10 @@
 #include <tutti/performance/families.hpp>
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/scene/load_scene.hpp>
+#include "testdata.hpp"
 
 namespace tutti::stage {
 namespace {
-
-const std::filesystem::path kSource(TUTTI_SOURCE_DIR);
 
 using brass_family::BrassRig;
 using piano_family::PianistPlan;
@@ -98,7 +97,7 @@ glm::vec3 node_world(const Stage& stage, ecs::Entity instance, int node) {
 
 TEST(Stage, PoseAtTIsAPureFunctionOfT) {
   for (const char* name : {"piano.json", "quartet.json"}) {
-    auto stage = build(kSource / "content" / "scenes" / name);
+    auto stage = build(tutti::test::source_dir() / "content" / "scenes" / name);
     ASSERT_TRUE(stage);
     evaluate_stage(*stage, 7.25);
     const auto first = poses(*stage);
@@ -114,7 +113,7 @@ TEST(Stage, PoseAtTIsAPureFunctionOfT) {
 }
 
 TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
-  auto stage = build(kSource / "content" / "scenes" / "quartet.json");
+  auto stage = build(tutti::test::source_dir() / "content" / "scenes" / "quartet.json");
   ASSERT_TRUE(stage);
   const ensemble_variation::EnsemblePlan* plan = ensemble_of(*stage);
   ASSERT_TRUE(plan);
@@ -151,7 +150,7 @@ TEST(Stage, TheQuartetsLeadCuesAndEveryPlayerMovesInTheirOwnWay) {
 // What is heard is what is played: a note cut short for a catch breath ends early in
 // Stage::heard_scores, exactly where that player's breath starts; nothing else changes.
 TEST(Stage, TheSoundStopsWhereAPlayerTakesACatchBreath) {
-  auto stage = build(kSource / "content" / "scenes" / "quartet.json");
+  auto stage = build(tutti::test::source_dir() / "content" / "scenes" / "quartet.json");
   ASSERT_TRUE(stage);
   const std::vector<music::Score> heard_scores = stage->heard_scores();
   ASSERT_EQ(heard_scores.size(), stage->scores().size());
@@ -180,7 +179,7 @@ TEST(Stage, TheSoundStopsWhereAPlayerTakesACatchBreath) {
 }
 
 TEST(Stage, PressedKeysTurnTheirNodes) {
-  auto stage = build(kSource / "content" / "scenes" / "piano.json");
+  auto stage = build(tutti::test::source_dir() / "content" / "scenes" / "piano.json");
   ASSERT_TRUE(stage && !pianist(*stage).is_null());
   const PianoRig& seat = piano_rig(*stage);
   int pressed_frames = 0;
@@ -206,7 +205,8 @@ TEST(Stage, PressedKeysTurnTheirNodes) {
 // A finger pinned in the scene (the editor's pin) is the finger that plays the note, and the
 // fingers around it are re-planned to fit.
 TEST(Stage, APinnedFingerPlaysItsNote) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json", performance::scene_load_options());
+  auto scene = scene::load_scene(tutti::test::source_dir() / "content" / "scenes" / "piano.json",
+                                 performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto plain = build_stage(*scene, {});
   ASSERT_TRUE(plain) << plain.error().message;
@@ -241,7 +241,8 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
 
 // "sound": "keys": the piano is heard as the simulated keys sound it, in the scene's style.
 TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
-  auto scene = scene::load_scene(kSource / "content" / "scenes" / "piano.json", performance::scene_load_options());
+  auto scene = scene::load_scene(tutti::test::source_dir() / "content" / "scenes" / "piano.json",
+                                 performance::scene_load_options());
   ASSERT_TRUE(scene) << scene.error().message;
   auto written = build_stage(*scene, {});
   ASSERT_TRUE(written) << written.error().message;
@@ -324,7 +325,8 @@ TEST(Stage, AUsersInstrumentThroughAMappingMovesLikeTheGeneratedOne) {
     "nodes": {"valve_1": "User:valve_1", "valve_2": "User:valve_2", "valve_3": "User:valve_3",
               "mouthpiece": "User:mouthpiece", "grip_left": "User:grip_left",
               "grip_right": "User:grip_right"}})";
-  const std::string music = (kSource / "content" / "music" / "quartet.musicxml").string();
+  const std::string music =
+      (tutti::test::source_dir() / "content" / "music" / "quartet.musicxml").string();
   auto write_scene = [&](const std::string& name, const std::string& extra) {
     std::ofstream(dir / name) << R"({"music": ")" << music << R"(",
       "performers": [{"name": "T", "instrument": "trumpet_bb", "part": "Trumpet 1",
@@ -375,7 +377,7 @@ TEST(Stage, AUsersInstrumentThroughAMappingMovesLikeTheGeneratedOne) {
 // tension morph shows at least 0.8 x its amount (the face's share of the strain) and the bell
 // rises; outside the span the pose is what it was without it.
 TEST(Stage, AStrainExpressionTightensTheFace) {
-  auto stage = build(kSource / "content" / "scenes" / "quartet.json");
+  auto stage = build(tutti::test::source_dir() / "content" / "scenes" / "quartet.json");
   ASSERT_TRUE(stage);
   ASSERT_TRUE(ensemble_of(*stage));
   const BrassRig& seat = brass_rig(*stage, 1);

@@ -14,7 +14,7 @@
 namespace tutti::piano_performance {
 namespace {
 
-const piano::FingeringModel& model() {
+const piano::FingeringModel& default_model() {
   static const piano::FingeringModel m = [] {
     auto loaded = piano::load_fingering_model("default");
     EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message);
@@ -40,7 +40,7 @@ PianoPerformancePlan check_piece(const std::filesystem::path& file) {
   auto score = music::load_score(file);
   EXPECT_TRUE(score.ok()) << (score.ok() ? "" : score.error().message);
   if (!score) return {};
-  auto plan = plan_performance(*score, model());
+  auto plan = plan_performance(*score, default_model());
   EXPECT_TRUE(plan.ok()) << (plan.ok() ? "" : plan.error().message);
   if (!plan) return {};
   for (std::size_t i = 0; i < score->notes.size(); ++i) {
@@ -91,8 +91,8 @@ TEST(PerformancePlan, Deterministic) {
   const auto file = tutti::test::source_dir() / "content/music/ode_to_joy.musicxml";
   auto score = music::load_score(file);
   ASSERT_TRUE(score.ok());
-  auto a = plan_performance(*score, model());
-  auto b = plan_performance(*score, model());
+  auto a = plan_performance(*score, default_model());
+  auto b = plan_performance(*score, default_model());
   ASSERT_TRUE(a.ok() && b.ok());
   EXPECT_EQ(a->fingering.fingers, b->fingering.fingers);
   ASSERT_EQ(a->right_path.knot_times().size(), b->right_path.knot_times().size());

@@ -14,7 +14,7 @@ namespace {
 using piano::HandCorridors;
 using testing::random_corridors;
 
-HandPath plan(const HandCorridors& c, SmoothingMode mode) {
+HandPath planned_path(const HandCorridors& c, SmoothingMode mode) {
   auto path = plan_hand_path(c, PlanOptions{mode});
   EXPECT_TRUE(path.ok()) << (path.ok() ? "" : path.error().message);
   return path.ok() ? std::move(path).value() : HandPath{};
@@ -22,7 +22,7 @@ HandPath plan(const HandCorridors& c, SmoothingMode mode) {
 
 TEST(PathReport, FindsAKnownViolation) {
   const HandCorridors c{{0, 1, 0, 10}};
-  const HandPath flat = plan({{0, 1, 14, 14}}, SmoothingMode::monotone_quintic);
+  const HandPath flat = planned_path({{0, 1, 14, 14}}, SmoothingMode::monotone_quintic);
   const PathReport r = corridor_violations(flat, c);
   EXPECT_EQ(r.violating_corridors, 1U);
   EXPECT_NEAR(r.worst_violation_mm, 4.0, 1e-12);
@@ -33,7 +33,8 @@ TEST(PathReport, FindsAKnownViolation) {
 TEST(PathReport, PeaksOfAKnownPiece) {
   // One quintic rise of 30 mm in 1 s with zero end slopes: minimum-jerk profile, peak speed
   // 1.875 * 30 = 56.25 mm/s at the middle, peak acceleration 10/sqrt(3) * 30 mm/s^2.
-  const HandPath path = plan({{0, 0, 0, 0}, {1, 1, 30, 30}}, SmoothingMode::monotone_quintic);
+  const HandPath path =
+      planned_path({{0, 0, 0, 0}, {1, 1, 30, 30}}, SmoothingMode::monotone_quintic);
   const PathReport r = corridor_violations(path, HandCorridors{});
   EXPECT_NEAR(r.peak_speed_mm_per_s, 56.25, 1e-9);
   EXPECT_NEAR(r.peak_acceleration_mm_per_s2, 30.0 * 10.0 / std::sqrt(3.0), 1e-6);
@@ -50,7 +51,7 @@ Tally tally(SmoothingMode mode, int cases, int corridors_per_case) {
   Tally t;
   for (int seed = 1; seed <= cases; ++seed) {
     const HandCorridors c = random_corridors(static_cast<std::uint64_t>(seed), corridors_per_case);
-    const PathReport r = corridor_violations(plan(c, mode), c, ReportOptions{16, 1e-9});
+    const PathReport r = corridor_violations(planned_path(c, mode), c, ReportOptions{16, 1e-9});
     ++t.cases;
     t.cases_violating += r.violating_corridors > 0 ? 1 : 0;
     t.corridors_violating += r.violating_corridors;
@@ -84,8 +85,9 @@ TEST(PathReport, NaturalSplineOvershootsOnCloseBends) {
 TEST(PathReport, NaturalSplineOvershootHandMade) {
   // A quick 100 mm shift between two long holds: bends 10 ms apart.
   const HandCorridors c{{0, 1, 0, 0}, {1.01, 2, 100, 100}, {2.01, 3, 0, 0}};
-  const PathReport natural = corridor_violations(plan(c, SmoothingMode::natural_spline), c);
-  const PathReport quintic = corridor_violations(plan(c, SmoothingMode::monotone_quintic), c);
+  const PathReport natural = corridor_violations(planned_path(c, SmoothingMode::natural_spline), c);
+  const PathReport quintic =
+      corridor_violations(planned_path(c, SmoothingMode::monotone_quintic), c);
   EXPECT_EQ(natural.violating_corridors, 3U);
   EXPECT_GT(natural.worst_violation_mm, 10.0);
   EXPECT_EQ(quintic.violating_corridors, 0U);
