@@ -2,6 +2,7 @@
 #include <tutti/editor/document.hpp>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include <tutti/editor/atomic_file.hpp>

@@ -2,6 +2,7 @@
 #include <tutti/editor/json_edit.hpp>
 
 #include <charconv>
+#include <nlohmann/json.hpp>
 
 namespace tutti::editor {
 namespace {

@@ -6,9 +6,11 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string_view>
 
 #include <tutti/music/load_score.hpp>
+#include <tutti/stage/family_draft.hpp>
 
 namespace tutti::performance {
 namespace {

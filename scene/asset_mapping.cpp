@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <nlohmann/json.hpp>
 
 #include <tutti/scene/json_fields.hpp>
 #include <tutti/scene/load_scene.hpp>

@@ -11,7 +11,7 @@
 // checked here: that the model file exists and has these nodes (done when the model is loaded).
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <span>
 #include <string>
 #include <string_view>

@@ -5,7 +5,7 @@
 // the fallback. Shared with the families' scene sections (scene_section.hpp).
 
 #include <cstdint>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <string_view>
 #include <utility>

@@ -9,7 +9,7 @@
 // Score parts are not looked up here (the music is not parsed); load_scene_music does that.
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <span>
 #include <string>
 #include <string_view>

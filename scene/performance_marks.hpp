@@ -4,7 +4,7 @@
 // editor's timeline edits, read as strictly as the rest of the scene; the families' sections read
 // their players' marks with these.
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 #include <tutti/core/result.hpp>

@@ -2,6 +2,7 @@
 #include <tutti/scene/scene_section.hpp>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <system_error>
 

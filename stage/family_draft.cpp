@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 namespace tutti::stage {

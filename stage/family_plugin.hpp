@@ -20,9 +20,12 @@
 #include <tutti/music/score.hpp>
 #include <tutti/scene/scene_section.hpp>
 #include <tutti/stage/contact_detector.hpp>
-#include <tutti/stage/family_draft.hpp>
 
 namespace tutti::stage {
+
+// family_draft.hpp (it holds JSON values: hosts that never draft need not parse the JSON library).
+struct FamilyDraft;
+struct DraftPlace;
 
 class PoseChecker;
 class StageBuilder;

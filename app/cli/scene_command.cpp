@@ -2,6 +2,7 @@
 #include <tutti/cli/scene_command.hpp>
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include <tutti/core/exit_codes.hpp>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include <tutti/core/did_you_mean.hpp>

@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include <tutti/brass_model/instrument.hpp>
+#include <tutti/stage/family_draft.hpp>
 #include <tutti/fingering_planner/brass_lines.hpp>
 
 namespace tutti::brass_family {

@@ -2,6 +2,7 @@
 #include <tutti/brass/brass_scene_section.hpp>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <system_error>
 #include <vector>

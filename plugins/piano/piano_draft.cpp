@@ -8,12 +8,14 @@
 #include <tutti/piano/piano_plugin.hpp>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include <tutti/music/part_names.hpp>
 #include <tutti/piano_model/content_dir.hpp>
 #include <tutti/piano_model/keyboard_instruments.hpp>
+#include <tutti/stage/family_draft.hpp>
 
 namespace tutti::piano_family {
 namespace {

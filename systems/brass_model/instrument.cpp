@@ -2,6 +2,7 @@
 #include <tutti/brass_model/instrument.hpp>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <system_error>
 
 #include <tutti/brass_model/fingering_chart.hpp>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+#include <nlohmann/json.hpp>
+
 #include <tutti/brass_motion/brass_motion_params.hpp>
 
 #include <tutti/content/content_dir.hpp>

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 #include <tutti/content/content_dir.hpp>
 #include <tutti/content/json_reader.hpp>

@@ -2,6 +2,7 @@
 #include <tutti/generator/brass_assets.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/content/json_reader.hpp>

@@ -7,6 +7,7 @@
 #include <tutti/humanoid/humanoid.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <functional>

@@ -2,6 +2,7 @@
 // Hostile and broken files: each is one line "NAME: reason", never a crash, hang or huge
 // allocation (the asan build runs these under AddressSanitizer + UBSan).
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>

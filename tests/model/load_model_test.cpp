@@ -3,6 +3,7 @@
 // generated indices and normals, skin attributes, strided accessors, node order, matrices,
 // materials, scenes, and the generated piano asset.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>

@@ -2,6 +2,7 @@
 // Posing: rest pose, world matrices, joint matrices, and deform_vertex against hand-computed
 // skinning and morph maths.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>

@@ -7,6 +7,7 @@
 #include <draco/mesh/mesh.h>
 #include <dlfcn.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>

@@ -7,6 +7,7 @@
 #include <tutti/performance/draft_scene.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <string>

@@ -5,6 +5,7 @@
 #include <tutti/performance/draft_scene.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <set>

@@ -2,6 +2,7 @@
 #include <tutti/scene/asset_mapping.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <string>

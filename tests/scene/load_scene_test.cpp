@@ -2,6 +2,7 @@
 #include <tutti/scene/load_scene.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The editor's performance marks in a scene file: breath marks, expressions, finger pins, cues.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <string>
 

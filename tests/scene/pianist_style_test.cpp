@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The pianist's performance style and where the piano's sound comes from, in a scene file.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <string>
 

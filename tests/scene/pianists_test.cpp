@@ -6,6 +6,7 @@
 #include <tutti/performance/families.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <string>
 

@@ -20,6 +20,7 @@
 #include <tutti/components/performer.hpp>
 #include <tutti/components/transform.hpp>
 #include <tutti/stage/contact_detector.hpp>
+#include <tutti/stage/family_draft.hpp>
 #include <tutti/music/load_score.hpp>
 #include <tutti/performance/draft_scene.hpp>
 #include <tutti/performance/families.hpp>
