@@ -13,8 +13,8 @@
 #include <vector>
 
 #include <tutti/brass_model/instrument.hpp>
-#include <tutti/stage/family_draft.hpp>
 #include <tutti/fingering_planner/brass_lines.hpp>
+#include <tutti/stage/family_draft.hpp>
 
 namespace tutti::brass_family {
 namespace {

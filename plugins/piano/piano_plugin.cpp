@@ -265,7 +265,7 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
                                            instrument);
   if (!model) return model.error();
   auto action = key_action::load_key_action(
-      key_action::key_action_path(builder.content_dir()), instrument->touch,
+      key_action::key_action_path(builder.content_dir()), instrument->touch_or_piano(),
       "instruments.json /instruments/" + instrument->id + "/touch");
   if (!action) return action.error();
 

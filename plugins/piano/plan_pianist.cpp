@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include <tutti/finger_motion/finger_motion_params.hpp>
 #include <tutti/finger_motion/plan_finger_motion.hpp>
@@ -89,7 +90,7 @@ Result<key_action::HumanePerformance> perform_in_style(
     return Error{scene.source + ": " + pianist.pointer + "/style: " + style.error().message};
   }
   auto action = key_action::load_key_action(
-      key_action::key_action_path(content_dir), instrument.touch,
+      key_action::key_action_path(content_dir), instrument.touch_or_piano(),
       "instruments.json /instruments/" + instrument.id + "/touch");
   if (!action) return action.error();
   key_action::HumaneInputs in;

@@ -159,7 +159,8 @@ Result<KeyboardInstrument> read_instrument(const JsonReader& reader, const nlohm
   }
   if (object.contains("touch")) {
     if (!object.at("touch").is_object()) return reader.error(path + "/touch", "expected an object");
-    out.touch = object.at("touch");  // checked with key_action.json when it is merged over it
+    // Checked with key_action.json when it is merged over it.
+    out.touch = std::make_shared<const nlohmann::json>(object.at("touch"));
   }
   if (object.contains("case")) {
     if (auto ok = read_case(reader, object.at("case"), path + "/case", out.case_shape); !ok) {
@@ -231,6 +232,11 @@ std::vector<std::string> KeyboardInstruments::ids() const {
 
 std::filesystem::path keyboard_instruments_path(const std::filesystem::path& content_dir) {
   return content_dir / "piano" / "instruments.json";
+}
+
+const nlohmann::json& KeyboardInstrument::touch_or_piano() const {
+  static const nlohmann::json piano_touch = nlohmann::json::object();
+  return touch ? *touch : piano_touch;
 }
 
 }  // namespace tutti::piano

@@ -9,12 +9,13 @@
 
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <tutti/core/result.hpp>
 
@@ -54,8 +55,11 @@ struct KeyboardInstrument {
   std::string model;               // generated model file ("keyboard_organ.glb")
   KeyboardCase case_shape;         // the generated model's case (the piano's: dimensions.json)
   // Merged over key_action.json (key_action::load_key_action): where in the travel a note sounds
-  // and stops, and its velocity. Empty = the piano's touch.
-  nlohmann::json touch = nlohmann::json::object();
+  // and stops, and its velocity. Null = the piano's touch. Behind a pointer so that this header,
+  // which most of the keyboard family includes, does not pull in the whole JSON library.
+  std::shared_ptr<const nlohmann::json> touch;
+  // *touch, or an empty object (the piano's touch) when there is none.
+  const nlohmann::json& touch_or_piano() const;
   std::optional<Pedalboard> pedalboard;  // an organ's; none for the others
   bool contains(int key) const { return key >= lowest_key && key <= highest_key; }
 };
