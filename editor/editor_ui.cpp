@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/ensemble_variation/variation_params.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/runtime/input_bindings.hpp>
 
 namespace tutti::editor {
@@ -258,7 +260,7 @@ void draw_inspector(Session& session, UiState& ui) {
   ui.selected_lane = std::min(ui.selected_lane, timeline.lanes.size() - 1);
   const TimelineLane& lane = timeline.lanes[ui.selected_lane];
   if (!lane.pianist) {
-    const scene::Performer& p = scene.performers[lane.performer];
+    const brass_family::BrassPlayer& p = brass_family::brass_players(scene)[lane.performer];
     ImGui::Text("%s", p.name.c_str());
     ImGui::Text("%s, part \"%s\"%s", p.instrument.c_str(), p.part.c_str(), p.lead ? ", lead" : "");
     ImGui::Separator();
@@ -276,15 +278,16 @@ void draw_inspector(Session& session, UiState& ui) {
       }
       ImGui::PopID();
     }
-  } else if (lane.performer < scene.pianists.size()) {
-    const scene::Pianist& pianist = scene.pianists[lane.performer];
+  } else if (lane.performer < piano_family::keyboard_players(scene).size()) {
+    const piano_family::KeyboardPlayer& pianist =
+        piano_family::keyboard_players(scene)[lane.performer];
     ImGui::Text("%s (%s hands)", lane.name.c_str(), pianist.hand_size.c_str());
     ImGui::TextUnformatted("Click a note on the timeline to pin a finger.");
-    for (const scene::FingerPin& pin : pianist.pins) {
+    for (const piano_family::FingerPin& pin : pianist.pins) {
       ImGui::PushID(&pin);
       ImGui::Text("key %d at %.3f s: finger %d", pin.key, pin.time_s, pin.finger);
       ImGui::SameLine();
-      const scene::FingerPin copy = pin;
+      const piano_family::FingerPin copy = pin;
       if (ImGui::SmallButton("unpin")) {
         ImGui::PopID();
         apply(session, ui,

@@ -22,8 +22,8 @@
 
 namespace tutti::editor {
 
-// Who an edit is about: a brass performer (index into Scene::performers) or a pianist (pianist
-// true, performer an index into Scene::pianists).
+// Who an edit is about: a brass performer (index into brass_players(scene)) or a pianist (pianist
+// true, performer an index into keyboard_players(scene)).
 struct PlayerRef {
   bool pianist = false;
   std::size_t performer = 0;
@@ -54,7 +54,7 @@ Result<Edit> move_cue(const Json& document, std::span<const double> current, std
 
 Result<Edit> add_expression(const Json& document, std::size_t performer,
                             const scene::Expression& expression);
-// Removes the expression equal to `expression` (as Scene::performers[...].expressions has it).
+// Removes the expression equal to `expression` (as the brass player's expressions have it).
 Result<Edit> delete_expression(const Json& document, std::size_t performer,
                                const scene::Expression& expression);
 
@@ -68,8 +68,8 @@ Result<Edit> add_shot(const Json& document, std::string_view camera, double star
 Result<Edit> move_shot(const Json& document, std::size_t index, double start_s);
 Result<Edit> delete_shot(const Json& document, std::size_t index);
 
-// Pianist `pianist` (index into Scene::pianists) plays the note of `key` at time_s with `finger`
-// (replaces a pin on that note).
+// Pianist `pianist` (index into keyboard_players(scene)) plays the note of `key` at time_s with
+// `finger` (replaces a pin on that note).
 Result<Edit> pin_finger(const Json& document, double time_s, int key, int finger,
                         std::size_t pianist = 0);
 Result<Edit> unpin_finger(const Json& document, double time_s, int key, std::size_t pianist = 0);

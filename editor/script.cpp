@@ -10,7 +10,9 @@
 #include <string_view>
 #include <vector>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/core/did_you_mean.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 
 namespace tutti::editor {
 namespace {
@@ -91,7 +93,7 @@ double number(const ScriptCommand& command, std::size_t i) {
 
 Result<std::size_t> performer(const Script& script, const ScriptCommand& command,
                               const Session& session, const std::string& name) {
-  const auto& performers = session.document().scene().performers;
+  const auto& performers = brass_family::brass_players(session.document().scene());
   std::string names;
   for (std::size_t i = 0; i < performers.size(); ++i) {
     if (performers[i].name == name) return i;
@@ -173,7 +175,7 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     return ScriptStep::next;
   };
   auto who = [&](std::size_t i) -> Result<PlayerRef> {
-    const auto& pianists = session.document().scene().pianists;
+    const auto& pianists = piano_family::keyboard_players(session.document().scene());
     for (std::size_t p = 0; p < pianists.size(); ++p) {
       if (pianists[p].name == command.words[i]) return PlayerRef{true, p};
     }
@@ -196,8 +198,9 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     auto player = who(1);
     if (!player) return player.error();
     const scene::Scene& scene = session.document().scene();
-    const std::uint64_t seed = player->pianist ? scene.pianists.at(player->performer).seed
-                                               : scene.performers[player->performer].seed;
+    const std::uint64_t seed =
+        player->pianist ? piano_family::keyboard_players(scene).at(player->performer).seed
+                        : brass_family::brass_players(scene).at(player->performer).seed;
     return edit_result(session.apply(set_seed(json, *player, reroll_seed(seed))));
   }
   if (action == "add-breath" || action == "delete-breath" || action == "add-expression") {

@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/components/breath_schedule.hpp>
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/ensemble_variation/ensemble_variation_system.hpp>
 #include <tutti/finger_motion/finger_pose_system.hpp>
 #include <tutti/music/meter.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/piano/piano_components.hpp>
 
 namespace tutti::editor {
@@ -73,13 +75,15 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
     }
   }
   const scene::Scene& scene = stage.scene();
-  if (!lane.pianist && lane.performer < scene.performers.size()) {
-    lane.expressions = scene.performers[lane.performer].expressions;
+  const auto& brass_players = brass_family::brass_players(scene);
+  const auto& keyboard_players = piano_family::keyboard_players(scene);
+  if (!lane.pianist && lane.performer < brass_players.size()) {
+    lane.expressions = brass_players[lane.performer].expressions;
   }
   // An organist's pedal notes: the foot that plays each (pins are for fingers only).
   if (const auto* plan = world.try_get<piano_family::PianistPlan>(performer);
-      plan != nullptr && plan->feet && lane.performer < scene.pianists.size()) {
-    const std::size_t music = scene.pianists[lane.performer].music_file;
+      plan != nullptr && plan->feet && lane.performer < keyboard_players.size()) {
+    const std::size_t music = keyboard_players[lane.performer].music_file;
     for (const piano_family::PedalPress& press : plan->feet->presses) {
       const auto* note = world.try_get<components::Note>(stage.note_entity(music, press.note));
       if (note == nullptr) continue;
@@ -88,8 +92,8 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
       }
     }
   }
-  if (lane.pianist && lane.performer < scene.pianists.size()) {
-    for (const scene::FingerPin& pin : scene.pianists[lane.performer].pins) {
+  if (lane.pianist && lane.performer < keyboard_players.size()) {
+    for (const piano_family::FingerPin& pin : keyboard_players[lane.performer].pins) {
       for (TimelineNote& n : lane.notes) {
         if (n.key == pin.key && std::abs(n.start_s - pin.time_s) < 1e-3) n.pinned = true;
       }

@@ -44,7 +44,7 @@ struct HandCorridorView {
 struct TimelineLane {
   std::string name;
   bool pianist = false;
-  std::size_t performer = 0;  // into Scene::performers (brass lanes) or Scene::pianists
+  std::size_t performer = 0;  // into brass_players(scene) (brass lanes) or keyboard_players
   std::vector<TimelineNote> notes;
   std::vector<TimelineBreath> breaths;
   std::vector<scene::Expression> expressions;

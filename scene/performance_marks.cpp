@@ -8,17 +8,13 @@
 namespace tutti::scene {
 namespace {
 
-// The range every scene time is in (as output.start_s).
-constexpr double kEarliest_s = -60.0;
-constexpr double kLatest_s = 86400.0;
-
 Result<double> time_at(const FieldReader& reader, const nlohmann::json& value,
                        const std::string& where) {
   if (!value.is_number()) return reader.error(where, "expected a time in seconds");
   const double t = value.get<double>();
-  if (!std::isfinite(t) || t < kEarliest_s || t > kLatest_s) {
-    return reader.error(where, "must be in [" + format_number(kEarliest_s) + ", " +
-                                   format_number(kLatest_s) + "] s");
+  if (!std::isfinite(t) || t < kEarliestMark_s || t > kLatestMark_s) {
+    return reader.error(where, "must be in [" + format_number(kEarliestMark_s) + ", " +
+                                   format_number(kLatestMark_s) + "] s");
   }
   return t;
 }
@@ -54,9 +50,9 @@ Status parse_expression(const FieldReader& reader, const nlohmann::json& object,
   } else {
     return reader.error(join_path(path, "kind"), "must be \"strain\" or \"relaxed\"");
   }
-  auto start = reader.number(object, path, "start_s", kEarliest_s, kLatest_s);
+  auto start = reader.number(object, path, "start_s", kEarliestMark_s, kLatestMark_s);
   if (!start) return start.error();
-  auto end = reader.number(object, path, "end_s", kEarliest_s, kLatest_s);
+  auto end = reader.number(object, path, "end_s", kEarliestMark_s, kLatestMark_s);
   if (!end) return end.error();
   if (*end <= *start) {
     return reader.error(join_path(path, "end_s"),
@@ -73,13 +69,14 @@ Status parse_expression(const FieldReader& reader, const nlohmann::json& object,
 }  // namespace
 
 Status parse_performer_marks(const FieldReader& reader, const nlohmann::json& performer,
-                             const std::string& path, Performer& out) {
+                             const std::string& path, BreathMarks& breath_marks,
+                             std::vector<Expression>& expressions) {
   if (performer.contains("breaths")) {
     const std::string where = path + "/breaths";
     const nlohmann::json& breaths = performer.at("breaths");
     if (auto ok = reader.json().check_keys(breaths, where, {"add", "remove"}); !ok) return ok;
-    if (auto ok = time_list(reader, breaths, where, "add", out.breaths.add_s); !ok) return ok;
-    if (auto ok = time_list(reader, breaths, where, "remove", out.breaths.remove_s); !ok) {
+    if (auto ok = time_list(reader, breaths, where, "add", breath_marks.add_s); !ok) return ok;
+    if (auto ok = time_list(reader, breaths, where, "remove", breath_marks.remove_s); !ok) {
       return ok;
     }
   }
@@ -93,45 +90,11 @@ Status parse_performer_marks(const FieldReader& reader, const nlohmann::json& pe
           !ok) {
         return ok;
       }
-      out.expressions.push_back(expression);
+      expressions.push_back(expression);
     }
     std::stable_sort(
-        out.expressions.begin(), out.expressions.end(),
+        expressions.begin(), expressions.end(),
         [](const Expression& a, const Expression& b) { return a.start_s < b.start_s; });
-  }
-  return Status::success();
-}
-
-Status parse_finger_pins(const FieldReader& reader, const nlohmann::json& pianist,
-                         const std::string& path, std::vector<FingerPin>& out) {
-  if (!pianist.contains("pins")) return Status::success();
-  const std::string where = path + "/pins";
-  const nlohmann::json& list = pianist.at("pins");
-  if (!list.is_array()) return reader.error(where, "expected an array");
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string item = where + "/" + std::to_string(i);
-    if (auto ok = reader.json().check_keys(list[i], item, {"time_s", "key", "finger"}); !ok) {
-      return ok;
-    }
-    auto time = reader.number(list[i], item, "time_s", kEarliest_s, kLatest_s);
-    if (!time) return time.error();
-    if (!list[i].contains("key")) return reader.error(join_path(item, "key"), "missing");
-    auto key = reader.integer_or(list[i], item, "key", 0, 127, 0);
-    if (!key) return key.error();
-    if (!list[i].contains("finger")) return reader.error(join_path(item, "finger"), "missing");
-    auto finger = reader.integer_or(list[i], item, "finger", 1, 5, 1);
-    if (!finger) return finger.error();
-    FingerPin pin;
-    pin.time_s = *time;
-    pin.key = static_cast<int>(*key);
-    pin.finger = static_cast<int>(*finger);
-    for (std::size_t j = 0; j < out.size(); ++j) {
-      if (out[j].key == pin.key && std::abs(out[j].time_s - pin.time_s) < 1e-6) {
-        return reader.error(
-            item, "a second pin on the same note (also " + where + "/" + std::to_string(j) + ")");
-      }
-    }
-    out.push_back(pin);
   }
   return Status::success();
 }

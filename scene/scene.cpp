@@ -27,10 +27,6 @@ std::uint64_t derive_seed(std::uint64_t scene_seed, std::uint64_t stream) {
   return splitmix64(scene_seed + stream * kSplitmixGamma);
 }
 
-std::uint64_t pianist_seed_stream(std::size_t index) {
-  return index == 0 ? 0 : (std::uint64_t{1} << 32) + index;
-}
-
 std::string_view stance_name(Stance stance) {
   switch (stance) {
     case Stance::standing:

@@ -80,73 +80,8 @@ struct Expression {
   friend bool operator==(const Expression&, const Expression&) = default;
 };
 
-// The pianist plays the note of `key` starting at `time_s` with `finger` (1 = thumb .. 5); the
-// fingering is planned around it.
-struct FingerPin {
-  double time_s = 0.0;
-  int key = 60;    // MIDI key, [0, 127]
-  int finger = 1;  // [1, 5]
-  friend bool operator==(const FingerPin&, const FingerPin&) = default;
-};
-
-// A brass player.
-struct Performer {
-  std::string name;            // unique in the scene, non-empty
-  std::string instrument;      // id of content/instruments/<id>.json
-  std::string part;            // the score part: its name (case-insensitive) or its id ("P2")
-  int voice = 1;               // 1-based player within the part
-  std::size_t music_file = 0;  // index into Scene::music
-  Vec3 position_m;             // feet on the floor (y = 0 for the floor)
-  double facing_deg = 0.0;     // 0 = facing +Z; [-360, 360]
-  Stance stance = Stance::standing;
-  bool music_stand = true;  // a music stand in front of the performer
-  bool lead = false;        // gives the cues (at most one lead per scene)
-  std::uint64_t seed = 0;   // as written, or derived from the scene seed (seed_given false)
-  bool seed_given = false;
-  Variation variation;
-  // User assets (asset_mapping.hpp files), resolved against the scene file's folder; empty = the
-  // default rig / the generated instrument.
-  std::filesystem::path character_mapping;   // kind "character"
-  std::filesystem::path instrument_mapping;  // kind "trumpet" or "trombone"
-  BreathMarks breaths;
-  std::vector<Expression> expressions;  // in start order
-  friend bool operator==(const Performer&, const Performer&) = default;
-};
-
-// A keyboard player (a pianist, an organist, ...) at an instrument of their own. A scene has any
-// number: "pianists" (an array), or "pianist" (one object,
-// the format before two pianos could be written; still read).
-struct Pianist {
-  // Unique among the scene's keyboard players, non-empty; when not given, the instrument's player
-  // ("pianist", "organist"), then "pianist 2", ...
-  std::string name;
-  // A keyboard instrument of content/piano/instruments.json: "piano" (default), "organ",
-  // "harpsichord", "synth", ... Each has its own compass and model.
-  std::string instrument = "piano";
-  std::string pointer;             // where it is in the file ("/pianist", "/pianists/1")
-  std::vector<std::string> parts;  // score parts the pianist plays (name or id), at least one
-  std::size_t music_file = 0;      // index into Scene::music
-  std::string hand_size;  // a preset of content/piano/hands.json (default: its default_preset)
-  Vec3 position_m{0.0, 0.0, 0.6};  // the bench centre on the floor; the keys' front is at z = 0
-  double facing_deg = 180.0;       // 180 = looking toward -Z, at the keyboard
-  std::uint64_t seed = 0;
-  bool seed_given = false;
-  Variation variation;
-  std::filesystem::path character_mapping;  // kind "character"
-  std::filesystem::path hands_mapping;      // kind "hand"
-  std::vector<FingerPin> pins;              // in file order (errors name the index)
-  // A performance style of content/piano/styles.json: how the fingers strike (empty = the
-  // stroke timing of finger_motion.json, every note struck exactly on time).
-  std::string style;
-  // The pianist's notes are heard as the simulated keys sound them (escapement times,
-  // velocities from key speed, missed notes left out) instead of as written. Implies a style
-  // ("precise" when none is given).
-  bool sound_from_keys = false;
-  friend bool operator==(const Pianist&, const Pianist&) = default;
-};
-
 // What a family's SceneSection (scene_section.hpp) read from its keys, as the family's own
-// struct: families without a place of their own in Scene keep their players here.
+// struct: every family keeps its players here (the scene knows no instrument).
 struct FamilySection {
   std::string key;  // the top-level key it was read from, e.g. "strings"
   std::any data;    // the family's struct; Scene::section<T>(key) reads it
@@ -156,8 +91,8 @@ struct FamilySection {
 struct PartClaim {
   std::string part;            // name (case-insensitive) or id, as written
   std::size_t music_file = 0;  // index into Scene::music
-  std::string pointer;         // where it is written, e.g. "/pianists/0/parts/1"
-  std::string player;          // the player's JSON pointer, e.g. "/pianists/0"
+  std::string pointer;         // where it is written, e.g. "/<key>/0/parts/1"
+  std::string player;          // the player's JSON pointer, e.g. "/<key>/0"
   // A note has one player: no other player may claim an exclusive part of the same music
   // (keyboard players); players sharing a part by voice claim it non-exclusively.
   bool exclusive = false;
@@ -207,10 +142,8 @@ struct Scene {
   std::string description;
   std::vector<std::filesystem::path> music;  // at least one; resolved, each an existing file
   std::uint64_t seed = 0;
-  std::vector<Performer> performers;
-  std::vector<Pianist> pianists;
-  // Players of other families (their SceneSection's struct, by key), and every player's parts:
-  // a scene has at least one player, so at least one claim.
+  // The families' players (their SceneSection's struct, by key), and every player's parts: a
+  // scene has at least one player, so at least one claim.
   std::vector<FamilySection> sections;
   std::vector<PartClaim> part_claims;
   std::vector<Camera> cameras;     // at least one
@@ -235,15 +168,22 @@ struct Scene {
     }
     return nullptr;
   }
+  // The same, to change; a T is added under `key` when there is none. Precondition: what `key`
+  // holds, if anything, is a T.
+  template <class T>
+  T& section_or_add(std::string_view key) {
+    for (FamilySection& s : sections) {
+      if (s.key == key) return std::any_cast<T&>(s.data);
+    }
+    sections.push_back({std::string(key), T{}});
+    return std::any_cast<T&>(sections.back().data);
+  }
 };
 
-// Seed of a performer (stream k + 1 for performers[k]) or of a pianist (pianist_seed_stream)
-// when the scene file gives none: splitmix64 of the scene seed and the stream, so adding a
-// performer at the end leaves the others' seeds unchanged.
+// Seed of a player when the scene file gives none: splitmix64 of the scene seed and a stream of
+// the player's own (each family numbers its players' streams), so adding a player at the end
+// leaves the others' seeds unchanged.
 std::uint64_t derive_seed(std::uint64_t scene_seed, std::uint64_t stream);
-// pianists[0]: stream 0 (as when a scene had one pianist); pianists[k]: a stream of their own,
-// far above any performer's.
-std::uint64_t pianist_seed_stream(std::size_t index);
 
 std::string_view stance_name(Stance stance);
 std::string_view expression_name(ExpressionKind kind);

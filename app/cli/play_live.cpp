@@ -5,6 +5,7 @@
 #include <tutti/finger_motion/finger_motion_params.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/live/alsa_midi_source.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 
 namespace tutti::cli {
 
@@ -14,7 +15,7 @@ Result<std::unique_ptr<LivePlay>> LivePlay::open(const LivePlayOptions& options,
   play->options_ = options;
   if (options.midi_in.empty() && !options.keyboard_piano) return play;
   const char* flag = options.midi_in.empty() ? "--keyboard-piano" : "--midi-in";
-  if (scene.pianists.empty()) {
+  if (piano_family::keyboard_players(scene).empty()) {
     return Error{std::string(flag) + ": " + scene.source + " has no pianist to play the notes"};
   }
   if (!options.midi_in.empty()) {
@@ -36,7 +37,8 @@ Status LivePlay::attach(stage::Stage& stage, const scene::Scene& scene, std::str
   if (stage.find_performer("piano", 0).is_null()) {
     return Error{scene.source + ": the stage has no pianist"};
   }
-  auto model = piano::load_fingering_model("default", scene.pianists.front().hand_size);
+  auto model = piano::load_fingering_model("default",
+                                           piano_family::keyboard_players(scene).front().hand_size);
   if (!model) return model.error();
   auto params = finger_motion::load_finger_motion_params(
       finger_motion::finger_motion_params_path(piano::default_content_dir()));

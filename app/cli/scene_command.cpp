@@ -5,10 +5,12 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/core/exit_codes.hpp>
 #include <tutti/core/file_io.hpp>
 #include <tutti/music/load_score.hpp>
 #include <tutti/performance/draft_scene.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/scene/load_scene.hpp>
 #include <tutti/performance/families.hpp>
 
@@ -16,9 +18,9 @@ namespace tutti::cli {
 namespace {
 
 // ", a pianist", ", a pianist, an organist", ... (each keyboard player by name, article first).
-std::string keyboard_players(const scene::Scene& scene) {
+std::string keyboard_player_names(const scene::Scene& scene) {
   std::string out;
-  for (const scene::Pianist& p : scene.pianists) {
+  for (const piano_family::KeyboardPlayer& p : piano_family::keyboard_players(scene)) {
     const bool vowel = !p.name.empty() && std::string_view("aeiou").find(p.name.front()) !=
                                               std::string_view::npos;
     out += std::string(vowel ? ", an " : ", a ") + p.name;
@@ -62,10 +64,10 @@ int run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
     return fail(written.error());
   }
   for (const std::string& note : drafted->notes) err << "note: " << note << "\n";
-  out << "scene: wrote " << o.output.string() << " (" << scene->performers.size()
-      << " brass player" << (scene->performers.size() == 1 ? "" : "s")
-      << keyboard_players(*scene) << ", " << scene->cameras.size() << " cameras, "
-      << scene->shots.size() << " shots)\n";
+  const std::size_t brass = brass_family::brass_players(*scene).size();
+  out << "scene: wrote " << o.output.string() << " (" << brass << " brass player"
+      << (brass == 1 ? "" : "s") << keyboard_player_names(*scene) << ", "
+      << scene->cameras.size() << " cameras, " << scene->shots.size() << " shots)\n";
   return kExitOk;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include <tutti/brass/brass_components.hpp>
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/brass/hold.hpp>
 #include <tutti/brass/plan_brass_player.hpp>
 #include <tutti/brass/pose_brass.hpp>
@@ -80,7 +81,7 @@ std::vector<std::array<double, 2>> phrases_of(const brass::BrassLine& line) {
 
 // The instrument and, when there is one, the body of the player; their nodes; the stand and the
 // chair.
-Status bind_player(stage::StageBuilder& builder, const scene::Performer& performer,
+Status bind_player(stage::StageBuilder& builder, const BrassPlayer& performer,
                    const std::string& model_stem, std::uint32_t stand_model,
                    std::uint32_t chair_model, bool rig_generated, BrassRig& rig) {
   auto horn = stage::load_mapped(builder, performer.instrument_mapping, model_stem + ".glb");
@@ -174,8 +175,9 @@ components::BreathSchedule breath_schedule(const BrassPlan& plan) {
   return schedule;
 }
 
-ensemble_variation::PerformerInput ensemble_input(const scene::Performer& performer,
-                                        const music::Score& score, const BrassPlan& plan) {
+ensemble_variation::PerformerInput ensemble_input(const BrassPlayer& performer,
+                                                  const music::Score& score,
+                                                  const BrassPlan& plan) {
   ensemble_variation::PerformerInput input;
   input.seed = performer.seed;
   input.params = ensemble_variation::resolve_variation(performer.seed, performer.variation);
@@ -215,7 +217,7 @@ void BrassPlugin::add_systems(ecs::Schedule& schedule) const {
 
 Status BrassPlugin::build(stage::StageBuilder& builder) const {
   const scene::Scene& scene = builder.scene();
-  if (scene.performers.empty()) return Status::success();
+  if (brass_players(scene).empty()) return Status::success();
   auto data = load_brass_planning_data(builder.content_dir());
   if (!data) return data.error();
   // The performer rig is not generated yet (content/generator/README.md): until it is, players
@@ -229,8 +231,8 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
   ecs::World& world = builder.world();
   std::vector<ecs::Entity> players;
   std::vector<ensemble_variation::PerformerInput> ensemble_inputs;
-  for (std::size_t seat = 0; seat < scene.performers.size(); ++seat) {
-    const scene::Performer& performer = scene.performers[seat];
+  for (std::size_t seat = 0; seat < brass_players(scene).size(); ++seat) {
+    const BrassPlayer& performer = brass_players(scene)[seat];
     auto planned = plan_brass_seat(builder, seat, *data);
     if (!planned) return planned.error();
     BrassPlan& plan = *planned;

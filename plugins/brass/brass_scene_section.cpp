@@ -7,6 +7,7 @@
 #include <system_error>
 #include <vector>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/scene/performance_marks.hpp>
 
@@ -17,7 +18,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using scene::AssetKind;
 using scene::join_path;
-using scene::Performer;
 using scene::Scene;
 using scene::SectionContext;
 
@@ -61,7 +61,7 @@ Status parse_instrument_mapping(const SectionContext& context, const json& objec
 
 Status parse_performer(const SectionContext& context, const std::vector<std::string>& ids,
                        const json& object, const std::string& path, const Scene& scene,
-                       Performer& performer) {
+                       BrassPlayer& performer) {
   const scene::FieldReader& reader = context.fields();
   if (auto ok = reader.json().check_keys(
           object, path,
@@ -132,7 +132,10 @@ Status parse_performer(const SectionContext& context, const std::vector<std::str
       !ok) {
     return ok;
   }
-  if (auto ok = scene::parse_performer_marks(reader, object, path, performer); !ok) return ok;
+  if (auto ok = scene::parse_performer_marks(reader, object, path, performer.breaths,
+                                             performer.expressions);
+      !ok)
+    return ok;
   return parse_instrument_mapping(context, object, path, performer.instrument,
                                   performer.instrument_mapping);
 }
@@ -145,15 +148,16 @@ Status BrassSceneSection::read(const json& document, const SectionContext& conte
   const json& performers = document.at("performers");
   if (!performers.is_array()) return context.error("/performers", "expected an array");
   const std::vector<std::string> ids = instrument_ids(context.content_dir());
+  std::vector<BrassPlayer>& players = edit_brass_players(scene);
   int lead = -1;
   for (std::size_t i = 0; i < performers.size(); ++i) {
     const std::string path = "/performers/" + std::to_string(i);
-    Performer performer;
+    BrassPlayer performer;
     if (auto ok = parse_performer(context, ids, performers[i], path, scene, performer); !ok) {
       return ok;
     }
-    for (std::size_t j = 0; j < scene.performers.size(); ++j) {
-      if (scene.performers[j].name == performer.name) {
+    for (std::size_t j = 0; j < players.size(); ++j) {
+      if (players[j].name == performer.name) {
         return context.error(path + "/name", "duplicate performer name \"" + performer.name +
                                                  "\" (also /performers/" + std::to_string(j) +
                                                  ")");
@@ -170,7 +174,7 @@ Status BrassSceneSection::read(const json& document, const SectionContext& conte
     // Players share a part by voice, so brass claims are not exclusive.
     scene.part_claims.push_back(
         {performer.part, performer.music_file, path + "/part", path, /*exclusive=*/false});
-    scene.performers.push_back(std::move(performer));
+    players.push_back(std::move(performer));
   }
   return {};
 }

@@ -3,7 +3,8 @@
 // The brass family's section of a scene file: "performers", an array of brass players (format:
 // scene/README.md). Each names an instrument of content/instruments/, a score part and voice,
 // a place and stance, at most one lead, and optionally a character, a user instrument model
-// (trumpets and trombones), expression controls and performance marks. Fills Scene::performers.
+// (trumpets and trombones), expression controls and performance marks. Fills
+// brass_players(scene) (brass_players.hpp).
 
 #include <tutti/scene/scene_section.hpp>
 

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/brass_motion/plan_brass_player.hpp>
 #include <tutti/fingering_planner/brass_lines.hpp>
 #include <tutti/scene/load_scene.hpp>
@@ -21,7 +22,7 @@ std::string times_key(const std::vector<double>& times) {
 }
 
 // Everything a brass player's own plan (line, fingering, breaths, valves / slide) depends on.
-std::string brass_plan_key(const scene::Scene& scene, const scene::Performer& performer) {
+std::string brass_plan_key(const scene::Scene& scene, const BrassPlayer& performer) {
   return performer.instrument + "|" + performer.part + "|" + std::to_string(performer.voice) + "|" +
          scene.music[performer.music_file].string() + "|" + times_key(performer.breaths.add_s) +
          "|" + times_key(performer.breaths.remove_s);
@@ -42,7 +43,7 @@ Result<BrassPlanningData> load_brass_planning_data(const std::filesystem::path& 
 Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat,
                                   const BrassPlanningData& data) {
   const scene::Scene& scene = builder.scene();
-  const scene::Performer& performer = scene.performers[seat];
+  const BrassPlayer& performer = brass_players(scene)[seat];
   const music::Score& score = builder.scores()[performer.music_file];
   BrassPlan plan;
   plan.plan_key = brass_plan_key(scene, performer);

@@ -24,7 +24,7 @@ struct BrassPlanningData {
 // From content_dir/brass.
 Result<BrassPlanningData> load_brass_planning_data(const std::filesystem::path& content_dir);
 
-// The plan of builder.scene().performers[seat].
+// The plan of brass_players(builder.scene())[seat].
 Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat,
                                   const BrassPlanningData& data);
 

@@ -14,6 +14,7 @@
 #include <tutti/components/performer.hpp>
 #include <tutti/components/transform.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/piano_model/keyboard_instruments.hpp>
 #include <tutti/key_action/key_action_params.hpp>
 #include <tutti/piano/plan_pianist.hpp>
@@ -110,11 +111,11 @@ KeyOutlineMm key_outline_mm(const model::ModelAsset& piano, int node) {
   return {1000.0 * static_cast<double>(x_max), 1000.0 * static_cast<double>(z_max)};
 }
 
-// Where the piano stands: the generated piano is made for a bench at scene::Pianist's default
+// Where the piano stands: the generated piano is made for a bench at KeyboardPlayer's default
 // spot (the keys' front at z = 0, the bench 0.6 m in front); a bench elsewhere takes the piano
 // with it. At the default spot the piano's root is exactly the identity.
-glm::mat4 piano_root(const scene::Pianist& pianist) {
-  const scene::Pianist defaults;
+glm::mat4 piano_root(const KeyboardPlayer& pianist) {
+  const KeyboardPlayer defaults;
   if (pianist.position_m == defaults.position_m && pianist.facing_deg == defaults.facing_deg) {
     return glm::mat4(1.0f);
   }
@@ -187,7 +188,7 @@ Status bind_piano(stage::StageBuilder& builder, const piano::KeyboardInstrument&
   return Status::success();
 }
 
-Status bind_pianist_body(stage::StageBuilder& builder, const scene::Pianist& pianist,
+Status bind_pianist_body(stage::StageBuilder& builder, const KeyboardPlayer& pianist,
                          double seat_raise_m, PianoRig& rig) {
   auto chair_model = builder.generated_model("chair.glb");
   if (!chair_model) return chair_model.error();
@@ -213,7 +214,7 @@ Status bind_pianist_body(stage::StageBuilder& builder, const scene::Pianist& pia
 }
 
 // A user's hand models (scene pianist "hands"): placed, and their stand-in made.
-Status bind_user_hands(stage::StageBuilder& builder, const scene::Pianist& pianist, PianoRig& rig) {
+Status bind_user_hands(stage::StageBuilder& builder, const KeyboardPlayer& pianist, PianoRig& rig) {
   if (pianist.hands_mapping.empty()) return Status::success();
   auto hands = stage::load_hands(builder, pianist.hands_mapping);
   if (!hands) return hands.error();
@@ -243,14 +244,14 @@ void PianoPlugin::add_systems(ecs::Schedule& schedule) const {
 }
 
 Status PianoPlugin::build(stage::StageBuilder& builder) const {
-  for (std::size_t i = 0; i < builder.scene().pianists.size(); ++i) {
+  for (std::size_t i = 0; i < keyboard_players(builder.scene()).size(); ++i) {
     if (Status s = build_pianist(builder, i); !s) return s;
   }
   return Status::success();
 }
 
 Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t index) const {
-  const scene::Pianist& pianist = builder.scene().pianists[index];
+  const KeyboardPlayer& pianist = keyboard_players(builder.scene())[index];
   auto planned = plan_pianist(builder, index);
   if (!planned) return planned.error();
   PianistPlan& plan = *planned;
@@ -319,10 +320,10 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
     placed.after_performer = after_performer;
   };
   // The instruments: "piano", then "piano 2", "organ", ... (export node names are unique).
-  const auto& pianists = builder.scene().pianists;
+  const auto& pianists = keyboard_players(builder.scene());
   const auto same_before =
       std::count_if(pianists.begin(), pianists.begin() + static_cast<std::ptrdiff_t>(index),
-                    [&](const scene::Pianist& p) { return p.instrument == pianist.instrument; });
+                    [&](const KeyboardPlayer& p) { return p.instrument == pianist.instrument; });
   label(rig.piano,
         same_before == 0 ? instrument->id : instrument->id + " " + std::to_string(same_before + 1),
         false);

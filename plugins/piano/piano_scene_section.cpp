@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <tutti/core/did_you_mean.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/scene/performance_marks.hpp>
 
 namespace tutti::piano_family {
@@ -15,7 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-using scene::Pianist;
 using scene::Scene;
 using scene::SectionContext;
 
@@ -33,9 +33,47 @@ std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
+// "pins": [{"time_s": t, "key": k, "finger": f}, ...] of a keyboard player.
+Status parse_finger_pins(const scene::FieldReader& reader, const nlohmann::json& pianist,
+                         const std::string& path, std::vector<FingerPin>& out) {
+  if (!pianist.contains("pins")) return Status::success();
+  const std::string where = path + "/pins";
+  const nlohmann::json& list = pianist.at("pins");
+  if (!list.is_array()) return reader.error(where, "expected an array");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string item = where + "/" + std::to_string(i);
+    if (auto ok = reader.json().check_keys(list[i], item, {"time_s", "key", "finger"}); !ok) {
+      return ok;
+    }
+    auto time =
+        reader.number(list[i], item, "time_s", scene::kEarliestMark_s, scene::kLatestMark_s);
+    if (!time) return time.error();
+    if (!list[i].contains("key")) return reader.error(scene::join_path(item, "key"), "missing");
+    auto key = reader.integer_or(list[i], item, "key", 0, 127, 0);
+    if (!key) return key.error();
+    if (!list[i].contains("finger"))
+      return reader.error(scene::join_path(item, "finger"), "missing");
+    auto finger = reader.integer_or(list[i], item, "finger", 1, 5, 1);
+    if (!finger) return finger.error();
+    FingerPin pin;
+    pin.time_s = *time;
+    pin.key = static_cast<int>(*key);
+    pin.finger = static_cast<int>(*finger);
+    for (std::size_t j = 0; j < out.size(); ++j) {
+      if (out[j].key == pin.key && std::abs(out[j].time_s - pin.time_s) < 1e-6) {
+        return reader.error(
+            item, "a second pin on the same note (also " + where + "/" + std::to_string(j) + ")");
+      }
+    }
+    out.push_back(pin);
+  }
+  return Status::success();
+}
+
 // "style": a style of content/piano/styles.json; "sound": "score" (as written) or "keys" (as
 // the simulated keys sound it).
-Status parse_pianist_style(const SectionContext& context, const json& object, Pianist& pianist) {
+Status parse_pianist_style(const SectionContext& context, const json& object,
+                           KeyboardPlayer& pianist) {
   const scene::FieldReader& reader = context.fields();
   const std::string& path = pianist.pointer;
   auto sound = reader.string_or(object, path, "sound", "score");
@@ -63,7 +101,7 @@ Status parse_pianist_style(const SectionContext& context, const json& object, Pi
 }
 
 Status parse_pianist(const SectionContext& context, const json& object, const Scene& scene,
-                     Pianist& pianist) {
+                     KeyboardPlayer& pianist) {
   const scene::FieldReader& reader = context.fields();
   const std::string& path = pianist.pointer;
   if (!object.is_object()) return context.error(path, "expected an object");
@@ -158,12 +196,16 @@ Status parse_pianist(const SectionContext& context, const json& object, const Sc
       !ok) {
     return ok;
   }
-  if (auto ok = scene::parse_finger_pins(reader, object, path, pianist.pins); !ok) return ok;
+  if (auto ok = parse_finger_pins(reader, object, path, pianist.pins); !ok) return ok;
   if (auto ok = parse_pianist_style(context, object, pianist); !ok) return ok;
   return context.mapping(object, path, "hands", scene::AssetKind::hand, pianist.hands_mapping);
 }
 
 }  // namespace
+
+std::uint64_t keyboard_seed_stream(std::size_t index) {
+  return index == 0 ? 0 : (std::uint64_t{1} << 32) + index;
+}
 
 Status PianoSceneSection::read(const json& document, const SectionContext& context,
                                Scene& scene) const {
@@ -184,20 +226,22 @@ Status PianoSceneSection::read(const json& document, const SectionContext& conte
       pointers.push_back("/pianists/" + std::to_string(i));
     }
   }
+  if (objects.empty()) return {};
+  std::vector<KeyboardPlayer>& players = edit_keyboard_players(scene);
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    Pianist pianist;
+    KeyboardPlayer pianist;
     pianist.pointer = pointers[i];
     if (auto ok = parse_pianist(context, *objects[i], scene, pianist); !ok) return ok;
     // Unnamed players are called for their instrument: "pianist", "pianist 2", "organist", ...
     if (objects[i]->is_object() && !objects[i]->contains("name")) {
       const std::string base = pianist.name;
       const auto taken = [&](const std::string& name) {
-        return std::any_of(scene.pianists.begin(), scene.pianists.end(),
-                           [&](const Pianist& other) { return other.name == name; });
+        return std::any_of(players.begin(), players.end(),
+                           [&](const KeyboardPlayer& other) { return other.name == name; });
       };
       for (int k = 2; taken(pianist.name); ++k) pianist.name = base + " " + std::to_string(k);
     }
-    for (const Pianist& other : scene.pianists) {
+    for (const KeyboardPlayer& other : players) {
       if (other.name == pianist.name) {
         return context.error(pianist.pointer + "/name", "duplicate pianist name \"" +
                                                             pianist.name + "\" (also " +
@@ -212,7 +256,7 @@ Status PianoSceneSection::read(const json& document, const SectionContext& conte
       }
     }
     if (!pianist.seed_given) {
-      pianist.seed = scene::derive_seed(scene.seed, scene::pianist_seed_stream(i));
+      pianist.seed = scene::derive_seed(scene.seed, keyboard_seed_stream(i));
     }
     // A note has one player: a part is played by one keyboard player.
     for (std::size_t p = 0; p < pianist.parts.size(); ++p) {
@@ -220,7 +264,7 @@ Status PianoSceneSection::read(const json& document, const SectionContext& conte
                                    pianist.pointer + "/parts/" + std::to_string(p),
                                    pianist.pointer, /*exclusive=*/true});
     }
-    scene.pianists.push_back(std::move(pianist));
+    players.push_back(std::move(pianist));
   }
   return {};
 }

@@ -6,7 +6,7 @@
 // instrument of content/piano/instruments.json, a hand size of hands.json, a bench position,
 // optionally a style of styles.json, finger pins, a character and user hands. Unnamed players
 // are called for their instrument ("pianist", "pianist 2", "organist"); two benches stand at
-// least 1.4 m apart. Fills Scene::pianists.
+// least 1.4 m apart. Fills keyboard_players(scene) (keyboard_players.hpp).
 
 #include <tutti/scene/scene_section.hpp>
 

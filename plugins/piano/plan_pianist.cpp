@@ -10,6 +10,7 @@
 #include <tutti/fingering_planner/chord_roll.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/key_action/humane_performance.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/piano/pedal_feet.hpp>
 #include <tutti/piano_model/keyboard_instruments.hpp>
 #include <tutti/piano_performance/performance_plan.hpp>
@@ -26,7 +27,7 @@ int fold_onto(int key, const piano::KeyboardInstrument& instrument) {
 }
 
 // What the pianist's fingering without the scene's pins depends on.
-std::string pianist_base_key(const scene::Scene& scene, const scene::Pianist& pianist) {
+std::string pianist_base_key(const scene::Scene& scene, const KeyboardPlayer& pianist) {
   std::string key = scene.music[pianist.music_file].string() + "|" + pianist.instrument + "|" +
                     pianist.hand_size + "|";
   for (const std::string& part : pianist.parts) key += part + ",";
@@ -34,14 +35,14 @@ std::string pianist_base_key(const scene::Scene& scene, const scene::Pianist& pi
 }
 
 // Everything the pianist's plan depends on.
-std::string pianist_plan_key(const scene::Scene& scene, const scene::Pianist& pianist) {
+std::string pianist_plan_key(const scene::Scene& scene, const KeyboardPlayer& pianist) {
   std::string key = pianist_base_key(scene, pianist);
   if (!pianist.style.empty() || pianist.sound_from_keys) {
     key += "|style " + pianist.style + (pianist.sound_from_keys ? " keys " : " score ") +
            std::to_string(pianist.seed);
   }
   char text[64];
-  for (const scene::FingerPin& pin : pianist.pins) {
+  for (const FingerPin& pin : pianist.pins) {
     std::snprintf(text, sizeof text, "|%.17g:%d:%d", pin.time_s, pin.key, pin.finger);
     key += text;
   }
@@ -50,11 +51,11 @@ std::string pianist_plan_key(const scene::Scene& scene, const scene::Pianist& pi
 
 // The editor's pins become the planner's pins (Note::finger, plan_score's pins_from_marks). A
 // pin names its note by key and onset; one that matches no note is an error, not ignored.
-Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianist,
+Status apply_finger_pins(const scene::Scene& scene, const KeyboardPlayer& pianist,
                          const piano::KeyboardInstrument& instrument, music::Score& score) {
   constexpr double kSameOnset_s = 1e-3;
   for (std::size_t i = 0; i < pianist.pins.size(); ++i) {
-    const scene::FingerPin& pin = pianist.pins[i];
+    const FingerPin& pin = pianist.pins[i];
     music::Note* pinned = nullptr;
     for (music::Note& note : score.notes) {
       if (note.pitch == fold_onto(pin.key, instrument) &&
@@ -79,7 +80,7 @@ Status apply_finger_pins(const scene::Scene& scene, const scene::Pianist& pianis
 
 // The pianist's motion in the scene's performance style, and what the keys make of it.
 Result<key_action::HumanePerformance> perform_in_style(
-    const scene::Scene& scene, const scene::Pianist& pianist, const music::Score& score,
+    const scene::Scene& scene, const KeyboardPlayer& pianist, const music::Score& score,
     const piano_performance::PianoPerformancePlan& paths, const piano::FingeringModel& model,
     const piano::KeyboardInstrument& instrument, const finger_motion::FingerMotionParams& params,
     const std::filesystem::path& content_dir) {
@@ -128,7 +129,7 @@ Result<piano::ScorePlan> plan_rolling_wide_chords(const music::Score& unpinned,
 
 Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index) {
   const scene::Scene& scene = builder.scene();
-  const scene::Pianist& pianist = scene.pianists.at(index);
+  const KeyboardPlayer& pianist = keyboard_players(scene).at(index);
   const std::filesystem::path& content_dir = builder.content_dir();
   const music::Score& full = builder.scores()[pianist.music_file];
   PianistPlan plan;

@@ -10,7 +10,7 @@
 
 namespace tutti::piano_family {
 
-// The plan of builder.scene().pianists[index]. Adds what it planned afresh to
+// The plan of keyboard_players(builder.scene())[index]. Adds what it planned afresh to
 // builder.replanned().
 Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index);
 

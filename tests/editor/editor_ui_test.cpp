@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The editor's panels driven headless: a bare ImGui context (no window, no renderer), the mouse
 // moved and clicked through ImGuiIO for a few frames, and the model checked afterwards.
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/editor/editor_ui.hpp>
 
 #include <gtest/gtest.h>
@@ -79,7 +80,7 @@ TEST_F(EditorUi, DraggingASliderSetsTheVariationAsOneUndoStep) {
   }
   io.MouseDown[0] = false;
   frame(s);
-  const auto& value = s.document().scene().performers[2].variation.sway_amount;
+  const auto& value = brass_family::brass_players(s.document().scene())[2].variation.sway_amount;
   ASSERT_TRUE(value.has_value());
   EXPECT_NEAR(*value, 0.75, 0.06);  // the grab's width offsets the mapping a little
   EXPECT_EQ(s.document().history().size(), 1u) << "one drag, one undo step";
@@ -92,13 +93,13 @@ TEST_F(EditorUi, ClickingReRollChangesTheSeedAndUndoRestoresIt) {
   Session& s = **session;
   ui_.selected_lane = 1;
   frame(s);
-  const std::uint64_t seed = s.document().scene().performers[1].seed;
+  const std::uint64_t seed = brass_family::brass_players(s.document().scene())[1].seed;
   const WidgetBox reroll = widget("inspector/reroll");
   click(s, (reroll.x0 + reroll.x1) / 2, (reroll.y0 + reroll.y1) / 2);
-  EXPECT_EQ(s.document().scene().performers[1].seed, reroll_seed(seed));
+  EXPECT_EQ(brass_family::brass_players(s.document().scene())[1].seed, reroll_seed(seed));
   const WidgetBox undo = widget("transport/undo");
   click(s, (undo.x0 + undo.x1) / 2, (undo.y0 + undo.y1) / 2);
-  EXPECT_EQ(s.document().scene().performers[1].seed, seed);
+  EXPECT_EQ(brass_family::brass_players(s.document().scene())[1].seed, seed);
 }
 
 TEST_F(EditorUi, ClickingTheRulerSeeks) {
@@ -144,7 +145,7 @@ TEST_F(EditorUi, ALanesMenuAddsABreathAndDeleteRemovesIt) {
   frame(s);
   const WidgetBox item = widget("lane_popup/breathe");
   click(s, (item.x0 + item.x1) / 2, (item.y0 + item.y1) / 2);
-  const auto& marks = s.document().scene().performers[2].breaths.add_s;
+  const auto& marks = brass_family::brass_players(s.document().scene())[2].breaths.add_s;
   ASSERT_EQ(marks.size(), 1u) << ui_.status;
   const double boundary = s.breath_boundary(2, 6.3);
   // The mark names the next note, where it was asked for (written to the millisecond).
@@ -162,8 +163,9 @@ TEST_F(EditorUi, ALanesMenuAddsABreathAndDeleteRemovesIt) {
   frame(s);
   io.KeysDown[ImGuiKey_Delete] = false;
   frame(s);
-  EXPECT_TRUE(s.document().scene().performers[2].breaths.add_s.empty()) << ui_.status;
-  EXPECT_TRUE(s.document().scene().performers[2].breaths.remove_s.empty())
+  EXPECT_TRUE(brass_family::brass_players(s.document().scene())[2].breaths.add_s.empty())
+      << ui_.status;
+  EXPECT_TRUE(brass_family::brass_players(s.document().scene())[2].breaths.remove_s.empty())
       << "a marked breath leaves no remove mark behind";
   EXPECT_EQ(s.document().history().size(), 2u);
 }

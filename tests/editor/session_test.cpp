@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/components/body_motion.hpp>
 #include "editor_test_support.hpp"
 
@@ -177,9 +178,11 @@ TEST(Session, ASliderDragIsOneUndoStep) {
                         /*coalesce=*/v > 0.1));
   }
   EXPECT_EQ(s.document().history().size(), 1u);
-  EXPECT_DOUBLE_EQ(*s.document().scene().performers[0].variation.head_motion, 0.4);
+  EXPECT_DOUBLE_EQ(*brass_family::brass_players(s.document().scene())[0].variation.head_motion,
+                   0.4);
   ASSERT_TRUE(s.undo());
-  EXPECT_DOUBLE_EQ(*s.document().scene().performers[0].variation.head_motion, 0.5);
+  EXPECT_DOUBLE_EQ(*brass_family::brass_players(s.document().scene())[0].variation.head_motion,
+                   0.5);
 }
 
 }  // namespace

@@ -10,7 +10,9 @@
 #include <cmath>
 #include <set>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/music/load_score.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/scene/load_scene.hpp>
 #include <tutti/performance/families.hpp>
 #include "testdata.hpp"
@@ -54,7 +56,7 @@ std::string joined_notes(const DraftedScene& draft) {
 // Onsets of the performers a camera shows (by the camera's name), within [from, to).
 int onsets_for_camera(const Drafted& d, const std::string& camera, double from, double to) {
   std::set<int> parts;
-  for (const scene::Performer& p : d.scene.performers) {
+  for (const brass_family::BrassPlayer& p : brass_family::brass_players(d.scene)) {
     std::string stem;
     for (char c : p.name) stem += c == ' ' ? '_' : static_cast<char>(std::tolower(c));
     const std::string section = stem.substr(0, stem.find('_'));
@@ -62,8 +64,8 @@ int onsets_for_camera(const Drafted& d, const std::string& camera, double from, 
       parts.insert(scene::find_part(d.score, p.part));
     }
   }
-  if (!d.scene.pianists.empty() && camera.rfind("piano", 0) == 0) {
-    for (const std::string& part : d.scene.pianists.front().parts) {
+  if (!piano_family::keyboard_players(d.scene).empty() && camera.rfind("piano", 0) == 0) {
+    for (const std::string& part : piano_family::keyboard_players(d.scene).front().parts) {
       parts.insert(scene::find_part(d.score, part));
     }
   }
@@ -90,14 +92,15 @@ void expect_cuts_follow_the_players(const Drafted& d) {
 TEST(DraftScene, AChoraleWithTrumpetsGetsThreeTrumpetersAndNamesTheVoicesItLeavesOut) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/music21/bwv29.8.mxl");
-  ASSERT_EQ(d.scene.performers.size(), 3u);
+  ASSERT_EQ(brass_family::brass_players(d.scene).size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_EQ(d.scene.performers[i].instrument, "trumpet_bb");
-    EXPECT_EQ(d.scene.performers[i].part, "Trumpet " + std::to_string(i + 1));
-    EXPECT_EQ(d.scene.performers[i].lead, i == 0);
+    EXPECT_EQ(brass_family::brass_players(d.scene)[i].instrument, "trumpet_bb");
+    EXPECT_EQ(brass_family::brass_players(d.scene)[i].part, "Trumpet " + std::to_string(i + 1));
+    EXPECT_EQ(brass_family::brass_players(d.scene)[i].lead, i == 0);
   }
-  EXPECT_TRUE(d.scene.pianists.empty()) << "Soprano, Alto, ... are not piano parts (their program is 0 "
-                                   "only because the file states none)";
+  EXPECT_TRUE(piano_family::keyboard_players(d.scene).empty())
+      << "Soprano, Alto, ... are not piano parts (their program is 0 "
+         "only because the file states none)";
   const std::string notes = joined_notes(d.draft);
   for (const char* part : {"Soprano", "Alto", "Tenor", "Bass", "Timpani"}) {
     EXPECT_NE(notes.find(part), std::string::npos) << notes;
@@ -109,24 +112,26 @@ TEST(DraftScene, AChoraleWithTrumpetsGetsThreeTrumpetersAndNamesTheVoicesItLeave
 TEST(DraftScene, ASymphonysHornsAndTrumpetsGetAPlayerPerVoiceSeatedBySection) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("midi/tonejs/symphony_7_2.mid");
-  ASSERT_EQ(d.scene.performers.size(), 4u);
+  ASSERT_EQ(brass_family::brass_players(d.scene).size(), 4u);
   const char* instruments[] = {"trumpet_bb", "trumpet_bb", "horn_double", "horn_double"};
   const int voices[] = {1, 2, 1, 2};
   for (std::size_t i = 0; i < 4; ++i) {
-    EXPECT_EQ(d.scene.performers[i].instrument, instruments[i]) << i;
-    EXPECT_EQ(d.scene.performers[i].voice, voices[i]) << i;
+    EXPECT_EQ(brass_family::brass_players(d.scene)[i].instrument, instruments[i]) << i;
+    EXPECT_EQ(brass_family::brass_players(d.scene)[i].voice, voices[i]) << i;
     if (i > 0) {
-      EXPECT_NEAR(d.scene.performers[i].position_m.x - d.scene.performers[i - 1].position_m.x, 1.0,
-                  1e-9)
+      EXPECT_NEAR(brass_family::brass_players(d.scene)[i].position_m.x -
+                      brass_family::brass_players(d.scene)[i - 1].position_m.x,
+                  1.0, 1e-9)
           << "seated a metre apart, trumpets on the audience's left";
     }
   }
-  EXPECT_EQ(d.scene.performers[0].part, "2 Trumpets in D");
-  EXPECT_EQ(d.scene.performers[2].part, "2 Horns in E");
+  EXPECT_EQ(brass_family::brass_players(d.scene)[0].part, "2 Trumpets in D");
+  EXPECT_EQ(brass_family::brass_players(d.scene)[2].part, "2 Horns in E");
   // The middle of the arc sits forward, the ends turn in.
-  EXPECT_GT(d.scene.performers[1].position_m.z, d.scene.performers[0].position_m.z);
-  EXPECT_GT(d.scene.performers[0].facing_deg, 0.0);
-  EXPECT_LT(d.scene.performers[3].facing_deg, 0.0);
+  EXPECT_GT(brass_family::brass_players(d.scene)[1].position_m.z,
+            brass_family::brass_players(d.scene)[0].position_m.z);
+  EXPECT_GT(brass_family::brass_players(d.scene)[0].facing_deg, 0.0);
+  EXPECT_LT(brass_family::brass_players(d.scene)[3].facing_deg, 0.0);
   EXPECT_NE(joined_notes(d.draft).find("Violins 1"), std::string::npos);
   EXPECT_GT(d.scene.shots.size(), 10u);
   expect_cuts_follow_the_players(d);
@@ -135,7 +140,7 @@ TEST(DraftScene, ASymphonysHornsAndTrumpetsGetAPlayerPerVoiceSeatedBySection) {
 TEST(DraftScene, EachPlayersCameraLooksAtThatPlayer) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("midi/tonejs/symphony_7_2.mid");
-  for (const scene::Performer& p : d.scene.performers) {
+  for (const brass_family::BrassPlayer& p : brass_family::brass_players(d.scene)) {
     std::string stem;
     for (char c : p.name) stem += c == ' ' ? '_' : static_cast<char>(std::tolower(c));
     const int index = d.scene.find_camera(stem + "_front");
@@ -153,27 +158,28 @@ TEST(DraftScene, EachPlayersCameraLooksAtThatPlayer) {
 TEST(DraftScene, APianoPieceGoesToThePianistWithThePianosCameras) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/pianoplayer/mozart_sonfacile.mxl");
-  EXPECT_TRUE(d.scene.performers.empty());
-  ASSERT_EQ(d.scene.pianists.size(), 1u);
-  EXPECT_EQ(d.scene.pianists.front().parts.size(), 2u);
+  EXPECT_TRUE(brass_family::brass_players(d.scene).empty());
+  ASSERT_EQ(piano_family::keyboard_players(d.scene).size(), 1u);
+  EXPECT_EQ(piano_family::keyboard_players(d.scene).front().parts.size(), 2u);
   EXPECT_GE(d.scene.find_camera("piano_hands"), 0);
   EXPECT_TRUE(d.draft.notes.empty()) << joined_notes(d.draft);
   expect_cuts_follow_the_players(d);
 
   const Drafted bach = draft_of("midi/tonejs/bach_846.mid");
-  ASSERT_EQ(bach.scene.pianists.size(), 1u);
-  EXPECT_EQ(bach.scene.pianists.front().parts.front(), "Piano right");
+  ASSERT_EQ(piano_family::keyboard_players(bach.scene).size(), 1u);
+  EXPECT_EQ(piano_family::keyboard_players(bach.scene).front().parts.front(), "Piano right");
 }
 
 TEST(DraftScene, BrassAndPianoTogetherSitSideBySide) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/lilypond-test-suite/72a-TransposingInstruments.xml");
-  ASSERT_EQ(d.scene.performers.size(), 2u);
-  EXPECT_EQ(d.scene.performers[0].instrument, "trumpet_bb");
-  EXPECT_EQ(d.scene.performers[1].instrument, "horn_double");
-  ASSERT_EQ(d.scene.pianists.size(), 1u);
-  EXPECT_EQ(d.scene.pianists.front().parts, std::vector<std::string>{"Piano"});
-  for (const scene::Performer& p : d.scene.performers) {
+  ASSERT_EQ(brass_family::brass_players(d.scene).size(), 2u);
+  EXPECT_EQ(brass_family::brass_players(d.scene)[0].instrument, "trumpet_bb");
+  EXPECT_EQ(brass_family::brass_players(d.scene)[1].instrument, "horn_double");
+  ASSERT_EQ(piano_family::keyboard_players(d.scene).size(), 1u);
+  EXPECT_EQ(piano_family::keyboard_players(d.scene).front().parts,
+            std::vector<std::string>{"Piano"});
+  for (const brass_family::BrassPlayer& p : brass_family::brass_players(d.scene)) {
     EXPECT_GT(p.position_m.x, 1.5) << p.name << " clear of the piano at the origin";
   }
 }

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <tutti/brass/brass_players.hpp>
 #include <tutti/brass_motion/brass_pose_system.hpp>
 #include <tutti/components/body_motion.hpp>
 #include <tutti/components/finger.hpp>
@@ -21,6 +22,7 @@
 #include <tutti/ensemble_variation/ensemble_variation_system.hpp>
 #include <tutti/brass/brass_components.hpp>
 #include <tutti/performance/families.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/scene/load_scene.hpp>
 #include "testdata.hpp"
@@ -217,7 +219,8 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
   const int planned = before.fingering.fingers[i];
   ASSERT_GE(planned, 1);
   const int pinned = planned == 1 ? 2 : 1;
-  scene->pianists.front().pins.push_back(scene::FingerPin{note.onset_s, note.pitch, pinned});
+  piano_family::edit_keyboard_players(*scene).front().pins.push_back(
+      piano_family::FingerPin{note.onset_s, note.pitch, pinned});
   auto stage = build_stage(*scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
   const PianistPlan& seat = pianist_plan(**stage);
@@ -230,7 +233,8 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
   EXPECT_EQ(finger.key, note.pitch);
   EXPECT_GT(finger.press_depth, 0.9);
 
-  scene->pianists.front().pins.back().key = note.pitch + 1;  // a note that is not there
+  piano_family::edit_keyboard_players(*scene).front().pins.back().key =
+      note.pitch + 1;  // a note that is not there
   auto wrong = build_stage(*scene, {});
   ASSERT_FALSE(wrong);
   EXPECT_NE(wrong.error().message.find("piano.json: /pianist/pins/0: no note of key " +
@@ -249,8 +253,8 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
   EXPECT_FALSE(pianist_plan(**written).played) << "no style: no key simulation";
   ASSERT_EQ((*written)->heard_scores()[0].notes.size(), (*written)->scores()[0].notes.size());
 
-  scene->pianists.front().style = "beginner";
-  scene->pianists.front().sound_from_keys = true;
+  piano_family::edit_keyboard_players(*scene).front().style = "beginner";
+  piano_family::edit_keyboard_players(*scene).front().sound_from_keys = true;
   auto stage = build_stage(*scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
   const PianistPlan& seat = pianist_plan(**stage);
@@ -289,7 +293,7 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
   auto same = build_stage(*scene, again);
   ASSERT_TRUE(same) << same.error().message;
   EXPECT_EQ(pianist_plan(**same).played, seat.played);
-  scene->pianists.front().seed += 1;
+  piano_family::edit_keyboard_players(*scene).front().seed += 1;
   again.reuse_models = same->get();
   auto reseeded = build_stage(*scene, again);
   ASSERT_TRUE(reseeded) << reseeded.error().message;

@@ -12,6 +12,7 @@
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
 #include <tutti/model/model_asset.hpp>
+#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/piano_model/pedal_geometry.hpp>
 #include <tutti/performance/families.hpp>
@@ -206,8 +207,9 @@ TEST(TwoPianists, EachKeyboardSoundsWithItsOwnTouch) {
     auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" /
                                    "keyboards" / "piano_and_organ.json", performance::scene_load_options());
     ASSERT_TRUE(scene) << scene.error().message;
-    scene->pianists[1].instrument = instrument;
-    for (scene::Pianist& p : scene->pianists) p.sound_from_keys = true;
+    piano_family::edit_keyboard_players(*scene)[1].instrument = instrument;
+    for (piano_family::KeyboardPlayer& p : piano_family::edit_keyboard_players(*scene))
+      p.sound_from_keys = true;
     auto built = performance::build_stage(*scene, {});
     ASSERT_TRUE(built) << built.error().message;
     const Stage& stage = **built;
