@@ -168,6 +168,14 @@ struct Scene {
     }
     return nullptr;
   }
+  // What `key` holds as T, or an empty T (one static T) when nothing is there: a family's list,
+  // read without a null check.
+  template <class T>
+  const T& section_or_empty(std::string_view key) const {
+    static const T empty{};
+    const T* found = section<T>(key);
+    return found != nullptr ? *found : empty;
+  }
   // The same, to change; a T is added under `key` when there is none. Precondition: what `key`
   // holds, if anything, is a T.
   template <class T>

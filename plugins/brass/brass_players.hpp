@@ -45,9 +45,7 @@ inline constexpr std::string_view kBrassPlayersKey = "performers";
 
 // The scene's brass players in file order (none when the scene has no "performers").
 inline const std::vector<BrassPlayer>& brass_players(const scene::Scene& scene) {
-  static const std::vector<BrassPlayer> none;
-  const auto* players = scene.section<std::vector<BrassPlayer>>(kBrassPlayersKey);
-  return players != nullptr ? *players : none;
+  return scene.section_or_empty<std::vector<BrassPlayer>>(kBrassPlayersKey);
 }
 
 // The same, to change (the section reading them, or a tool's edited copy of a loaded scene); an

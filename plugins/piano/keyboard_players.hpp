@@ -64,9 +64,7 @@ inline constexpr std::string_view kKeyboardPlayersKey = "pianists";
 
 // The scene's keyboard players in file order (none when the scene has none).
 inline const std::vector<KeyboardPlayer>& keyboard_players(const scene::Scene& scene) {
-  static const std::vector<KeyboardPlayer> none;
-  const auto* players = scene.section<std::vector<KeyboardPlayer>>(kKeyboardPlayersKey);
-  return players != nullptr ? *players : none;
+  return scene.section_or_empty<std::vector<KeyboardPlayer>>(kKeyboardPlayersKey);
 }
 
 // The same, to change (the section reading them, or a tool's edited copy of a loaded scene); an
