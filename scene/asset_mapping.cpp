@@ -12,9 +12,6 @@
 namespace tutti::scene {
 namespace {
 
-constexpr std::array<AssetKind, 4> kKinds{AssetKind::character, AssetKind::hand, AssetKind::trumpet,
-                                          AssetKind::trombone};
-
 std::vector<std::string> finger_roles() {
   std::vector<std::string> roles;
   for (const char* side : {"l", "r"}) {
@@ -45,8 +42,8 @@ RoleTable make_table(std::vector<std::string> names, std::vector<std::string> re
   return table;
 }
 
-const RoleTable& table(AssetKind kind) {
-  static const RoleTable character = [] {
+const RoleTable& character_table() {
+  static const RoleTable table = [] {
     std::vector<std::string> names{"hips",        "spine",      "chest",      "neck",
                                    "head",        "shoulder_l", "shoulder_r", "upper_arm_l",
                                    "upper_arm_r", "forearm_l",  "forearm_r",  "hand_l",
@@ -57,7 +54,11 @@ const RoleTable& table(AssetKind kind) {
     return make_table(std::move(names), {"hips", "spine", "head", "upper_arm_l", "upper_arm_r",
                                          "forearm_l", "forearm_r", "hand_l", "hand_r"});
   }();
-  static const RoleTable hand = [] {
+  return table;
+}
+
+const RoleTable& hand_table() {
+  static const RoleTable table = [] {
     std::vector<std::string> names{"forearm_l", "forearm_r", "hand_l", "hand_r"};
     std::vector<std::string> required{"hand_l", "hand_r"};
     for (std::string& finger : finger_roles()) {
@@ -66,22 +67,7 @@ const RoleTable& table(AssetKind kind) {
     }
     return make_table(std::move(names), std::move(required));
   }();
-  static const RoleTable trumpet =
-      make_table({"valve_1", "valve_2", "valve_3", "mouthpiece", "grip_left", "grip_right"},
-                 {"valve_1", "valve_2", "valve_3", "mouthpiece"});
-  static const RoleTable trombone = make_table(
-      {"slide", "bell_section", "mouthpiece", "grip_left", "grip_right"}, {"slide", "mouthpiece"});
-  switch (kind) {
-    case AssetKind::character:
-      return character;
-    case AssetKind::hand:
-      return hand;
-    case AssetKind::trumpet:
-      return trumpet;
-    case AssetKind::trombone:
-      return trombone;
-  }
-  return character;
+  return table;
 }
 
 constexpr std::array<std::string_view, 2> kCharacterMorphs{"tension", "open"};
@@ -95,12 +81,12 @@ std::string join(std::span<const std::string_view> items) {
   return text;
 }
 
-std::string article(AssetKind kind) { return "a " + std::string(asset_kind_name(kind)); }
+std::string article(const AssetKind& kind) { return "a " + std::string(kind.name); }
 
 // An object of role -> name strings; every role one of `known`, every name non-empty.
 Result<std::vector<std::pair<std::string, std::string>>> read_roles(
     const FieldReader& reader, const nlohmann::json& object, const std::string& path,
-    std::span<const std::string_view> known, AssetKind kind) {
+    std::span<const std::string_view> known, const AssetKind& kind) {
   if (!object.is_object()) return reader.error(path, "expected an object");
   std::vector<std::pair<std::string, std::string>> roles;
   for (const auto& item : object.items()) {
@@ -131,43 +117,32 @@ std::string_view lookup(const std::vector<std::pair<std::string, std::string>>& 
 
 }  // namespace
 
-std::string_view asset_kind_name(AssetKind kind) {
-  switch (kind) {
-    case AssetKind::character:
-      return "character";
-    case AssetKind::hand:
-      return "hand";
-    case AssetKind::trumpet:
-      return "trumpet";
-    case AssetKind::trombone:
-      return "trombone";
-  }
-  return "character";
+const AssetKind& character_kind() {
+  static const AssetKind kind{kCharacterKind, character_table().roles, character_table().required,
+                              kCharacterMorphs, true};
+  return kind;
 }
 
-std::span<const std::string_view> node_roles(AssetKind kind) { return table(kind).roles; }
-
-std::span<const std::string_view> required_node_roles(AssetKind kind) {
-  return table(kind).required;
-}
-
-std::span<const std::string_view> morph_roles(AssetKind kind) {
-  if (kind == AssetKind::character) return kCharacterMorphs;
-  return {};
+const AssetKind& hand_kind() {
+  static const AssetKind kind{kHandKind, hand_table().roles, hand_table().required, {}, true};
+  return kind;
 }
 
 std::string_view AssetMapping::node(std::string_view role) const { return lookup(nodes, role); }
 std::string_view AssetMapping::morph(std::string_view role) const { return lookup(morphs, role); }
 
-Result<AssetMapping> load_asset_mapping(const std::filesystem::path& path) {
+Result<AssetMapping> load_asset_mapping(const std::filesystem::path& path,
+                                        std::span<const AssetKind> instrument_kinds) {
   auto document = read_scene_json(path);
   if (!document) return document.error();
-  return parse_asset_mapping(*document, path.filename().string(), path.parent_path());
+  return parse_asset_mapping(*document, path.filename().string(), path.parent_path(),
+                             instrument_kinds);
 }
 
 Result<AssetMapping> parse_asset_mapping(const nlohmann::json& document,
                                          const std::string& file_name,
-                                         const std::filesystem::path& base_dir) {
+                                         const std::filesystem::path& base_dir,
+                                         std::span<const AssetKind> instrument_kinds) {
   const FieldReader reader(file_name);
   if (auto ok = reader.json().check_keys(document, "",
                                          {"description", "model", "kind", "scale", "rotation_deg",
@@ -193,16 +168,17 @@ Result<AssetMapping> parse_asset_mapping(const nlohmann::json& document,
 
   auto kind = reader.string(document, "", "kind");
   if (!kind) return kind.error();
-  bool kind_known = false;
+  std::vector<const AssetKind*> known{&character_kind(), &hand_kind()};
+  for (const AssetKind& k : instrument_kinds) known.push_back(&k);
+  const AssetKind* found = nullptr;
   std::string kinds;
-  for (AssetKind k : kKinds) {
-    kinds += (kinds.empty() ? "" : ", ") + std::string(asset_kind_name(k));
-    if (asset_kind_name(k) == *kind) {
-      mapping.kind = k;
-      kind_known = true;
-    }
+  for (const AssetKind* k : known) {
+    kinds += (kinds.empty() ? "" : ", ") + std::string(k->name);
+    if (found == nullptr && k->name == *kind) found = k;
   }
-  if (!kind_known) return reader.error("/kind", "must be one of " + kinds);
+  if (found == nullptr) return reader.error("/kind", "must be one of " + kinds);
+  const AssetKind& the_kind = *found;
+  mapping.kind = *kind;
 
   auto scale = reader.number_or(document, "", "scale", 0.0, 1000.0, 1.0);
   if (!scale) return scale.error();
@@ -219,37 +195,38 @@ Result<AssetMapping> parse_asset_mapping(const nlohmann::json& document,
   mapping.translation_given = document.contains("translation_m");
 
   // A character's mapping overrides what is recognised: it may name any roles, or none.
-  const bool overrides = mapping.kind == AssetKind::character;
+  const bool overrides = the_kind.name == kCharacterKind;
   if (!document.contains("nodes") && !overrides) return reader.error("/nodes", "missing");
   if (document.contains("nodes")) {
     auto nodes =
-        read_roles(reader, document.at("nodes"), "/nodes", node_roles(mapping.kind), mapping.kind);
+        read_roles(reader, document.at("nodes"), "/nodes", the_kind.node_roles, the_kind);
     if (!nodes) return nodes.error();
     mapping.nodes = std::move(*nodes);
   }
-  for (std::string_view role : required_node_roles(mapping.kind)) {
+  for (std::string_view role : the_kind.required_node_roles) {
     if (overrides) break;
     if (mapping.node(role).empty()) {
       return reader.error("/nodes", "missing role \"" + std::string(role) + "\" (required for " +
-                                        article(mapping.kind) + ": " +
-                                        join(required_node_roles(mapping.kind)) + ")");
+                                        article(the_kind) + ": " +
+                                        join(the_kind.required_node_roles) + ")");
     }
   }
   if (document.contains("morphs")) {
-    auto morphs = read_roles(reader, document.at("morphs"), "/morphs", morph_roles(mapping.kind),
-                             mapping.kind);
+    auto morphs =
+        read_roles(reader, document.at("morphs"), "/morphs", the_kind.morph_roles, the_kind);
     if (!morphs) return morphs.error();
     mapping.morphs = std::move(*morphs);
   }
   return mapping;
 }
 
-nlohmann::ordered_json asset_mapping_document(const AssetMapping& mapping, const std::string& model,
+nlohmann::ordered_json asset_mapping_document(const AssetMapping& mapping, const AssetKind& kind,
+                                              const std::string& model,
                                               const std::string& description) {
   nlohmann::ordered_json doc;
   if (!description.empty()) doc["description"] = description;
   doc["model"] = model;
-  doc["kind"] = std::string(asset_kind_name(mapping.kind));
+  doc["kind"] = std::string(kind.name);
   doc["scale"] = mapping.scale;
   doc["rotation_deg"] = {mapping.rotation_deg.x, mapping.rotation_deg.y, mapping.rotation_deg.z};
   if (mapping.translation_m.x != 0.0 || mapping.translation_m.y != 0.0 ||
@@ -257,7 +234,7 @@ nlohmann::ordered_json asset_mapping_document(const AssetMapping& mapping, const
     doc["translation_m"] = {mapping.translation_m.x, mapping.translation_m.y, mapping.translation_m.z};
   }
   doc["nodes"] = nlohmann::ordered_json::object();
-  for (const std::string_view role : node_roles(mapping.kind)) {
+  for (const std::string_view role : kind.node_roles) {
     const std::string_view node = mapping.node(role);
     if (!node.empty()) doc["nodes"][std::string(role)] = std::string(node);
   }

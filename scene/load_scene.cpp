@@ -291,7 +291,11 @@ Result<Scene> SceneParser::parse(const json& document) {
     if (!seed) return seed.error();
     scene.seed = *seed;
   }
-  const SectionContext context(reader_, base_dir_, content_dir_);
+  std::vector<AssetKind> instrument_kinds;
+  for (const SceneSection* section : sections_) {
+    for (const AssetKind& kind : section->asset_kinds()) instrument_kinds.push_back(kind);
+  }
+  const SectionContext context(reader_, base_dir_, content_dir_, instrument_kinds);
   for (const SceneSection* section : sections_) {
     if (auto ok = section->read(document, context, scene); !ok) return ok.error();
   }

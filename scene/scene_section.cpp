@@ -53,7 +53,8 @@ Status SectionContext::variation(const nlohmann::json& object, std::string_view 
 }
 
 Status SectionContext::mapping(const nlohmann::json& object, std::string_view path,
-                               const char* key, AssetKind expected, fs::path& out) const {
+                               const char* key, const AssetKind& expected,
+                               fs::path& out) const {
   if (!object.contains(key)) return {};
   auto written = fields_.string(object, path, key);
   if (!written) return written.error();
@@ -64,21 +65,19 @@ Status SectionContext::mapping(const nlohmann::json& object, std::string_view pa
   // humanoid or the hands in it (engine/humanoid); instruments still need a mapping file.
   const std::string extension = resolved.extension().string();
   if (extension == ".glb" || extension == ".gltf" || extension == ".vrm") {
-    if (expected != AssetKind::character && expected != AssetKind::hand) {
-      return error(where, "\"" + *written + "\" is a model; a " +
-                              std::string(asset_kind_name(expected)) +
+    if (!expected.recognised_by_itself) {
+      return error(where, "\"" + *written + "\" is a model; a " + std::string(expected.name) +
                               " needs a mapping file (only characters and hands are recognised "
                               "by themselves)");
     }
     out = resolved;
     return {};
   }
-  auto mapping = load_asset_mapping(resolved);
+  auto mapping = load_asset_mapping(resolved, instrument_kinds_);
   if (!mapping) return mapping.error();
-  if (mapping->kind != expected) {
-    return error(where, "\"" + *written + "\" maps a " +
-                            std::string(asset_kind_name(mapping->kind)) + ", expected a " +
-                            std::string(asset_kind_name(expected)));
+  if (mapping->kind != expected.name) {
+    return error(where, "\"" + *written + "\" maps a " + mapping->kind + ", expected a " +
+                            std::string(expected.name));
   }
   out = resolved;
   return {};

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,8 +33,11 @@ bool is_existing_file(const std::filesystem::path& path);
 class SectionContext {
  public:
   SectionContext(const FieldReader& fields, std::filesystem::path base_dir,
-                 std::filesystem::path content_dir)
-      : fields_(fields), base_dir_(std::move(base_dir)), content_dir_(std::move(content_dir)) {}
+                 std::filesystem::path content_dir, std::span<const AssetKind> instrument_kinds)
+      : fields_(fields),
+        base_dir_(std::move(base_dir)),
+        content_dir_(std::move(content_dir)),
+        instrument_kinds_(instrument_kinds) {}
 
   const FieldReader& fields() const { return fields_; }
   Error error(std::string_view path, std::string_view reason) const {
@@ -49,9 +53,10 @@ class SectionContext {
   // A performer's "variation" object: the keys of kVariationFields, each in [0, 1].
   Status variation(const nlohmann::json& object, std::string_view path, Variation& out) const;
   // object[key]: an existing file, resolved against base_dir(): an asset mapping file of kind
-  // `expected`, or (for characters and hands) the model file itself. Absent: out unchanged.
+  // `expected` (a body kind, or one a section registers), or the model file itself where the
+  // kind is recognised by itself (characters, hands). Absent: out unchanged.
   Status mapping(const nlohmann::json& object, std::string_view path, const char* key,
-                 AssetKind expected, std::filesystem::path& out) const;
+                 const AssetKind& expected, std::filesystem::path& out) const;
   // A JSON file of the content folder (e.g. "<family>/settings.json"), with one-line errors.
   Result<nlohmann::json> content_json(const std::filesystem::path& relative) const;
 
@@ -59,6 +64,7 @@ class SectionContext {
   const FieldReader& fields_;
   std::filesystem::path base_dir_;
   std::filesystem::path content_dir_;
+  std::span<const AssetKind> instrument_kinds_;  // every section's
 };
 
 class SceneSection {
@@ -69,6 +75,9 @@ class SceneSection {
   virtual std::string_view family() const = 0;
   // The top-level keys it reads; unique across the sections a program registers.
   virtual std::vector<std::string_view> keys() const = 0;
+  // The kinds of asset mapping files its instruments take (a user's instrument model), each with
+  // its roles; none by default. Names unique across the sections a program registers.
+  virtual std::span<const AssetKind> asset_kinds() const { return {}; }
   // Reads its keys from `document` (called whether or not they are present; the scene's own
   // keys, music and seed, are already in `scene`), adds its players to `scene` and their parts
   // to scene.part_claims. Errors name the file and the JSON path.

@@ -136,7 +136,7 @@ Result<BodyRetarget> make_body_retarget(const model::ModelAsset& user, const Map
   // The user's joints by role, and tutti's.
   std::map<std::string, int> node_of;  // role -> user node
   std::map<std::string, glm::vec3> at, tutti_at;
-  for (const std::string_view role_view : scene::node_roles(scene::AssetKind::character)) {
+  for (const std::string_view role_view : scene::character_kind().node_roles) {
     const std::string role(role_view);
     auto node = find_role(user, mapped, role);
     if (!node) return node.error();

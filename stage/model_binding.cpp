@@ -56,7 +56,7 @@ Result<MappedModel> load_recognised(StageBuilder& builder, const std::filesystem
     if (overrides->rotation_given) mapping.rotation_deg = overrides->rotation_deg;
     if (overrides->translation_given) mapping.translation_m = overrides->translation_m;
     std::string missing;
-    for (const std::string_view role : scene::required_node_roles(scene::AssetKind::character)) {
+    for (const std::string_view role : scene::character_kind().required_node_roles) {
       if (mapping.node(role).empty()) missing += (missing.empty() ? "" : ", ") + std::string(role);
     }
     if (!missing.empty()) {
@@ -81,7 +81,7 @@ scene::AssetMapping recognised_character_mapping(const humanoid::Humanoid& human
   scene::AssetMapping mapping;
   mapping.source = file.filename().string();
   mapping.model = file;
-  mapping.kind = scene::AssetKind::character;
+  mapping.kind = scene::kCharacterKind;
   mapping.scale = humanoid.metres_per_unit;
   const glm::dvec3 rotation = humanoid::rotation_to_tutti_deg(humanoid);
   mapping.rotation_deg = {rotation.x, rotation.y, rotation.z};
@@ -105,7 +105,7 @@ Result<MappedModel> load_hands(StageBuilder& builder, const std::filesystem::pat
   const humanoid::Humanoid h = humanoid::recognise(asset);
   const std::string name = file.filename().string();
   std::string missing;
-  for (const std::string_view role : scene::required_node_roles(scene::AssetKind::hand)) {
+  for (const std::string_view role : scene::hand_kind().required_node_roles) {
     if (h.node(role) < 0) missing += (missing.empty() ? "" : ", ") + std::string(role);
   }
   if (!missing.empty()) {
@@ -127,9 +127,9 @@ Result<MappedModel> load_hands(StageBuilder& builder, const std::filesystem::pat
   scene::AssetMapping mapping;
   mapping.source = name;
   mapping.model = file;
-  mapping.kind = scene::AssetKind::hand;
+  mapping.kind = scene::kHandKind;
   mapping.scale = scale;
-  for (const std::string_view role : scene::node_roles(scene::AssetKind::hand)) {
+  for (const std::string_view role : scene::hand_kind().node_roles) {
     const int node = h.node(role);
     if (node >= 0) mapping.nodes.emplace_back(role, asset.nodes[static_cast<std::size_t>(node)].name);
   }
@@ -142,7 +142,8 @@ Result<MappedModel> load_hands(StageBuilder& builder, const std::filesystem::pat
 }
 
 Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::path& mapping_file,
-                                const std::string& generated_file) {
+                                const std::string& generated_file,
+                                std::span<const scene::AssetKind> instrument_kinds) {
   MappedModel out;
   if (mapping_file.empty()) {
     auto model = builder.generated_model(generated_file);
@@ -154,9 +155,9 @@ Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::pa
   if (extension == ".glb" || extension == ".gltf" || extension == ".vrm") {
     return load_recognised(builder, mapping_file, nullptr);
   }
-  auto mapping = scene::load_asset_mapping(mapping_file);
+  auto mapping = scene::load_asset_mapping(mapping_file, instrument_kinds);
   if (!mapping) return mapping.error();
-  if (mapping->kind == scene::AssetKind::character) {
+  if (mapping->kind == scene::kCharacterKind) {
     return load_recognised(builder, mapping->model, &*mapping);
   }
   auto model = builder.user_model(mapping->model);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -36,9 +37,11 @@ struct MappedModel {
 // The user's model named by `mapping_file`, or the generated `generated_file` when it is empty.
 // A character (a model file, or a mapping file of kind character) is recognised by itself and
 // the mapping file's roles, morphs, scale, rotation and translation override what was found; an
-// instrument's or hand's mapping file is taken as it is.
+// instrument's or hand's mapping file is taken as it is, its kind one of the body's or of
+// `instrument_kinds` (the calling family's).
 Result<MappedModel> load_mapped(StageBuilder& builder, const std::filesystem::path& mapping_file,
-                                const std::string& generated_file);
+                                const std::string& generated_file,
+                                std::span<const scene::AssetKind> instrument_kinds = {});
 
 // A player's hands from a user's model: a mapping file of kind hand as it is, or a model file
 // whose hands and fingers are recognised by themselves (engine/humanoid); its units from the

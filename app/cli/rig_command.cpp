@@ -151,7 +151,7 @@ int run_rig(const RigOptions& o, std::ostream& out, std::ostream& err) {
     const std::filesystem::path relative =
         std::filesystem::relative(std::filesystem::absolute(o.model), base, ec);
     const nlohmann::ordered_json doc = scene::asset_mapping_document(
-        stage::recognised_character_mapping(h, *model, o.model),
+        stage::recognised_character_mapping(h, *model, o.model), scene::character_kind(),
         ec || relative.empty() ? std::filesystem::absolute(o.model).string() : relative.string(),
         "Written by `tutti rig " + file + " --mapping` (" + h.method +
             "); edit any role to override what was recognised.");

@@ -84,7 +84,8 @@ std::vector<std::array<double, 2>> phrases_of(const brass::BrassLine& line) {
 Status bind_player(stage::StageBuilder& builder, const BrassPlayer& performer,
                    const std::string& model_stem, std::uint32_t stand_model,
                    std::uint32_t chair_model, bool rig_generated, BrassRig& rig) {
-  auto horn = stage::load_mapped(builder, performer.instrument_mapping, model_stem + ".glb");
+  auto horn = stage::load_mapped(builder, performer.instrument_mapping, model_stem + ".glb",
+                                 kBrassAssetKinds);
   if (!horn) return horn.error();
   if (rig_generated || !performer.character_mapping.empty()) {
     auto body = stage::place_body(builder, performer.character_mapping, rig.placement);

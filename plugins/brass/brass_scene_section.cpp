@@ -47,16 +47,16 @@ Status parse_instrument_mapping(const SectionContext& context, const json& objec
   auto loaded =
       brass::load_instrument(context.content_dir() / "instruments" / (instrument + ".json"));
   if (!loaded) return loaded.error();
-  AssetKind kind = AssetKind::trombone;
+  const AssetKind* kind = &trombone_kind();
   if (loaded->mechanism == brass::Mechanism::valves) {
     if (loaded->valves.size() != 3) {
       return context.error(
           join_path(path, "instrument_model"),
           "user models exist for trumpets and trombones only, not " + loaded->display_name);
     }
-    kind = AssetKind::trumpet;
+    kind = &trumpet_kind();
   }
-  return context.mapping(object, path, "instrument_model", kind, out);
+  return context.mapping(object, path, "instrument_model", *kind, out);
 }
 
 Status parse_performer(const SectionContext& context, const std::vector<std::string>& ids,
@@ -127,7 +127,7 @@ Status parse_performer(const SectionContext& context, const std::vector<std::str
       return ok;
     }
   }
-  if (auto ok = context.mapping(object, path, "character", AssetKind::character,
+  if (auto ok = context.mapping(object, path, "character", scene::character_kind(),
                                 performer.character_mapping);
       !ok) {
     return ok;

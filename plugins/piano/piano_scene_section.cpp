@@ -192,13 +192,13 @@ Status parse_pianist(const SectionContext& context, const json& object, const Sc
     }
   }
   if (auto ok =
-          context.mapping(object, path, "character", scene::AssetKind::character, pianist.character_mapping);
+          context.mapping(object, path, "character", scene::character_kind(), pianist.character_mapping);
       !ok) {
     return ok;
   }
   if (auto ok = parse_finger_pins(reader, object, path, pianist.pins); !ok) return ok;
   if (auto ok = parse_pianist_style(context, object, pianist); !ok) return ok;
-  return context.mapping(object, path, "hands", scene::AssetKind::hand, pianist.hands_mapping);
+  return context.mapping(object, path, "hands", scene::hand_kind(), pianist.hands_mapping);
 }
 
 }  // namespace

@@ -340,7 +340,7 @@ TEST(PerformanceExport, AUsersCharacterExportsOnItsOwnSkeleton) {
   ASSERT_TRUE(io.WriteGltfSceneToFile(&model, (dir / "user_character.glb").string(), true, true,
                                       false, true));
   json nodes = json::object();
-  for (const std::string_view role : scene::node_roles(scene::AssetKind::character)) {
+  for (const std::string_view role : scene::character_kind().node_roles) {
     if (names.count("User:" + std::string(role)))
       nodes[std::string(role)] = "User:" + std::string(role);
   }

@@ -5,7 +5,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <string>
+
+#include <tutti/brass/brass_asset_kinds.hpp>
 
 #include "scene_test_support.hpp"
 
@@ -15,13 +18,14 @@ namespace {
 using nlohmann::json;
 using test::scenes_dir;
 using test::ScratchDir;
+using brass_family::kBrassAssetKinds;
 
 bool has(std::span<const std::string_view> roles, std::string_view role) {
   return std::find(roles.begin(), roles.end(), role) != roles.end();
 }
 
 TEST(AssetMappingRoles, TheDocumentedNames) {
-  const auto character = node_roles(AssetKind::character);
+  const auto character = character_kind().node_roles;
   EXPECT_EQ(character.size(), 19u + 30u + 3u);
   EXPECT_EQ(character.front(), "hips");
   for (const char* role :
@@ -31,20 +35,41 @@ TEST(AssetMappingRoles, TheDocumentedNames) {
     EXPECT_TRUE(has(character, role)) << role;
   }
   EXPECT_FALSE(has(character, "little_4_r"));
-  EXPECT_EQ(node_roles(AssetKind::trumpet).size(), 6u);
-  EXPECT_TRUE(has(node_roles(AssetKind::trumpet), "valve_3"));
-  EXPECT_EQ(node_roles(AssetKind::trombone).size(), 5u);
-  EXPECT_TRUE(has(node_roles(AssetKind::trombone), "bell_section"));
-  EXPECT_EQ(node_roles(AssetKind::hand).size(), 4u + 30u);
-  EXPECT_EQ(required_node_roles(AssetKind::hand).size(), 2u + 30u);
-  EXPECT_EQ(morph_roles(AssetKind::character).size(), 2u);
-  EXPECT_TRUE(morph_roles(AssetKind::trumpet).empty());
-  for (AssetKind kind :
-       {AssetKind::character, AssetKind::hand, AssetKind::trumpet, AssetKind::trombone}) {
-    for (std::string_view role : required_node_roles(kind)) {
-      EXPECT_TRUE(has(node_roles(kind), role)) << role;
+  EXPECT_EQ(brass_family::trumpet_kind().node_roles.size(), 6u);
+  EXPECT_TRUE(has(brass_family::trumpet_kind().node_roles, "valve_3"));
+  EXPECT_EQ(brass_family::trombone_kind().node_roles.size(), 5u);
+  EXPECT_TRUE(has(brass_family::trombone_kind().node_roles, "bell_section"));
+  EXPECT_EQ(hand_kind().node_roles.size(), 4u + 30u);
+  EXPECT_EQ(hand_kind().required_node_roles.size(), 2u + 30u);
+  EXPECT_EQ(character_kind().morph_roles.size(), 2u);
+  EXPECT_TRUE(brass_family::trumpet_kind().morph_roles.empty());
+  for (const AssetKind* kind : {&character_kind(), &hand_kind(), &brass_family::trumpet_kind(),
+                                &brass_family::trombone_kind()}) {
+    for (std::string_view role : kind->required_node_roles) {
+      EXPECT_TRUE(has(kind->node_roles, role)) << role;
     }
   }
+}
+
+// The scene knows the body's kinds only; a family's kinds are known where it is registered.
+TEST(AssetMappingKinds, AnInstrumentKindIsKnownOnlyWhereAFamilyGivesIt) {
+  const json document = json::parse(R"({"model": "drum.glb", "kind": "snare",
+    "nodes": {"head": "DrumHead"}})");
+  auto unknown = parse_asset_mapping(document, "m.json", "/assets");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_EQ(unknown.error().message, "m.json: /kind: must be one of character, hand");
+  constexpr std::array<std::string_view, 2> roles{"head", "rim"};
+  constexpr std::array<std::string_view, 1> required{"head"};
+  const std::array<AssetKind, 1> kinds{AssetKind{"snare", roles, required, {}, false}};
+  auto known = parse_asset_mapping(document, "m.json", "/assets", kinds);
+  ASSERT_TRUE(known.ok()) << known.error().message;
+  EXPECT_EQ(known->kind, "snare");
+  EXPECT_EQ(known->node("head"), "DrumHead");
+  const json no_head = json::parse(R"({"model": "drum.glb", "kind": "snare", "nodes": {"rim": "R"}})");
+  auto missing = parse_asset_mapping(no_head, "m.json", "/assets", kinds);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.error().message,
+            "m.json: /nodes: missing role \"head\" (required for a snare: head)");
 }
 
 TEST(AssetMapping, TheExampleLoads) {
@@ -52,7 +77,7 @@ TEST(AssetMapping, TheExampleLoads) {
   auto mapping = load_asset_mapping(path);
   ASSERT_TRUE(mapping.ok()) << mapping.error().message;
   EXPECT_EQ(mapping->source, "mixamo_character.mapping.json");
-  EXPECT_EQ(mapping->kind, AssetKind::character);
+  EXPECT_EQ(mapping->kind, kCharacterKind);
   EXPECT_EQ(mapping->model, scenes_dir() / "examples/mixamo_character.glb");
   EXPECT_DOUBLE_EQ(mapping->scale, 0.01);
   EXPECT_EQ(mapping->node("hips"), "mixamorig:Hips");
@@ -69,13 +94,13 @@ json trumpet() {
 }
 
 std::string mapping_error_of(const json& document) {
-  auto mapping = parse_asset_mapping(document, "m.json", "/assets");
+  auto mapping = parse_asset_mapping(document, "m.json", "/assets", kBrassAssetKinds);
   if (mapping.ok()) return "(loaded)";
   return mapping.error().message;
 }
 
 TEST(AssetMappingErrors, TheValidBaseLoads) {
-  auto mapping = parse_asset_mapping(trumpet(), "m.json", "/assets");
+  auto mapping = parse_asset_mapping(trumpet(), "m.json", "/assets", kBrassAssetKinds);
   ASSERT_TRUE(mapping.ok()) << mapping.error().message;
   EXPECT_EQ(mapping->model, std::filesystem::path("/assets/horn.gltf"));
   EXPECT_EQ(mapping->node("valve_2"), "V2");
