@@ -50,7 +50,7 @@ struct Note {
 
 struct Part {
   std::string id;               // MusicXML part id, or "track<T>-ch<C>" for MIDI
-  std::string name;             // human name ("Trumpet in Bb"), may be empty
+  std::string name;             // human name, as the file writes it; may be empty
   int program = 0;              // General MIDI program 0..127
   int channel = -1;             // MIDI channel 0..15, -1 = not stated
   int track = -1;               // MIDI track index, -1 = not from a MIDI track

@@ -219,7 +219,7 @@ int MidiScoreBuilder::program_at(int track, int channel, std::int64_t tick) cons
     return found->channel == channel ? found : nullptr;
   };
   const ProgramChange* latest = last_not_after(tick, std::numeric_limits<int>::max());
-  if (latest == nullptr) return 0;  // General MIDI default: acoustic grand piano
+  if (latest == nullptr) return 0;  // General MIDI: program 0 until a program change
   const ProgramChange* own = last_not_after(latest->tick, track);
   if (own != nullptr && own->tick == latest->tick && own->track == track) return own->program;
   return latest->program;

@@ -29,7 +29,7 @@ std::optional<double> metronome_bpm(pugi::xml_node metronome);
 // anything unreadable.
 std::optional<std::pair<int, int>> time_signature_fraction(pugi::xml_node time);
 
-// A transposing part writes its key transposed (trumpet in Bb: D major for concert C major).
+// A transposing part writes its key transposed (a part in Bb: D major for concert C major).
 // Each semitone adds 7 fifths (mod 12); the result is the spelling with at most 7 accidentals.
 int concert_fifths(int written_fifths, int transpose_semitones);
 
