@@ -78,12 +78,10 @@ class Editor final : public ScriptHost {
       player_->transport().pause(now());
     }
   }
-  void select(PlayerRef player) override {
+  void select(const PlayerRef& player) override {
     const auto& lanes = session_->timeline().lanes;
     for (std::size_t i = 0; i < lanes.size(); ++i) {
-      if (lanes[i].pianist == player.pianist && lanes[i].performer == player.performer) {
-        ui_.selected_lane = i;
-      }
+      if (lanes[i].player == player.pointer) ui_.selected_lane = i;
     }
   }
   Status draw_frames(int count) override {

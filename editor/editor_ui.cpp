@@ -155,7 +155,7 @@ void draw_transport(Session& session, UiState& ui, UiRequests& out) {
   ImGui::End();
 }
 
-void draw_variation(Session& session, UiState& ui, PlayerRef player,
+void draw_variation(Session& session, UiState& ui, const PlayerRef& player,
                     const scene::Variation& variation, std::uint64_t seed) {
   const ensemble_variation::VariationParams drawn = ensemble_variation::resolve_variation(seed, {});
   for (std::size_t f = 0; f < scene::kVariationFields.size(); ++f) {
@@ -194,7 +194,7 @@ void draw_variation(Session& session, UiState& ui, PlayerRef player,
   record(ui, "inspector/reroll");
 }
 
-// The pianist's hand: the allowed positions of each event (bands) and the path through them,
+// A fingered player's hands: the allowed positions of each event (bands) and the path through them,
 // over the few seconds around the playhead.
 void draw_hand_area(const TimelineLane& timeline, const UiState& ui) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -259,12 +259,13 @@ void draw_inspector(Session& session, UiState& ui) {
   }
   ui.selected_lane = std::min(ui.selected_lane, timeline.lanes.size() - 1);
   const TimelineLane& lane = timeline.lanes[ui.selected_lane];
-  if (!lane.pianist) {
-    const brass_family::BrassPlayer& p = brass_family::brass_players(scene)[lane.performer];
+  const PlayerRef player{lane.player, lane.name};
+  if (lane.expressive && lane.index < brass_family::brass_players(scene).size()) {
+    const brass_family::BrassPlayer& p = brass_family::brass_players(scene)[lane.index];
     ImGui::Text("%s", p.name.c_str());
     ImGui::Text("%s, part \"%s\"%s", p.instrument.c_str(), p.part.c_str(), p.lead ? ", lead" : "");
     ImGui::Separator();
-    draw_variation(session, ui, {false, lane.performer}, p.variation, p.seed);
+    draw_variation(session, ui, player, p.variation, p.seed);
     ImGui::Separator();
     ImGui::TextUnformatted("Expressions (right-click the lane to add)");
     for (std::size_t i = 0; i < p.expressions.size(); ++i) {
@@ -274,13 +275,12 @@ void draw_inspector(Session& session, UiState& ui) {
                   e.start_s, e.end_s, e.amount);
       ImGui::SameLine();
       if (ImGui::SmallButton("delete")) {
-        apply(session, ui, delete_expression(session.document().json(), lane.performer, e));
+        apply(session, ui, delete_expression(session.document().json(), player, e));
       }
       ImGui::PopID();
     }
-  } else if (lane.performer < piano_family::keyboard_players(scene).size()) {
-    const piano_family::KeyboardPlayer& pianist =
-        piano_family::keyboard_players(scene)[lane.performer];
+  } else if (lane.fingered && lane.index < piano_family::keyboard_players(scene).size()) {
+    const piano_family::KeyboardPlayer& pianist = piano_family::keyboard_players(scene)[lane.index];
     ImGui::Text("%s (%s hands)", lane.name.c_str(), pianist.hand_size.c_str());
     ImGui::TextUnformatted("Click a note on the timeline to pin a finger.");
     for (const piano_family::FingerPin& pin : pianist.pins) {
@@ -290,8 +290,7 @@ void draw_inspector(Session& session, UiState& ui) {
       const piano_family::FingerPin copy = pin;
       if (ImGui::SmallButton("unpin")) {
         ImGui::PopID();
-        apply(session, ui,
-              unpin_finger(session.document().json(), copy.time_s, copy.key, lane.performer));
+        apply(session, ui, unpin_finger(session.document().json(), player, copy.time_s, copy.key));
         break;
       }
       ImGui::PopID();
@@ -299,7 +298,7 @@ void draw_inspector(Session& session, UiState& ui) {
     ImGui::Separator();
     draw_hand_area(lane, ui);
     ImGui::Separator();
-    draw_variation(session, ui, {true, lane.performer}, pianist.variation, pianist.seed);
+    draw_variation(session, ui, player, pianist.variation, pianist.seed);
   }
   ImGui::End();
 }
@@ -458,6 +457,7 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
   // One lane per player.
   for (std::size_t l = 0; l < timeline.lanes.size(); ++l) {
     const TimelineLane& lane = timeline.lanes[l];
+    const PlayerRef player{lane.player, lane.name};
     ImGui::PushID(static_cast<int>(l));
     const bool selected_lane = ui.selected_lane == l;
     draw->AddText(ImVec2(origin.x, y + 2),
@@ -486,12 +486,12 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
       const ImVec2 a(std::max(axis.x0, axis.x(note.start_s)), ny - 3);
       const ImVec2 b(std::min(axis.x1, std::max(axis.x(note.end_s), a.x + 2)), ny + 2);
       ImU32 colour = note.playable ? srgb(200, 200, 210, 255) : srgb(200, 80, 80, 255);
-      if (lane.pianist)
+      if (lane.fingered)
         colour = note.right_hand ? srgb(120, 180, 255, 255) : srgb(255, 180, 100, 255);
-      if (note.foot >= 0) colour = srgb(130, 210, 130, 255);  // the organist's feet
+      if (note.foot >= 0) colour = srgb(130, 210, 130, 255);  // played by a foot
       if (note.pinned) colour = srgb(255, 230, 0, 255);
       draw->AddRectFilled(a, b, colour);
-      if (lane.pianist && b.x - a.x > 9 && note.finger > 0) {
+      if (lane.fingered && b.x - a.x > 9 && note.finger > 0) {
         draw->AddText(ImVec2(a.x + 1, ny - 14), srgb(255, 255, 255, 220),
                       std::to_string(note.finger).c_str());
       } else if (b.x - a.x > 9 && note.foot >= 0) {
@@ -529,10 +529,10 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
         }
       }
       const int picked = b >= 0 ? b : inside;
-      if (lane.pianist && hovered_note >= 0) {
+      if (lane.fingered && hovered_note >= 0) {
         ui.pin_note = static_cast<std::size_t>(hovered_note);
         ImGui::OpenPopup("pin_popup");
-      } else if (picked >= 0 && !lane.pianist) {
+      } else if (picked >= 0 && lane.breathes) {
         ui.selection = UiState::Selection::breath;
         ui.selected_index = static_cast<std::size_t>(picked);
         ui.drag_kind = kDragBreath;
@@ -552,31 +552,33 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
       }
     }
     if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) ui.context_s = snapped_t;
-    if (!lane.pianist && ImGui::BeginPopupContextItem("lane_popup")) {
+    if ((lane.breathes || lane.expressive) && ImGui::BeginPopupContextItem("lane_popup")) {
       const double bar =
           timeline.beats_s.size() > 4 ? 4 * (timeline.beats_s[1] - timeline.beats_s[0]) : 2.0;
-      const bool breathe = ImGui::MenuItem("Breathe here");
-      record(ui, "lane_popup/breathe");
-      if (breathe) {
-        apply(session, ui,
-              add_breath(session.document().json(), lane.performer,
-                         session.breath_boundary(lane.performer, ui.context_s)));
+      if (lane.breathes) {
+        const bool breathe = ImGui::MenuItem("Breathe here");
+        record(ui, "lane_popup/breathe");
+        if (breathe) {
+          apply(session, ui,
+                add_breath(session.document().json(), player,
+                           session.breath_boundary(player, ui.context_s)));
+        }
       }
-      if (ImGui::MenuItem("Strain from here (one bar)")) {
+      if (lane.expressive && ImGui::MenuItem("Strain from here (one bar)")) {
         apply(
             session, ui,
-            add_expression(session.document().json(), lane.performer,
+            add_expression(session.document().json(), player,
                            {scene::ExpressionKind::strain, ui.context_s, ui.context_s + bar, 1.0}));
       }
-      if (ImGui::MenuItem("Relaxed from here (one bar)")) {
+      if (lane.expressive && ImGui::MenuItem("Relaxed from here (one bar)")) {
         apply(session, ui,
               add_expression(
-                  session.document().json(), lane.performer,
+                  session.document().json(), player,
                   {scene::ExpressionKind::relaxed, ui.context_s, ui.context_s + bar, 1.0}));
       }
       ImGui::EndPopup();
     }
-    if (lane.pianist && ImGui::BeginPopup("pin_popup")) {
+    if (lane.fingered && ImGui::BeginPopup("pin_popup")) {
       if (ui.pin_note < lane.notes.size()) {
         const TimelineNote note = lane.notes[ui.pin_note];
         if (note.foot >= 0) {
@@ -589,14 +591,14 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
         for (int f = 1; f <= 5 && note.foot < 0; ++f) {
           if (f > 1) ImGui::SameLine();
           if (ImGui::Button(std::to_string(f).c_str())) {
-            apply(session, ui, pin_finger(session.document().json(), note.start_s, note.key, f,
-                                          lane.performer));
+            apply(session, ui,
+                  pin_finger(session.document().json(), player, note.start_s, note.key, f));
             ImGui::CloseCurrentPopup();
           }
         }
         if (note.pinned && ImGui::Button("Unpin")) {
-          apply(session, ui, unpin_finger(session.document().json(), note.start_s, note.key,
-                                          lane.performer));
+          apply(session, ui,
+                unpin_finger(session.document().json(), player, note.start_s, note.key));
           ImGui::CloseCurrentPopup();
         }
       }
@@ -627,12 +629,15 @@ void draw_timeline(Session& session, UiState& ui, UiRequests& out) {
         const scene::Expression& e = lane.expressions[ui.drag_index];
         const double start =
             snap_to_beat(timeline, e.start_s + (mouse_t - ui.drag_from_s), axis.length_s / 150.0);
-        apply(session, ui, move_expression(session.document().json(), lane.performer, e, start));
-      } else if (ui.drag_kind == kDragBreath && ui.selected_lane < timeline.lanes.size()) {
         apply(session, ui,
-              move_breath(session.document().json(), timeline.lanes[ui.selected_lane].performer,
-                          ui.drag_from_s, ui.drag_marked,
-                          session.breath_boundary(timeline.lanes[ui.selected_lane].performer, to)));
+              move_expression(session.document().json(), PlayerRef{lane.player, lane.name}, e,
+                              start));
+      } else if (ui.drag_kind == kDragBreath && ui.selected_lane < timeline.lanes.size()) {
+        const TimelineLane& lane = timeline.lanes[ui.selected_lane];
+        const PlayerRef player{lane.player, lane.name};
+        apply(session, ui,
+              move_breath(session.document().json(), player, ui.drag_from_s, ui.drag_marked,
+                          session.breath_boundary(player, to)));
       }
       ui.selection = UiState::Selection::none;
     }
@@ -649,7 +654,8 @@ void delete_selection(Session& session, UiState& ui) {
       const TimelineLane& lane = timeline.lanes[ui.selected_lane];
       if (ui.selected_index < lane.breaths.size()) {
         apply(session, ui,
-              delete_breath(json, lane.performer, lane.breaths[ui.selected_index].boundary_s,
+              delete_breath(json, PlayerRef{lane.player, lane.name},
+                            lane.breaths[ui.selected_index].boundary_s,
                             lane.breaths[ui.selected_index].marked));
       }
       break;
@@ -664,7 +670,8 @@ void delete_selection(Session& session, UiState& ui) {
       const TimelineLane& lane = timeline.lanes[ui.selected_lane];
       if (ui.selected_index < lane.expressions.size()) {
         apply(session, ui,
-              delete_expression(json, lane.performer, lane.expressions[ui.selected_index]));
+              delete_expression(json, PlayerRef{lane.player, lane.name},
+                                lane.expressions[ui.selected_index]));
       }
       break;
     }

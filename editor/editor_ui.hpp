@@ -2,8 +2,8 @@
 #pragma once
 // The editor's panels (Dear ImGui 1.86), drawn over the 3D view: the transport, the timeline
 // (bars and beats, each performer's notes, breaths, expressions, the cues and the camera cuts),
-// the performer inspector (variation sliders, seed re-roll) and the pianist's fingers and hand
-// area. Every change goes through Session::apply, so it is undoable and re-planned at once.
+// the performer inspector (variation sliders, seed re-roll) and a fingered player's fingers and
+// hand area. Every change goes through Session::apply, so it is undoable and re-planned at once.
 //
 // draw_editor() only reads input through ImGui and returns what the host must do with the
 // transport (seek, play, quit): it needs no window, so tests drive it headless with a bare ImGui
@@ -53,7 +53,7 @@ struct UiState {
   std::size_t drag_index = 0;
   double drag_from_s = 0.0;
   bool drag_marked = false;  // a breath there only because of its mark
-  std::size_t pin_note = 0;  // the pianist's note whose finger popup is open
+  std::size_t pin_note = 0;  // the note (of a fingered lane) whose finger popup is open
   double context_s = 0.0;    // where the open context menu was asked for (snapped)
   std::vector<PendingAction> pending;
 };

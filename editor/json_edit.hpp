@@ -26,7 +26,7 @@ struct JsonChange {
 };
 
 struct Edit {
-  std::string label;  // for the undo menu: "set sway_amount of Trumpet 1"
+  std::string label;  // for the undo menu: "set sway_amount of Lead"
   std::vector<JsonChange> changes;
 };
 

@@ -18,46 +18,28 @@ std::string seconds(double t) {
   return text;
 }
 
-// A scene written before two pianos could be has one "pianist" object; newer ones a "pianists"
-// array. Edits go where the pianist is written.
-std::string pianist_pointer(const Json& document, std::size_t index) {
-  return document.contains("pianist") ? std::string("/pianist")
-                                      : "/pianists/" + std::to_string(index);
-}
-
-std::string performer_pointer(std::size_t performer) {
-  return "/performers/" + std::to_string(performer);
-}
-
-std::string player_pointer(const Json& document, PlayerRef player) {
-  return player.pianist ? pianist_pointer(document, player.performer)
-                        : performer_pointer(player.performer);
-}
-
-Result<const Json*> pianist_json(const Json& document, std::size_t index) {
-  if (document.contains("pianist") && index == 0) return &document["pianist"];
-  if (document.contains("pianists") && document["pianists"].is_array() &&
-      index < document["pianists"].size()) {
-    return &document["pianists"][index];
+// The player's object in the document: `player.pointer` names an object.
+Result<const Json*> player_json(const Json& document, const PlayerRef& player) {
+  if (player.pointer.empty() || player.pointer.front() != '/') {
+    return Error{"no player at \"" + player.pointer + "\""};
   }
-  return Error{index == 0 ? std::string("the scene has no pianist")
-                          : "the scene has no pianist " + std::to_string(index + 1)};
+  try {
+    const Json::json_pointer pointer(player.pointer);
+    if (document.contains(pointer) && document.at(pointer).is_object()) {
+      return &document.at(pointer);
+    }
+  } catch (const Json::exception&) {
+    // not a JSON pointer: no such player, as below
+  }
+  return Error{"the scene has no player at " + player.pointer};
 }
 
-Result<const Json*> player_json(const Json& document, PlayerRef player) {
-  if (player.pianist) return pianist_json(document, player.performer);
-  if (!document.contains("performers") || player.performer >= document["performers"].size()) {
-    return Error{"no performer " + std::to_string(player.performer)};
-  }
-  return &document["performers"][player.performer];
-}
-
-std::string player_name(const Json& player, PlayerRef ref) {
-  if (ref.pianist && !(player.contains("name") && player["name"].is_string())) {
-    return ref.performer == 0 ? "the pianist" : "pianist " + std::to_string(ref.performer + 1);
-  }
-  return player.contains("name") && player["name"].is_string() ? player["name"].get<std::string>()
-                                                               : "performer";
+// For labels: the name the stage shows, else the name the file gives, else where it is.
+std::string player_name(const Json& object, const PlayerRef& ref) {
+  if (!ref.name.empty()) return ref.name;
+  if (object.contains("name") && object["name"].is_string())
+    return object["name"].get<std::string>();
+  return ref.pointer;
 }
 
 std::optional<Json> member(const Json& object, const char* key) {
@@ -117,16 +99,16 @@ std::optional<Json> breaths_object(const std::vector<double>& add,
 }
 
 struct BreathLists {
-  const Json* performer = nullptr;
+  const Json* player = nullptr;
   std::vector<double> add;
   std::vector<double> remove;
 };
 
-Result<BreathLists> breath_lists(const Json& document, std::size_t performer) {
-  auto player = player_json(document, {false, performer});
+Result<BreathLists> breath_lists(const Json& document, const PlayerRef& ref) {
+  auto player = player_json(document, ref);
   if (!player) return player.error();
   BreathLists lists;
-  lists.performer = *player;
+  lists.player = *player;
   if ((*player)->contains("breaths")) {
     lists.add = times_of((**player)["breaths"], "add");
     lists.remove = times_of((**player)["breaths"], "remove");
@@ -134,11 +116,11 @@ Result<BreathLists> breath_lists(const Json& document, std::size_t performer) {
   return lists;
 }
 
-Edit breath_edit(const BreathLists& lists, std::size_t performer, std::string label) {
+Edit breath_edit(const BreathLists& lists, const PlayerRef& player, std::string label) {
   Edit edit;
   edit.label = std::move(label);
-  edit.changes.push_back(replace(*lists.performer, performer_pointer(performer), "breaths",
-                                 breaths_object(lists.add, lists.remove)));
+  edit.changes.push_back(
+      replace(*lists.player, player.pointer, "breaths", breaths_object(lists.add, lists.remove)));
   return edit;
 }
 
@@ -202,8 +184,8 @@ Edit shots_edit(const Json& document, Json shots, std::string label) {
   return edit;
 }
 
-Result<Json> pin_list(const Json& document, std::size_t pianist) {
-  auto object = pianist_json(document, pianist);
+Result<Json> pin_list(const Json& document, const PlayerRef& player) {
+  auto object = player_json(document, player);
   if (!object) return object.error();
   return (*object)->contains("pins") ? (**object)["pins"] : Json::array();
 }
@@ -213,26 +195,25 @@ bool same_note(const Json& pin, double time_s, int key) {
          std::abs(pin.value("time_s", -1e9) - time_s) < 1e-3;
 }
 
-// Precondition: pin_list(document, pianist) succeeded.
-Edit pins_edit(const Json& document, std::size_t pianist, const Json& pins, std::string label) {
+// Precondition: pin_list(document, player) succeeded.
+Edit pins_edit(const Json& document, const PlayerRef& player, const Json& pins, std::string label) {
   Edit edit;
   edit.label = std::move(label);
-  edit.changes.push_back(replace(**pianist_json(document, pianist),
-                                 pianist_pointer(document, pianist), "pins",
+  edit.changes.push_back(replace(**player_json(document, player), player.pointer, "pins",
                                  pins.empty() ? std::nullopt : std::optional<Json>(pins)));
   return edit;
 }
 
 }  // namespace
 
-Result<Edit> set_variation(const Json& document, PlayerRef player, std::string_view field,
+Result<Edit> set_variation(const Json& document, const PlayerRef& player, std::string_view field,
                            std::optional<double> value) {
   const bool known = std::any_of(scene::kVariationFields.begin(), scene::kVariationFields.end(),
                                  [&](const scene::VariationField& f) { return f.key == field; });
   if (!known) return Error{"unknown variation parameter \"" + std::string(field) + "\""};
   auto object = player_json(document, player);
   if (!object) return object.error();
-  const std::string pointer = player_pointer(document, player);
+  const std::string& pointer = player.pointer;
   Json variation = (*object)->contains("variation") ? (**object)["variation"] : Json::object();
   if (value) {
     variation[std::string(field)] = *value;
@@ -247,12 +228,12 @@ Result<Edit> set_variation(const Json& document, PlayerRef player, std::string_v
   return edit;
 }
 
-Result<Edit> set_seed(const Json& document, PlayerRef player, std::uint64_t seed) {
+Result<Edit> set_seed(const Json& document, const PlayerRef& player, std::uint64_t seed) {
   auto object = player_json(document, player);
   if (!object) return object.error();
   Edit edit;
   edit.label = "new seed for " + player_name(**object, player);
-  edit.changes.push_back(replace(**object, player_pointer(document, player), "seed", Json(seed)));
+  edit.changes.push_back(replace(**object, player.pointer, "seed", Json(seed)));
   return edit;
 }
 
@@ -263,34 +244,34 @@ std::uint64_t reroll_seed(std::uint64_t current) {
   return z ^ (z >> 31);
 }
 
-Result<Edit> add_breath(const Json& document, std::size_t performer, double t_s) {
-  auto lists = breath_lists(document, performer);
+Result<Edit> add_breath(const Json& document, const PlayerRef& player, double t_s) {
+  auto lists = breath_lists(document, player);
   if (!lists) return lists.error();
   add_breath_to(*lists, t_s);
-  return breath_edit(*lists, performer,
-                     "add a breath for " + player_name(*lists->performer, {false, performer}) +
-                         " at " + seconds(t_s));
+  return breath_edit(
+      *lists, player,
+      "add a breath for " + player_name(*lists->player, player) + " at " + seconds(t_s));
 }
 
-Result<Edit> delete_breath(const Json& document, std::size_t performer, double boundary_s,
+Result<Edit> delete_breath(const Json& document, const PlayerRef& player, double boundary_s,
                            bool marked_only) {
-  auto lists = breath_lists(document, performer);
+  auto lists = breath_lists(document, player);
   if (!lists) return lists.error();
   delete_breath_from(*lists, boundary_s, marked_only);
-  return breath_edit(*lists, performer,
-                     "delete the breath of " + player_name(*lists->performer, {false, performer}) +
-                         " at " + seconds(boundary_s));
+  return breath_edit(
+      *lists, player,
+      "delete the breath of " + player_name(*lists->player, player) + " at " + seconds(boundary_s));
 }
 
-Result<Edit> move_breath(const Json& document, std::size_t performer, double from_boundary_s,
+Result<Edit> move_breath(const Json& document, const PlayerRef& player, double from_boundary_s,
                          bool from_marked_only, double to_s) {
-  auto lists = breath_lists(document, performer);
+  auto lists = breath_lists(document, player);
   if (!lists) return lists.error();
   delete_breath_from(*lists, from_boundary_s, from_marked_only);
   add_breath_to(*lists, to_s);
-  return breath_edit(*lists, performer,
-                     "move the breath of " + player_name(*lists->performer, {false, performer}) +
-                         " to " + seconds(to_s));
+  return breath_edit(
+      *lists, player,
+      "move the breath of " + player_name(*lists->player, player) + " to " + seconds(to_s));
 }
 
 Result<Edit> add_cue(const Json& document, std::span<const double> current, double t_s) {
@@ -315,23 +296,22 @@ Result<Edit> move_cue(const Json& document, std::span<const double> current, std
   return cue_edit(document, std::move(cues), "move a cue to " + seconds(t_s));
 }
 
-Result<Edit> add_expression(const Json& document, std::size_t performer,
+Result<Edit> add_expression(const Json& document, const PlayerRef& player,
                             const scene::Expression& expression) {
-  auto object = player_json(document, {false, performer});
+  auto object = player_json(document, player);
   if (!object) return object.error();
   Json list = (*object)->contains("expressions") ? (**object)["expressions"] : Json::array();
   list.push_back(expression_json(expression));
   Edit edit;
   edit.label = "add \"" + std::string(scene::expression_name(expression.kind)) + "\" for " +
-               player_name(**object, {false, performer});
-  edit.changes.push_back(
-      replace(**object, performer_pointer(performer), "expressions", std::move(list)));
+               player_name(**object, player);
+  edit.changes.push_back(replace(**object, player.pointer, "expressions", std::move(list)));
   return edit;
 }
 
-Result<Edit> delete_expression(const Json& document, std::size_t performer,
+Result<Edit> delete_expression(const Json& document, const PlayerRef& player,
                                const scene::Expression& expression) {
-  auto object = player_json(document, {false, performer});
+  auto object = player_json(document, player);
   if (!object) return object.error();
   Json list = (*object)->contains("expressions") ? (**object)["expressions"] : Json::array();
   const auto it = std::find_if(list.begin(), list.end(),
@@ -340,15 +320,15 @@ Result<Edit> delete_expression(const Json& document, std::size_t performer,
   list.erase(it);
   Edit edit;
   edit.label = "delete \"" + std::string(scene::expression_name(expression.kind)) + "\" of " +
-               player_name(**object, {false, performer});
-  edit.changes.push_back(replace(**object, performer_pointer(performer), "expressions",
+               player_name(**object, player);
+  edit.changes.push_back(replace(**object, player.pointer, "expressions",
                                  list.empty() ? std::nullopt : std::optional<Json>(list)));
   return edit;
 }
 
-Result<Edit> move_expression(const Json& document, std::size_t performer,
+Result<Edit> move_expression(const Json& document, const PlayerRef& player,
                              const scene::Expression& expression, double new_start_s) {
-  auto object = player_json(document, {false, performer});
+  auto object = player_json(document, player);
   if (!object) return object.error();
   Json list = (*object)->contains("expressions") ? (**object)["expressions"] : Json::array();
   const auto it = std::find_if(list.begin(), list.end(),
@@ -360,9 +340,8 @@ Result<Edit> move_expression(const Json& document, std::size_t performer,
   *it = expression_json(moved);
   Edit edit;
   edit.label = "move \"" + std::string(scene::expression_name(expression.kind)) + "\" of " +
-               player_name(**object, {false, performer}) + " to " + seconds(new_start_s);
-  edit.changes.push_back(
-      replace(**object, performer_pointer(performer), "expressions", std::move(list)));
+               player_name(**object, player) + " to " + seconds(new_start_s);
+  edit.changes.push_back(replace(**object, player.pointer, "expressions", std::move(list)));
   return edit;
 }
 
@@ -396,9 +375,9 @@ Result<Edit> delete_shot(const Json& document, std::size_t index) {
   return shots_edit(document, std::move(*shots), "delete the cut at " + seconds(t));
 }
 
-Result<Edit> pin_finger(const Json& document, double time_s, int key, int finger,
-                        std::size_t pianist) {
-  auto pins = pin_list(document, pianist);
+Result<Edit> pin_finger(const Json& document, const PlayerRef& player, double time_s, int key,
+                        int finger) {
+  auto pins = pin_list(document, player);
   if (!pins) return pins.error();
   Json pin = Json::object();
   pin["time_s"] = time_s;
@@ -411,20 +390,21 @@ Result<Edit> pin_finger(const Json& document, double time_s, int key, int finger
   } else {
     pins->push_back(pin);
   }
-  return pins_edit(document, pianist, *pins,
+  return pins_edit(document, player, *pins,
                    "pin finger " + std::to_string(finger) + " on key " + std::to_string(key) +
                        " at " + seconds(time_s));
 }
 
-Result<Edit> unpin_finger(const Json& document, double time_s, int key, std::size_t pianist) {
-  auto pins = pin_list(document, pianist);
+Result<Edit> unpin_finger(const Json& document, const PlayerRef& player, double time_s, int key) {
+  auto pins = pin_list(document, player);
   if (!pins) return pins.error();
   const auto it = std::find_if(pins->begin(), pins->end(),
                                [&](const Json& p) { return same_note(p, time_s, key); });
   if (it == pins->end())
     return Error{"no pin on key " + std::to_string(key) + " at " + seconds(time_s)};
   pins->erase(it);
-  return pins_edit(document, pianist, *pins, "unpin key " + std::to_string(key) + " at " + seconds(time_s));
+  return pins_edit(document, player, *pins,
+                   "unpin key " + std::to_string(key) + " at " + seconds(time_s));
 }
 
 }  // namespace tutti::editor

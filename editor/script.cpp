@@ -3,16 +3,17 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <vector>
 
-#include <tutti/brass/brass_players.hpp>
+#include <tutti/components/performer.hpp>
 #include <tutti/core/did_you_mean.hpp>
-#include <tutti/piano/keyboard_players.hpp>
 
 namespace tutti::editor {
 namespace {
@@ -26,14 +27,14 @@ struct Action {
 const std::map<std::string, Action>& actions() {
   static const std::map<std::string, Action> table{
       {"set-variation", {3, 3, "set-variation PERFORMER FIELD VALUE|seed"}},
-      {"reroll-seed", {1, 1, "reroll-seed PERFORMER|pianist"}},
+      {"reroll-seed", {1, 1, "reroll-seed PERFORMER"}},
       {"add-breath", {2, 2, "add-breath PERFORMER TIME"}},
       {"delete-breath", {2, 2, "delete-breath PERFORMER TIME"}},
       {"add-cue", {1, 1, "add-cue TIME"}},
       {"add-expression", {4, 5, "add-expression PERFORMER strain|relaxed START END [AMOUNT]"}},
       {"cut", {2, 2, "cut CAMERA TIME"}},
-      {"pin", {3, 4, "pin TIME KEY FINGER [PIANIST]"}},
-      {"select", {1, 1, "select PERFORMER|pianist"}},
+      {"pin", {3, 4, "pin TIME KEY FINGER [PERFORMER]"}},
+      {"select", {1, 1, "select PERFORMER"}},
       {"undo", {0, 0, "undo"}},
       {"redo", {0, 0, "redo"}},
       {"seek", {1, 1, "seek TIME"}},
@@ -91,15 +92,38 @@ double number(const ScriptCommand& command, std::size_t i) {
   return value;
 }
 
-Result<std::size_t> performer(const Script& script, const ScriptCommand& command,
-                              const Session& session, const std::string& name) {
-  const auto& performers = brass_family::brass_players(session.document().scene());
+// The player of that name (as the stage names them: every family's, in the stage's order).
+Result<PlayerRef> performer(const Script& script, const ScriptCommand& command,
+                            const Session& session, const std::string& name) {
+  const ecs::World& world = session.stage().world();
   std::string names;
-  for (std::size_t i = 0; i < performers.size(); ++i) {
-    if (performers[i].name == name) return i;
-    names += (i ? ", " : "") + performers[i].name;
+  for (const ecs::Entity entity : session.stage().performers()) {
+    const auto* about = world.try_get<components::Performer>(entity);
+    const auto* seat = world.try_get<stage::Seat>(entity);
+    if (about == nullptr || seat == nullptr) continue;
+    if (about->name == name) return PlayerRef{seat->player, about->name};
+    names += (names.empty() ? "" : ", ") + about->name;
   }
   return at(script, command, "no performer \"" + name + "\" (performers: " + names + ")");
+}
+
+// The timeline's lane of a player.
+const TimelineLane* lane_of(const Session& session, const PlayerRef& player) {
+  for (const TimelineLane& lane : session.timeline().lanes) {
+    if (lane.player == player.pointer) return &lane;
+  }
+  return nullptr;
+}
+
+// The current seed of a player (as planned: the file's, or the one derived from the scene's).
+std::uint64_t seed_of(const Session& session, const PlayerRef& player) {
+  const ecs::World& world = session.stage().world();
+  for (const ecs::Entity entity : session.stage().performers()) {
+    const auto* seat = world.try_get<stage::Seat>(entity);
+    const auto* about = world.try_get<components::Performer>(entity);
+    if (seat != nullptr && about != nullptr && seat->player == player.pointer) return about->seed;
+  }
+  return 0;
 }
 
 // Which words must be numbers, per action (indices into words).
@@ -175,17 +199,7 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     return ScriptStep::next;
   };
   auto who = [&](std::size_t i) -> Result<PlayerRef> {
-    const auto& pianists = piano_family::keyboard_players(session.document().scene());
-    for (std::size_t p = 0; p < pianists.size(); ++p) {
-      if (pianists[p].name == command.words[i]) return PlayerRef{true, p};
-    }
-    if (command.words[i] == "pianist") {  // the first, whatever their name
-      if (pianists.empty()) return at(script, command, "the scene has no pianist");
-      return PlayerRef{true, 0};
-    }
-    auto index = performer(script, command, session, command.words[i]);
-    if (!index) return index.error();
-    return PlayerRef{false, *index};
+    return performer(script, command, session, command.words[i]);
   };
   if (action == "set-variation") {
     auto player = who(1);
@@ -197,25 +211,31 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
   if (action == "reroll-seed") {
     auto player = who(1);
     if (!player) return player.error();
-    const scene::Scene& scene = session.document().scene();
-    const std::uint64_t seed =
-        player->pianist ? piano_family::keyboard_players(scene).at(player->performer).seed
-                        : brass_family::brass_players(scene).at(player->performer).seed;
-    return edit_result(session.apply(set_seed(json, *player, reroll_seed(seed))));
+    return edit_result(
+        session.apply(set_seed(json, *player, reroll_seed(seed_of(session, *player)))));
   }
   if (action == "add-breath" || action == "delete-breath" || action == "add-expression") {
-    auto index = performer(script, command, session, command.words[1]);
-    if (!index) return index.error();
+    auto player = who(1);
+    if (!player) return player.error();
+    const TimelineLane* lane = lane_of(session, *player);
+    if (action != "add-expression" && (lane == nullptr || !lane->breathes)) {
+      return at(script, command,
+                command.words[1] + " takes no breath marks (their family plans no breaths)");
+    }
+    if (action == "add-expression" && (lane == nullptr || !lane->expressive)) {
+      return at(script, command,
+                command.words[1] + " takes no expressions (their family has none)");
+    }
     if (action == "add-breath") {
       return edit_result(session.apply(
-          add_breath(json, *index, session.breath_boundary(*index, number(command, 2)))));
+          add_breath(json, *player, session.breath_boundary(*player, number(command, 2)))));
     }
     if (action == "delete-breath") {
       // The breath at that time — added, from a mark or from the rules — not the next boundary.
-      auto breath = session.breath_near(*index, number(command, 2));
+      auto breath = session.breath_near(*player, number(command, 2));
       if (!breath) return at(script, command, breath.error().message);
       return edit_result(
-          session.apply(delete_breath(json, *index, breath->boundary_s, breath->marked)));
+          session.apply(delete_breath(json, *player, breath->boundary_s, breath->marked)));
     }
     scene::Expression e;
     if (command.words[2] == "strain") {
@@ -228,7 +248,7 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     e.start_s = number(command, 3);
     e.end_s = number(command, 4);
     if (command.words.size() > 5) e.amount = number(command, 5);
-    return edit_result(session.apply(add_expression(json, *index, e)));
+    return edit_result(session.apply(add_expression(json, *player, e)));
   }
   if (action == "add-cue") {
     return edit_result(session.apply(add_cue(json, session.timeline().cues_s, number(command, 1))));
@@ -237,16 +257,28 @@ Result<ScriptStep> run_script_command(const Script& script, const ScriptCommand&
     return edit_result(session.apply(add_shot(json, command.words[1], number(command, 2))));
   }
   if (action == "pin") {
-    std::size_t pianist = 0;
+    // The player named, or the first whose notes have fingers.
+    std::optional<PlayerRef> player;
     if (command.words.size() > 4) {
-      auto player = who(4);
-      if (!player) return player.error();
-      if (!player->pianist) return at(script, command, command.words[4] + " is not a pianist");
-      pianist = player->performer;
+      auto named = who(4);
+      if (!named) return named.error();
+      const TimelineLane* lane = lane_of(session, *named);
+      if (lane == nullptr || !lane->fingered) {
+        return at(script, command, command.words[4] + " plays no notes by fingers");
+      }
+      player = *named;
+    } else {
+      for (const TimelineLane& lane : session.timeline().lanes) {
+        if (lane.fingered) {
+          player = PlayerRef{lane.player, {}};
+          break;
+        }
+      }
+      if (!player) return at(script, command, "no player in the scene plays notes by fingers");
     }
-    return edit_result(
-        session.apply(pin_finger(json, number(command, 1), static_cast<int>(number(command, 2)),
-                                 static_cast<int>(number(command, 3)), pianist)));
+    return edit_result(session.apply(pin_finger(json, *player, number(command, 1),
+                                                static_cast<int>(number(command, 2)),
+                                                static_cast<int>(number(command, 3)))));
   }
   if (action == "select") {
     auto player = who(1);

@@ -67,12 +67,10 @@ Status Session::redo() {
   return Status::success();
 }
 
-double Session::breath_boundary(std::size_t performer, double t) const {
+double Session::breath_boundary(const PlayerRef& player, double t) const {
   // The first playable note of theirs starting at or after t (the notes are in time order).
-  const ecs::Entity player = stage_->find_performer("brass", performer);
-  if (player.is_null()) return t;
   for (const TimelineLane& lane : timeline_.lanes) {
-    if (lane.pianist || lane.performer != performer) continue;
+    if (!lane.breathes || lane.player != player.pointer) continue;
     for (const TimelineNote& note : lane.notes) {
       // Times are written to the millisecond: a note up to half of one before t is t's.
       if (note.playable && note.start_s >= t - 0.0005) return note.start_s;
@@ -81,9 +79,9 @@ double Session::breath_boundary(std::size_t performer, double t) const {
   return t;
 }
 
-Result<TimelineBreath> Session::breath_near(std::size_t performer, double t) const {
+Result<TimelineBreath> Session::breath_near(const PlayerRef& player, double t) const {
   for (const TimelineLane& lane : timeline_.lanes) {
-    if (lane.pianist || lane.performer != performer) continue;
+    if (!lane.breathes || lane.player != player.pointer) continue;
     const TimelineBreath* best = nullptr;
     for (const TimelineBreath& breath : lane.breaths) {
       const bool near = std::abs(breath.boundary_s - t) <= 0.1 ||
@@ -113,7 +111,8 @@ Result<TimelineBreath> Session::breath_near(std::size_t performer, double t) con
     return Error{"no breath of \"" + lane.name + "\" at " + at + " s" +
                  (list.empty() ? std::string(" (it has none)") : " (nearest at " + list + " s)")};
   }
-  return Error{"performer " + std::to_string(performer) + " has no breaths (not a brass player)"};
+  return Error{"\"" + (player.name.empty() ? player.pointer : player.name) +
+               "\" has no breaths (its family plans none)"};
 }
 
 Status Session::recover_autosave() {

@@ -42,14 +42,14 @@ class Session {
   // for model_list() must be made again). False while the cast is unchanged.
   bool models_changed() const { return models_changed_; }
   double last_replan_ms() const { return last_replan_ms_; }
-  // The breath boundary a time names for a brass performer: the onset of the first playable note
-  // at or after t (t itself after the last note). Marks are stored there, so a mark and the
+  // The breath boundary a time names for a player who breathes: the onset of the first playable
+  // note at or after t (t itself after the last note). Marks are stored there, so a mark and the
   // breath it makes share one time.
-  double breath_boundary(std::size_t performer, double t) const;
-  // The breath of brass performer `performer` at `t`: the one whose inhaling (from its
-  // preparation to its note) holds t, or whose note starts within 0.1 s of it, the nearest; an
-  // error naming the breaths there are when none is.
-  Result<TimelineBreath> breath_near(std::size_t performer, double t) const;
+  double breath_boundary(const PlayerRef& player, double t) const;
+  // The player's breath at `t`: the one whose inhaling (from its preparation to its note) holds
+  // t, or whose note starts within 0.1 s of it, the nearest; an error naming the breaths there
+  // are when none is.
+  Result<TimelineBreath> breath_near(const PlayerRef& player, double t) const;
 
  private:
   Session(Document document, stage::StageOptions options)

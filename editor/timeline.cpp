@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <tutti/brass/brass_players.hpp>
+#include <tutti/brass_motion/brass_pose_system.hpp>
 #include <tutti/components/breath_schedule.hpp>
 #include <tutti/components/note.hpp>
 #include <tutti/components/performer.hpp>
@@ -32,18 +33,22 @@ void add_grid(const music::Score& score, double end_s, Timeline& out) {
   }
 }
 
-// A performer's lane: their notes (as written; the pianist's with the planned or pinned finger
-// and hand), their planned breaths, their expressions.
+// A performer's lane: their notes (as written; a keyboard player's with the planned or pinned
+// finger and hand), their planned breaths, their expressions.
 TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
   const ecs::World& world = stage.world();
   const auto& seat = world.get<stage::Seat>(performer);
   TimelineLane lane;
-  lane.pianist = seat.family == "piano";
-  lane.performer = seat.index;
+  lane.family = seat.family;
+  lane.index = seat.index;
+  lane.player = seat.player;
+  const bool keyboard = world.has<piano_family::PianistPlan>(performer);
+  lane.fingered = keyboard;
+  lane.breathes = world.has<components::BreathSchedule>(performer);
   const auto* about = world.try_get<components::Performer>(performer);
   lane.name = about != nullptr ? about->name : std::string();
   // The first pianist's lane reads "Pianist", as before a scene could have two.
-  if (lane.pianist && lane.name == "pianist") lane.name = "Pianist";
+  if (keyboard && lane.name == "pianist") lane.name = "Pianist";
   for (std::size_t s = 0; s < stage.scores().size(); ++s) {
     for (std::size_t i = 0; i < stage.scores()[s].notes.size(); ++i) {
       const auto* note = world.try_get<components::Note>(stage.note_entity(s, i));
@@ -53,7 +58,7 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
       n.end_s = note->written_offset_s;
       n.key = note->pitch;
       n.playable = note->playable;
-      if (lane.pianist) {
+      if (lane.fingered) {
         n.finger = note->finger;
         n.right_hand = note->hand != components::HandSide::left;
       }
@@ -77,13 +82,15 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
   const scene::Scene& scene = stage.scene();
   const auto& brass_players = brass_family::brass_players(scene);
   const auto& keyboard_players = piano_family::keyboard_players(scene);
-  if (!lane.pianist && lane.performer < brass_players.size()) {
-    lane.expressions = brass_players[lane.performer].expressions;
+  const bool brass_player = world.has<brass::BrassPlayerMotionHandle>(performer);
+  if (brass_player && seat.index < brass_players.size()) {
+    lane.expressive = true;
+    lane.expressions = brass_players[seat.index].expressions;
   }
   // An organist's pedal notes: the foot that plays each (pins are for fingers only).
   if (const auto* plan = world.try_get<piano_family::PianistPlan>(performer);
-      plan != nullptr && plan->feet && lane.performer < keyboard_players.size()) {
-    const std::size_t music = keyboard_players[lane.performer].music_file;
+      plan != nullptr && plan->feet && seat.index < keyboard_players.size()) {
+    const std::size_t music = keyboard_players[seat.index].music_file;
     for (const piano_family::PedalPress& press : plan->feet->presses) {
       const auto* note = world.try_get<components::Note>(stage.note_entity(music, press.note));
       if (note == nullptr) continue;
@@ -92,8 +99,8 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
       }
     }
   }
-  if (lane.pianist && lane.performer < keyboard_players.size()) {
-    for (const piano_family::FingerPin& pin : keyboard_players[lane.performer].pins) {
+  if (keyboard && seat.index < keyboard_players.size()) {
+    for (const piano_family::FingerPin& pin : keyboard_players[seat.index].pins) {
       for (TimelineNote& n : lane.notes) {
         if (n.key == pin.key && std::abs(n.start_s - pin.time_s) < 1e-3) n.pinned = true;
       }
@@ -135,7 +142,7 @@ Timeline build_timeline(const stage::Stage& stage) {
   const ecs::World& world = stage.world();
   for (ecs::Entity performer : stage.performers()) {
     out.lanes.push_back(performer_lane(stage, performer));
-    if (out.lanes.back().pianist) add_hand_paths(stage, performer, out.lanes.back());
+    if (out.lanes.back().fingered) add_hand_paths(stage, performer, out.lanes.back());
     if (const auto* ensemble = world.try_get<ensemble_variation::EnsembleMotionHandle>(performer);
         ensemble != nullptr && ensemble->plan && out.cues_s.empty()) {
       out.cues_s = ensemble->plan->cue_entrances_s;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // What the editor's timeline shows, read from a planned stage: bar lines and beats from the tempo
-// map and time signatures, each performer's notes and planned breaths (marked or by the rules),
-// their expressions, the lead's cues, the camera cuts, and for the pianist each note's finger
-// (pinned or planned) with the hands' allowed areas and paths. Rebuilt after every re-plan.
+// map and time signatures, each player's notes and planned breaths (marked or by the rules),
+// their expressions, the lead's cues, the camera cuts, and for a player whose notes have fingers
+// each note's finger (pinned or planned) with the hands' allowed areas and paths. Rebuilt after
+// every re-plan.
 
 #include <array>
 #include <cstddef>
@@ -19,11 +20,11 @@ struct TimelineNote {
   double start_s = 0.0;
   double end_s = 0.0;
   int key = 60;
-  int finger = 0;  // the pianist's: 1..5 planned (0 = none); brass: 0
+  int finger = 0;  // 1..5 as planned (0 = none: the player's notes have no fingers)
   bool pinned = false;
   bool right_hand = true;
   bool playable = true;
-  // An organist's pedal note: the foot that plays it (0 right, 1 left); -1 = the hands'.
+  // A note played by a foot (0 right, 1 left: an organ's pedals); -1 = the hands'.
   int foot = -1;
 };
 
@@ -43,14 +44,21 @@ struct HandCorridorView {
 
 struct TimelineLane {
   std::string name;
-  bool pianist = false;
-  std::size_t performer = 0;  // into brass_players(scene) (brass lanes) or keyboard_players
+  std::string family;     // the family that plays it (stage::Seat::family)
+  std::size_t index = 0;  // which of the family's players (stage::Seat::index)
+  std::string player;     // where the scene file writes the player: a JSON pointer (edits go there)
+  // Its notes carry the hand and finger that play them, and may be pinned to a finger.
+  bool fingered = false;
+  // It breathes by the rules (a BreathSchedule): breath marks apply.
+  bool breathes = false;
+  // Its family takes expression spans (the player's "expressions").
+  bool expressive = false;
   std::vector<TimelineNote> notes;
   std::vector<TimelineBreath> breaths;
   std::vector<scene::Expression> expressions;
   int lowest_key = 127;
   int highest_key = 0;
-  std::array<std::vector<HandCorridorView>, 2> corridors;  // a pianist's: right, left
+  std::array<std::vector<HandCorridorView>, 2> corridors;  // a fingered player's: right, left
   // The planned hand path through them, sampled every kHandPathStep_s: (time, keyboard x mm).
   std::array<std::vector<std::array<double, 2>>, 2> hand_path;
 };
@@ -60,7 +68,7 @@ struct Timeline {
   double end_s = 0.0;
   std::vector<double> bars_s;       // bar lines
   std::vector<double> beats_s;      // every beat (bar lines included)
-  std::vector<TimelineLane> lanes;  // the stage's performers in order (brass, then pianists)
+  std::vector<TimelineLane> lanes;  // the stage's performers in order (family by family)
   std::vector<double> cues_s;       // the lead's cues as planned (the entrance times)
   bool cues_automatic = true;       // the scene lists none
   struct Shot {

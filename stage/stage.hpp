@@ -67,12 +67,14 @@ struct PlacedModel {
 };
 
 // Component on every performer entity: the family that plays it, which of the family's
-// performers it is (its index in the family's scene section) and the id of the instrument it
-// plays ("horn_double", "organ"; set by the family).
+// performers it is (its index in the family's scene section), the id of the instrument it
+// plays and where the scene file writes the player (a JSON pointer, "/<key>/2"; the editor's
+// edits go there). The family sets the last two.
 struct Seat {
   std::string family;
   std::size_t index = 0;
   std::string instrument;
+  std::string player;
 };
 
 // A caller's own state for computing frames from a shared stage (ozz-animation's sampling

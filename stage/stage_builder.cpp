@@ -74,7 +74,7 @@ ecs::Entity StageBuilder::add_performer(std::string_view family, std::size_t ind
                                         components::Performer performer) {
   const ecs::Entity entity = stage_.world_.create();
   stage_.world_.add<components::Performer>(entity, std::move(performer));
-  stage_.world_.add<Seat>(entity, Seat{std::string(family), index, {}});
+  stage_.world_.add<Seat>(entity, Seat{std::string(family), index, {}, {}});
   stage_.performers_.push_back(entity);
   return entity;
 }

@@ -243,6 +243,8 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
     const ecs::Entity player = builder.add_performer(
         name(), seat, components::Performer{performer.name, performer.seed});
     world.get<stage::Seat>(player).instrument = played.id;
+    world.get<stage::Seat>(player).player =
+        "/" + std::string(kBrassPlayersKey) + "/" + std::to_string(seat);
     claim_notes(builder, performer.music_file, plan, player);
     world.add<components::Transform>(
         player, stage::stage_transform(performer.position_m, performer.facing_deg));

@@ -274,6 +274,7 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   const ecs::Entity performer =
       builder.add_performer(name(), index, components::Performer{pianist.name, pianist.seed});
   world.get<stage::Seat>(performer).instrument = pianist.instrument;
+  world.get<stage::Seat>(performer).player = pianist.pointer;
   claim_notes(builder, pianist.music_file, plan, performer, pianist.sound_from_keys,
               static_cast<int>(action->velocity.fixed));
   world.add<components::Transform>(

@@ -45,8 +45,8 @@ void BM_QuartetVariationEdit(benchmark::State& state) {
   auto s = open("quartet.json", state);
   if (!s) return;
   for (auto _ : state) {
-    if (!s->apply(
-            tutti::editor::set_variation(s->document().json(), {false, 1}, "sway_amount", 0.9)) ||
+    if (!s->apply(tutti::editor::set_variation(s->document().json(), {"/performers/1", ""},
+                                               "sway_amount", 0.9)) ||
         !s->undo()) {
       state.SkipWithError("edit refused");
       break;
@@ -58,9 +58,11 @@ BENCHMARK(BM_QuartetVariationEdit)->Unit(benchmark::kMillisecond);
 void BM_QuartetBreathMark(benchmark::State& state) {
   auto s = open("quartet.json", state);
   if (!s) return;
-  const double boundary = s->breath_boundary(2, 6.5);
+  const tutti::editor::PlayerRef trombone_1{"/performers/2", ""};
+  const double boundary = s->breath_boundary(trombone_1, 6.5);
   for (auto _ : state) {
-    if (!s->apply(tutti::editor::add_breath(s->document().json(), 2, boundary)) || !s->undo()) {
+    if (!s->apply(tutti::editor::add_breath(s->document().json(), trombone_1, boundary)) ||
+        !s->undo()) {
       state.SkipWithError("edit refused");
       break;
     }
@@ -71,11 +73,13 @@ BENCHMARK(BM_QuartetBreathMark)->Unit(benchmark::kMillisecond);
 void BM_PianoFingerPin(benchmark::State& state) {
   auto s = open("piano.json", state);
   if (!s) return;
-  const tutti::editor::TimelineNote note = s->timeline().lanes.back().notes[12];
+  const tutti::editor::TimelineLane& lane = s->timeline().lanes.back();
+  const tutti::editor::PlayerRef pianist{lane.player, lane.name};
+  const tutti::editor::TimelineNote note = lane.notes[12];
   const int finger = note.finger == 5 ? 4 : 5;
   for (auto _ : state) {
-    if (!s->apply(
-            tutti::editor::pin_finger(s->document().json(), note.start_s, note.key, finger)) ||
+    if (!s->apply(tutti::editor::pin_finger(s->document().json(), pianist, note.start_s, note.key,
+                                            finger)) ||
         !s->undo()) {
       state.SkipWithError("edit refused");
       break;

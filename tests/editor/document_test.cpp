@@ -15,6 +15,7 @@
 namespace tutti::editor {
 namespace {
 
+using test::performer_at;
 using test::read_text;
 using test::ScratchDir;
 
@@ -36,7 +37,7 @@ TEST(Document, EditUndoRedo) {
   ASSERT_TRUE(doc) << doc.error().message;
   const Json original = doc->json();
   const double before = *brass_family::brass_players(doc->scene())[1].variation.sway_amount;
-  auto edit = set_variation(doc->json(), {false, 1}, "sway_amount", 0.9);
+  auto edit = set_variation(doc->json(), performer_at(1), "sway_amount", 0.9);
   ASSERT_TRUE(edit) << edit.error().message;
   ASSERT_TRUE(doc->apply(*edit));
   EXPECT_DOUBLE_EQ(*brass_family::brass_players(doc->scene())[1].variation.sway_amount, 0.9);
@@ -50,7 +51,7 @@ TEST(Document, EditUndoRedo) {
   EXPECT_DOUBLE_EQ(*brass_family::brass_players(doc->scene())[1].variation.sway_amount, 0.9);
   // A new edit clears the redo list.
   ASSERT_TRUE(doc->undo());
-  ASSERT_TRUE(doc->apply(*set_seed(doc->json(), {false, 0}, 99)));
+  ASSERT_TRUE(doc->apply(*set_seed(doc->json(), performer_at(0), 99)));
   EXPECT_FALSE(doc->can_redo());
   EXPECT_EQ(brass_family::brass_players(doc->scene())[0].seed, 99u);
 }
@@ -60,7 +61,7 @@ TEST(Document, AnEditThatBreaksTheSceneIsRefused) {
   auto doc = Document::open(dir.copy_scene("quartet.json"));
   ASSERT_TRUE(doc);
   const std::uint64_t revision = doc->revision();
-  auto edit = set_variation(doc->json(), {false, 0}, "sway_amount", 1.5);
+  auto edit = set_variation(doc->json(), performer_at(0), "sway_amount", 1.5);
   ASSERT_TRUE(edit);
   const Status s = doc->apply(*edit);
   ASSERT_FALSE(s);
@@ -77,7 +78,7 @@ TEST(Document, SaveWritesWhatWasEditedAndKeepsABackup) {
   const std::string original = read_text(file);
   auto doc = Document::open(file);
   ASSERT_TRUE(doc);
-  ASSERT_TRUE(doc->apply(*add_breath(doc->json(), 2, 6.0)));
+  ASSERT_TRUE(doc->apply(*add_breath(doc->json(), performer_at(2), 6.0)));
   ASSERT_TRUE(doc->save());
   EXPECT_FALSE(doc->dirty());
   EXPECT_EQ(read_text(backup_path(file)), original);
@@ -106,7 +107,7 @@ TEST(Document, UnsavedEditsSurviveInTheAutosave) {
     ASSERT_TRUE(doc);
     ASSERT_TRUE(doc->autosave());
     EXPECT_FALSE(std::filesystem::exists(Document::autosave_path(file))) << "nothing unsaved";
-    ASSERT_TRUE(doc->apply(*set_variation(doc->json(), {false, 2}, "breath_depth", 0.25)));
+    ASSERT_TRUE(doc->apply(*set_variation(doc->json(), performer_at(2), "breath_depth", 0.25)));
     ASSERT_TRUE(doc->autosave());
     EXPECT_TRUE(std::filesystem::exists(Document::autosave_path(file)));
     // The editor "crashes" here: no save.

@@ -7,12 +7,16 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tutti/editor/scene_edits.hpp>
 
 #include "scratch_dir.hpp"
 
 namespace tutti::editor::test {
 
 inline std::filesystem::path source_dir() { return TUTTI_SOURCE_DIR; }
+
+// The k-th brass player of a scene file, as its edits name it ("/performers/k").
+inline PlayerRef performer_at(std::size_t k) { return {"/performers/" + std::to_string(k), ""}; }
 
 inline std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -15,6 +15,7 @@
 namespace tutti::editor {
 namespace {
 
+using test::performer_at;
 using test::ScratchDir;
 
 class EditorUi : public ::testing::Test {
@@ -147,7 +148,7 @@ TEST_F(EditorUi, ALanesMenuAddsABreathAndDeleteRemovesIt) {
   click(s, (item.x0 + item.x1) / 2, (item.y0 + item.y1) / 2);
   const auto& marks = brass_family::brass_players(s.document().scene())[2].breaths.add_s;
   ASSERT_EQ(marks.size(), 1u) << ui_.status;
-  const double boundary = s.breath_boundary(2, 6.3);
+  const double boundary = s.breath_boundary(performer_at(2), 6.3);
   // The mark names the next note, where it was asked for (written to the millisecond).
   EXPECT_EQ(marks[0], std::round(boundary * 1000.0) / 1000.0);
   const TimelineBreath* added = nullptr;
@@ -211,7 +212,7 @@ TEST_F(EditorUi, QuittingWithUnsavedChangesAsksFirst) {
   Session& s = **session;
   ui_.quit_requested = true;
   EXPECT_TRUE(frame(s).quit) << "nothing unsaved: quit at once";
-  ASSERT_TRUE(s.apply(add_breath(s.document().json(), 0, 5.0)));
+  ASSERT_TRUE(s.apply(add_breath(s.document().json(), performer_at(0), 5.0)));
   ui_.quit_requested = true;
   EXPECT_FALSE(frame(s).quit) << "unsaved: a prompt, not a quit";
   frame(s);

@@ -17,15 +17,14 @@
 namespace tutti::editor {
 namespace {
 
+using test::performer_at;
 using test::ScratchDir;
 
 struct RecordingHost : ScriptHost {
   std::vector<std::string> calls;
   void seek(double t) override { calls.push_back("seek " + std::to_string(t)); }
   void set_playing(bool playing) override { calls.push_back(playing ? "play" : "pause"); }
-  void select(PlayerRef player) override {
-    calls.push_back("select " + std::to_string(player.pianist ? -1 : int(player.performer)));
-  }
+  void select(const PlayerRef& player) override { calls.push_back("select " + player.pointer); }
   Status draw_frames(int count) override {
     calls.push_back("frames " + std::to_string(count));
     return Status::success();
@@ -86,8 +85,8 @@ TEST(Script, EditsSaveAndQuit) {
   step = run_all(*fixed, **session, host);
   ASSERT_FALSE(step);
   EXPECT_EQ(step.error().message, "s.txt:6: unsaved changes (save first, or quit-discarding)");
-  EXPECT_EQ(host.calls, (std::vector<std::string>{"select 3", "seek 12.000000", "frames 3",
-                                                  "screenshot x.png"}));
+  EXPECT_EQ(host.calls, (std::vector<std::string>{"select /performers/3", "seek 12.000000",
+                                                  "frames 3", "screenshot x.png"}));
 
   auto finish = parse_script("save\nquit\n", "s.txt");
   ASSERT_TRUE(finish);
@@ -99,7 +98,7 @@ TEST(Script, EditsSaveAndQuit) {
   EXPECT_DOUBLE_EQ(*brass_family::brass_players(*saved)[1].variation.sway_amount, 0.8);
   // The mark is stored at the boundary it names (the first note at or after 6 s), to the
   // millisecond.
-  const double boundary = (*session)->breath_boundary(2, 6.0);
+  const double boundary = (*session)->breath_boundary(performer_at(2), 6.0);
   EXPECT_GT(boundary, 6.0);
   ASSERT_EQ(brass_family::brass_players(*saved)[2].breaths.add_s.size(), 1u);
   EXPECT_EQ(brass_family::brass_players(*saved)[2].breaths.add_s[0],
@@ -165,6 +164,34 @@ TEST(Script, UnknownPerformerNamesTheOnesThere) {
   EXPECT_EQ(step.error().message,
             "s.txt:1: no performer \"Tuba\" (performers: Trumpet 1, Trumpet 2, Trombone 1, "
             "Trombone 2)");
+}
+
+// Players are named across families; an edit a player's family does not take is refused with
+// its reason, and the file is left as it was.
+TEST(Script, AnEditAPlayersFamilyDoesNotTakeIsRefused) {
+  ScratchDir dir;
+  auto session = Session::open(dir.copy_scene("piano.json"));
+  ASSERT_TRUE(session);
+  RecordingHost host;
+  const std::pair<const char*, const char*> cases[] = {
+      {"add-breath pianist 1.0\n",
+       "s.txt:1: pianist takes no breath marks (their family plans no breaths)"},
+      {"add-expression pianist strain 1 2\n",
+       "s.txt:1: pianist takes no expressions (their family has none)"},
+      {"pin 1.5 64 3 Nobody\n", "s.txt:1: no performer \"Nobody\" (performers: pianist)"},
+  };
+  for (const auto& [text, message] : cases) {
+    auto script = parse_script(text, "s.txt");
+    ASSERT_TRUE(script) << text;
+    auto step = run_all(*script, **session, host);
+    ASSERT_FALSE(step) << text;
+    EXPECT_EQ(step.error().message, message);
+  }
+  EXPECT_FALSE((*session)->document().dirty());
+  auto select = parse_script("select pianist\n", "s.txt");
+  ASSERT_TRUE(select);
+  ASSERT_TRUE(run_all(*select, **session, host));
+  EXPECT_EQ(host.calls.back(), "select /pianist");
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 namespace tutti::editor {
 namespace {
 
+using test::performer_at;
 using test::ScratchDir;
 
 components::BodyMotion body_at(Session& session, std::size_t performer, double t) {
@@ -30,7 +31,7 @@ TEST(Session, AVariationEditReplansThatPlayersMotion) {
   Session& s = **session;
   const auto models = s.stage().model_list();
   const auto before = body_at(s, 1, 6.0);
-  ASSERT_TRUE(s.apply(set_variation(s.document().json(), {false, 1}, "sway_amount", 1.0)));
+  ASSERT_TRUE(s.apply(set_variation(s.document().json(), performer_at(1), "sway_amount", 1.0)));
   EXPECT_FALSE(s.models_changed()) << "the same cast: the models are shared";
   EXPECT_EQ(s.stage().model_list(), models);
   const auto after = body_at(s, 1, 6.0);
@@ -99,10 +100,12 @@ TEST(Session, PinningAFingerReplansTheFingering) {
   ASSERT_TRUE(session) << session.error().message;
   Session& s = **session;
   const TimelineLane& lane = s.timeline().lanes.back();
-  ASSERT_TRUE(lane.pianist);
+  ASSERT_TRUE(lane.fingered);
+  EXPECT_EQ(lane.player, "/pianist");
+  const PlayerRef pianist{lane.player, lane.name};
   const TimelineNote note = lane.notes[12];
   const int finger = note.finger == 5 ? 4 : 5;
-  ASSERT_TRUE(s.apply(pin_finger(s.document().json(), note.start_s, note.key, finger)));
+  ASSERT_TRUE(s.apply(pin_finger(s.document().json(), pianist, note.start_s, note.key, finger)));
   EXPECT_EQ(s.timeline().lanes.back().notes[12].finger, finger);
   EXPECT_TRUE(s.timeline().lanes.back().notes[12].pinned);
   // Only the span around the pin was searched again; the unpinned fingering was shared.
@@ -124,7 +127,8 @@ TEST(Session, PinningAFingerReplansTheFingering) {
   EXPECT_GE(inside, samples * 95 / 100) << inside << " of " << samples;
   // A pin on a note that is not there: the planner refuses it, nothing changes.
   const std::uint64_t revision = s.document().revision();
-  const Status wrong = s.apply(pin_finger(s.document().json(), note.start_s + 0.3333, 20, 1));
+  const Status wrong =
+      s.apply(pin_finger(s.document().json(), pianist, note.start_s + 0.3333, 20, 1));
   ASSERT_FALSE(wrong);
   EXPECT_NE(wrong.error().message.find("/pianist/pins/1: no note of key 20"), std::string::npos)
       << wrong.error().message;
@@ -151,7 +155,8 @@ TEST(Session, AnEditReplansOnlyWhatItTouches) {
     if (legato && !breath) boundary = lane.notes[i].start_s;
   }
   ASSERT_GT(boundary, 0.0);
-  ASSERT_TRUE(s.apply(add_breath(s.document().json(), 2, s.breath_boundary(2, boundary - 0.01))));
+  ASSERT_TRUE(s.apply(add_breath(s.document().json(), performer_at(2),
+                                 s.breath_boundary(performer_at(2), boundary - 0.01))));
   EXPECT_EQ(s.stage().replanned(), (std::vector<std::string>{"Trombone 1", "ensemble"}));
   const auto& breaths = s.timeline().lanes[2].breaths;
   const auto marked = std::find_if(breaths.begin(), breaths.end(), [&](const auto& b) {
@@ -161,10 +166,10 @@ TEST(Session, AnEditReplansOnlyWhatItTouches) {
   EXPECT_TRUE(marked->marked);
   EXPECT_TRUE(marked->catch_breath) << "legato: a catch-breath";
   const bool marked_only = marked->marked;  // the timeline is replaced by the next edit
-  ASSERT_TRUE(s.apply(set_variation(s.document().json(), {false, 0}, "sway_amount", 0.1)));
+  ASSERT_TRUE(s.apply(set_variation(s.document().json(), performer_at(0), "sway_amount", 0.1)));
   EXPECT_EQ(s.stage().replanned(), std::vector<std::string>{"ensemble"});
   // Deleting the marked breath leaves no mark behind.
-  ASSERT_TRUE(s.apply(delete_breath(s.document().json(), 2, boundary, marked_only)));
+  ASSERT_TRUE(s.apply(delete_breath(s.document().json(), performer_at(2), boundary, marked_only)));
   EXPECT_FALSE(s.document().json()["performers"][2].contains("breaths"));
 }
 
@@ -174,7 +179,7 @@ TEST(Session, ASliderDragIsOneUndoStep) {
   ASSERT_TRUE(session);
   Session& s = **session;
   for (double v : {0.1, 0.2, 0.3, 0.4}) {
-    ASSERT_TRUE(s.apply(set_variation(s.document().json(), {false, 0}, "head_motion", v),
+    ASSERT_TRUE(s.apply(set_variation(s.document().json(), performer_at(0), "head_motion", v),
                         /*coalesce=*/v > 0.1));
   }
   EXPECT_EQ(s.document().history().size(), 1u);
