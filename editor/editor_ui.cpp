@@ -8,9 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <tutti/brass/brass_players.hpp>
 #include <tutti/ensemble_variation/variation_params.hpp>
-#include <tutti/piano/keyboard_players.hpp>
 #include <tutti/runtime/input_bindings.hpp>
 
 namespace tutti::editor {
@@ -252,7 +250,6 @@ void draw_inspector(Session& session, UiState& ui) {
       ImVec2(kInspectorWidth, std::max(100.0f, display.y - kTransportHeight - kTimelineHeight)));
   ImGui::Begin("Inspector", nullptr, kPanelFlags);
   const Timeline& timeline = session.timeline();
-  const scene::Scene& scene = session.document().scene();
   if (timeline.lanes.empty()) {
     ImGui::End();
     return;
@@ -260,34 +257,15 @@ void draw_inspector(Session& session, UiState& ui) {
   ui.selected_lane = std::min(ui.selected_lane, timeline.lanes.size() - 1);
   const TimelineLane& lane = timeline.lanes[ui.selected_lane];
   const PlayerRef player{lane.player, lane.name};
-  if (lane.expressive && lane.index < brass_family::brass_players(scene).size()) {
-    const brass_family::BrassPlayer& p = brass_family::brass_players(scene)[lane.index];
-    ImGui::Text("%s", p.name.c_str());
-    ImGui::Text("%s, part \"%s\"%s", p.instrument.c_str(), p.part.c_str(), p.lead ? ", lead" : "");
-    ImGui::Separator();
-    draw_variation(session, ui, player, p.variation, p.seed);
-    ImGui::Separator();
-    ImGui::TextUnformatted("Expressions (right-click the lane to add)");
-    for (std::size_t i = 0; i < p.expressions.size(); ++i) {
-      const scene::Expression e = p.expressions[i];
-      ImGui::PushID(static_cast<int>(i));
-      ImGui::Text("%s %.2f-%.2f s (%.2f)", std::string(scene::expression_name(e.kind)).c_str(),
-                  e.start_s, e.end_s, e.amount);
-      ImGui::SameLine();
-      if (ImGui::SmallButton("delete")) {
-        apply(session, ui, delete_expression(session.document().json(), player, e));
-      }
-      ImGui::PopID();
-    }
-  } else if (lane.fingered && lane.index < piano_family::keyboard_players(scene).size()) {
-    const piano_family::KeyboardPlayer& pianist = piano_family::keyboard_players(scene)[lane.index];
-    ImGui::Text("%s (%s hands)", lane.name.c_str(), pianist.hand_size.c_str());
+  ImGui::Text("%s", lane.name.c_str());
+  if (!lane.summary.empty()) ImGui::Text("%s", lane.summary.c_str());
+  if (lane.fingered) {
     ImGui::TextUnformatted("Click a note on the timeline to pin a finger.");
-    for (const piano_family::FingerPin& pin : pianist.pins) {
+    for (const stage::PinView& pin : lane.pins) {
       ImGui::PushID(&pin);
       ImGui::Text("key %d at %.3f s: finger %d", pin.key, pin.time_s, pin.finger);
       ImGui::SameLine();
-      const piano_family::FingerPin copy = pin;
+      const stage::PinView copy = pin;
       if (ImGui::SmallButton("unpin")) {
         ImGui::PopID();
         apply(session, ui, unpin_finger(session.document().json(), player, copy.time_s, copy.key));
@@ -297,8 +275,23 @@ void draw_inspector(Session& session, UiState& ui) {
     }
     ImGui::Separator();
     draw_hand_area(lane, ui);
+  }
+  ImGui::Separator();
+  draw_variation(session, ui, player, lane.variation, lane.seed);
+  if (lane.expressive) {
     ImGui::Separator();
-    draw_variation(session, ui, player, pianist.variation, pianist.seed);
+    ImGui::TextUnformatted("Expressions (right-click the lane to add)");
+    for (std::size_t i = 0; i < lane.expressions.size(); ++i) {
+      const scene::Expression e = lane.expressions[i];
+      ImGui::PushID(static_cast<int>(i));
+      ImGui::Text("%s %.2f-%.2f s (%.2f)", std::string(scene::expression_name(e.kind)).c_str(),
+                  e.start_s, e.end_s, e.amount);
+      ImGui::SameLine();
+      if (ImGui::SmallButton("delete")) {
+        apply(session, ui, delete_expression(session.document().json(), player, e));
+      }
+      ImGui::PopID();
+    }
   }
   ImGui::End();
 }

@@ -8,10 +8,12 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <tutti/scene/scene.hpp>
+#include <tutti/stage/player_view.hpp>
 #include <tutti/stage/stage.hpp>
 
 namespace tutti::editor {
@@ -37,22 +39,25 @@ struct TimelineBreath {
   bool catch_breath = false;
 };
 
-// The allowed hand positions of one event and where the hand actually is (keyboard x, mm).
-struct HandCorridorView {
-  double start_s = 0.0, end_s = 0.0, lo_mm = 0.0, hi_mm = 0.0;
-};
+// The allowed hand positions of one event (keyboard x, mm).
+using HandCorridorView = stage::HandBand;
 
 struct TimelineLane {
   std::string name;
   std::string family;     // the family that plays it (stage::Seat::family)
   std::size_t index = 0;  // which of the family's players (stage::Seat::index)
   std::string player;     // where the scene file writes the player: a JSON pointer (edits go there)
-  // Its notes carry the hand and finger that play them, and may be pinned to a finger.
+  // Its notes carry the hand and finger that play them, and may be pinned to a finger (`pins`).
   bool fingered = false;
   // It breathes by the rules (a BreathSchedule): breath marks apply.
   bool breathes = false;
   // Its family takes expression spans (the player's "expressions").
   bool expressive = false;
+  // For the inspector, as the family describes the player (stage::PlayerView).
+  std::string summary;
+  scene::Variation variation;
+  std::uint64_t seed = 0;
+  std::vector<stage::PinView> pins;
   std::vector<TimelineNote> notes;
   std::vector<TimelineBreath> breaths;
   std::vector<scene::Expression> expressions;
@@ -78,7 +83,7 @@ struct Timeline {
   std::vector<Shot> shots;
 };
 
-inline constexpr double kHandPathStep_s = 0.02;
+using stage::kHandPathStep_s;
 
 Timeline build_timeline(const stage::Stage& stage);
 

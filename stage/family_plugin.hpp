@@ -6,7 +6,7 @@
 // their models (StageBuilder), drafts its players for `tutti scene new` (family_draft.hpp) and
 // measures their poses for `tutti check-pose` (pose_checker.hpp), and names and finds the stops its
 // players reach, which become the host API's events and `sync-report`'s contacts
-// (contact_detector.hpp).
+// (contact_detector.hpp), and describes its players to the editor (player_view.hpp).
 // The stage knows families only through this interface; the list of families a program uses is
 // a small file of its own (tutti::performance's default_families()).
 
@@ -28,7 +28,9 @@ struct FamilyDraft;
 struct DraftPlace;
 
 class PoseChecker;
+class Stage;
 class StageBuilder;
+struct PlayerView;
 
 class FamilyPlugin {
  public:
@@ -75,6 +77,14 @@ class FamilyPlugin {
   virtual std::unique_ptr<StopTracker> track_stops(ecs::World& world) const {
     (void)world;
     return nullptr;
+  }
+
+  // What the editor shows of `performer`, one of its players, beyond what every player has
+  // (player_view.hpp). The default: a player with nothing more.
+  virtual void describe_player(const Stage& stage, ecs::Entity performer, PlayerView& out) const {
+    (void)stage;
+    (void)performer;
+    (void)out;
   }
 
   // Loads the family's content, plans the scene's performers of the family (or shares the plans

@@ -38,6 +38,9 @@ class BrassPlugin final : public stage::FamilyPlugin {
     return track_brass_stops(world, name());
   }
   Status build(stage::StageBuilder& builder) const override;
+  // describe_brass_player.cpp
+  void describe_player(const stage::Stage& stage, ecs::Entity performer,
+                       stage::PlayerView& out) const override;
 
  private:
   BrassSceneSection section_;

@@ -36,6 +36,9 @@ class PianoPlugin final : public stage::FamilyPlugin {
     return track_keyboard_stops(world);
   }
   Status build(stage::StageBuilder& builder) const override;
+  // describe_keyboard_player.cpp
+  void describe_player(const stage::Stage& stage, ecs::Entity performer,
+                       stage::PlayerView& out) const override;
 
  private:
   Status build_pianist(stage::StageBuilder& builder, std::size_t index) const;

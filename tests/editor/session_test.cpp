@@ -24,6 +24,38 @@ components::BodyMotion body_at(Session& session, std::size_t performer, double t
       session.stage().find_performer("brass", performer));
 }
 
+// Each lane is what the player's family describes (FamilyPlugin::describe_player): the editor
+// knows no family, so these come from the brass and keyboard plugins.
+TEST(Session, EachLaneIsWhatThePlayersFamilyDescribes) {
+  ScratchDir dir;
+  auto quartet = Session::open(dir.copy_scene("quartet.json"));
+  ASSERT_TRUE(quartet) << quartet.error().message;
+  const TimelineLane& lead = (*quartet)->timeline().lanes.at(0);
+  EXPECT_EQ(lead.family, "brass");
+  EXPECT_EQ(lead.player, "/performers/0");
+  EXPECT_EQ(lead.summary, "trumpet_bb, part \"Trumpet 1\", lead");
+  EXPECT_TRUE(lead.expressive);
+  EXPECT_TRUE(lead.breathes);
+  EXPECT_FALSE(lead.fingered);
+  EXPECT_EQ((*quartet)->timeline().lanes.at(2).summary, "trombone_tenor, part \"Trombone 1\"");
+
+  auto piano = Session::open(dir.copy_scene("piano.json"));
+  ASSERT_TRUE(piano) << piano.error().message;
+  const TimelineLane& pianist = (*piano)->timeline().lanes.at(0);
+  EXPECT_EQ(pianist.family, "piano");
+  EXPECT_EQ(pianist.player, "/pianist");
+  EXPECT_EQ(pianist.name, "Pianist");
+  EXPECT_EQ(pianist.summary, "medium hands");
+  EXPECT_TRUE(pianist.fingered);
+  EXPECT_FALSE(pianist.expressive);
+  EXPECT_FALSE(pianist.breathes);
+  EXPECT_FALSE(pianist.corridors[0].empty());
+  EXPECT_FALSE(pianist.hand_path[1].empty());
+  int fingered_notes = 0;
+  for (const TimelineNote& n : pianist.notes) fingered_notes += n.finger >= 1 && n.finger <= 5;
+  EXPECT_EQ(fingered_notes, static_cast<int>(pianist.notes.size()));
+}
+
 TEST(Session, AVariationEditReplansThatPlayersMotion) {
   ScratchDir dir;
   auto session = Session::open(dir.copy_scene("quartet.json"));
