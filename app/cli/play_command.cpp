@@ -225,7 +225,9 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
   for (const std::string& note : player.stage().notes()) err << "note: " << note << "\n";
   if (live.enabled()) {
     std::string notice;
-    if (Status s = live.attach(player.stage(), *scene, notice); !s) return fail(s.error());
+    if (Status s = live.attach(player.stage(), player.posed().world(), *scene, notice); !s) {
+      return fail(s.error());
+    }
     if (!notice.empty()) out << notice << "\n";
     out << live.describe() << "\n";
   }
@@ -307,7 +309,7 @@ int run_play(const PlayOptions& o, std::ostream& out, std::ostream& err) {
     if (live.enabled()) {
       // Live: the picture is the host's time, and the pianist has played what came in by then.
       const double live_s = host_now();
-      live.frame(player.stage(), live_s);
+      live.frame(player.stage(), player.posed().world(), live_s);
       player.show(live_s);
     } else {
       player.update(host_now());

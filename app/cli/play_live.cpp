@@ -32,7 +32,8 @@ Result<std::unique_ptr<LivePlay>> LivePlay::open(const LivePlayOptions& options,
   return play;
 }
 
-Status LivePlay::attach(stage::Stage& stage, const scene::Scene& scene, std::string& notice) {
+Status LivePlay::attach(const stage::Stage& stage, ecs::World& posed, const scene::Scene& scene,
+                        std::string& notice) {
   if (!enabled()) return {};
   if (stage.find_performer("piano", 0).is_null()) {
     return Error{scene.source + ": the stage has no pianist"};
@@ -46,7 +47,7 @@ Status LivePlay::attach(stage::Stage& stage, const scene::Scene& scene, std::str
   auto pianist = live::LivePianist::create(std::move(*model), *params);
   if (!pianist) return pianist.error();
   pianist_ = std::move(*pianist);
-  hand_to(stage);
+  hand_to(stage, posed);
   if (options_.audio_driver != "simulated") {
     auto font = audio::find_sound_font(options_.sound_font);
     if (!font) {
@@ -60,18 +61,18 @@ Status LivePlay::attach(stage::Stage& stage, const scene::Scene& scene, std::str
   return {};
 }
 
-void LivePlay::frame(stage::Stage& stage, double host_s) {
+void LivePlay::frame(const stage::Stage& stage, ecs::World& posed, double host_s) {
   if (!pianist_) return;
   polled_.clear();
   for (auto& source : sources_) source->poll(host_s, polled_);
   if (synth_) synth_->play(polled_);
   for (const live::LiveNoteEvent& e : polled_) notes_ += e.on ? 1 : 0;
-  if (pianist_->update(polled_, host_s)) hand_to(stage);
+  if (pianist_->update(polled_, host_s)) hand_to(stage, posed);
 }
 
-void LivePlay::hand_to(stage::Stage& stage) const {
+void LivePlay::hand_to(const stage::Stage& stage, ecs::World& posed) const {
   // The live motion drives the pianist's hands from now on (the finger-motion system reads it).
-  auto* handle = stage.world().try_get<finger_motion::PianistMotionHandle>(
+  auto* handle = posed.try_get<finger_motion::PianistMotionHandle>(
       stage.find_performer("piano", 0));
   if (handle != nullptr) handle->motion = pianist_->motion();
 }

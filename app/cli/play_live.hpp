@@ -35,11 +35,13 @@ class LivePlay {
   // Checked before any window opens: the scene has a pianist, the MIDI port opens.
   static Result<std::unique_ptr<LivePlay>> open(const LivePlayOptions& options,
                                                 const scene::Scene& scene);
-  // Once the stage is built: the live pianist replaces the planned motion. `notice` gets a
-  // line about the sound when there is none.
-  Status attach(stage::Stage& stage, const scene::Scene& scene, std::string& notice);
-  // Polls, plays and hands the new motion to the stage (call before showing host_s).
-  void frame(stage::Stage& stage, double host_s);
+  // Once the stage is built: the live pianist replaces the planned motion in `posed`, the
+  // world the stage is posed and drawn in (the player's sampling context). `notice` gets a line
+  // about the sound when there is none.
+  Status attach(const stage::Stage& stage, ecs::World& posed, const scene::Scene& scene,
+                std::string& notice);
+  // Polls, plays and hands the new motion to `posed` (call before showing host_s).
+  void frame(const stage::Stage& stage, ecs::World& posed, double host_s);
 
   live::KeyboardPiano* keyboard() { return keyboard_; }
   std::string describe()
@@ -47,7 +49,7 @@ class LivePlay {
   int notes_played() const { return notes_; }
 
  private:
-  void hand_to(stage::Stage& stage) const;
+  void hand_to(const stage::Stage& stage, ecs::World& posed) const;
 
   std::vector<std::unique_ptr<live::LiveNoteSource>> sources_;
   live::KeyboardPiano* keyboard_ = nullptr;

@@ -36,6 +36,7 @@ Result<std::unique_ptr<ScenePlayer>> ScenePlayer::create(render::VulkanContext& 
 Status ScenePlayer::init(render::VulkanContext& context, const render::FrameTarget& target,
                          const ScenePlayerOptions& options) {
   stage::Stage& st = *stage_;
+  posed_.emplace(st.make_context());
   const scene::Scene& scene = st.scene();
   render::ModelRendererOptions renderer_options = options.renderer;
   if (renderer_options.shadow_taps == 0) {
@@ -96,6 +97,7 @@ Status ScenePlayer::use_stage(render::VulkanContext& context, const render::Fram
   stage::Stage& stage = *next;
   const bool sound_changed = !same_sound(*stage_, stage);
   stage_ = &stage;
+  posed_.emplace(stage.make_context());
   owned_stage_ = std::move(next);  // the previous stage may go now
   if (Status s = stage_renderer_->use_stage(context, target, stage, models_changed); !s) return s;
   if (camera_index_ >= stage.scene().cameras.size()) mode_ = CameraMode::director;
@@ -110,13 +112,13 @@ double ScenePlayer::update(double host_s) {
   transport_->update(host_s);
   // The frame's time is the transport's audio clock, given to the frame as its argument.
   shown_s_ = transport_->clock().time();
-  stage_->run({shown_s_, 0.0});
+  stage_->run(*posed_, {shown_s_, 0.0});
   return shown_s_;
 }
 
 void ScenePlayer::show(double t_s) {
   shown_s_ = t_s;
-  stage_->run({t_s, 0.0});
+  stage_->run(*posed_, {t_s, 0.0});
 }
 
 render::Camera ScenePlayer::camera(float aspect) const {
@@ -135,7 +137,7 @@ Status ScenePlayer::record(const render::RecordingFrame& frame, render::FrameTar
   const VkExtent2D extent = target.extent();
   const float aspect =
       static_cast<float>(extent.width) / static_cast<float>(std::max(1u, extent.height));
-  return stage_renderer_->record(frame, target, *stage_, camera(aspect));
+  return stage_renderer_->record(frame, target, *stage_, *posed_, camera(aspect));
 }
 
 void ScenePlayer::set_director() { mode_ = CameraMode::director; }

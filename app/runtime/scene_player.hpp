@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,12 @@ class ScenePlayer {
   double update(double host_s);
   // Poses the stage at music time t_s (your clock; the transport is left alone).
   void show(double t_s);
+  // Where it poses the stage and what it draws: a sampling context of its own (the stage's
+  // own world is only read, so an editor's session or another thread may use the stage too).
+  // Made again with each stage (use_stage). Write into its world what should change what is
+  // shown (the live player's motion).
+  stage::StageContext& posed() { return *posed_; }
+  const stage::StageContext& posed() const { return *posed_; }
   double shown_time() const { return shown_s_; }
 
   // Shadow pass and main pass (begin_main_pass .. end_main_pass) of `frame` with the current
@@ -102,6 +109,7 @@ class ScenePlayer {
 
   std::shared_ptr<stage::Stage> owned_stage_;  // what stage_ points into, kept alive
   stage::Stage* stage_ = nullptr;
+  std::optional<stage::StageContext> posed_;  // made from *stage_
   std::unique_ptr<StageRenderer> stage_renderer_;
   std::unique_ptr<Transport> transport_;
   CameraMode mode_ = CameraMode::director;

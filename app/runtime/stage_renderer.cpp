@@ -36,12 +36,6 @@ Status StageRenderer::use_stage(render::VulkanContext& context, const render::Fr
 }
 
 Status StageRenderer::record(const render::RecordingFrame& frame, render::FrameTarget& target,
-                             const stage::Stage& stage, const render::Camera& camera) {
-  collect_instances(stage, instances_);
-  return renderer_->record(frame, target, instances_, camera, lighting_, clear_);
-}
-
-Status StageRenderer::record(const render::RecordingFrame& frame, render::FrameTarget& target,
                              const stage::Stage& stage, const stage::StageContext& posed,
                              const render::Camera& camera) {
   collect_instances(stage, posed, instances_);

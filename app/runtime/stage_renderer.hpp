@@ -27,10 +27,9 @@ class StageRenderer {
   Status use_stage(render::VulkanContext& context, const render::FrameTarget& target,
                    const stage::Stage& stage, bool models_changed);
 
-  // Shadow pass and main pass of `frame`: `stage`'s placed models seen by `camera`.
-  Status record(const render::RecordingFrame& frame, render::FrameTarget& target,
-                const stage::Stage& stage, const render::Camera& camera);
-  // The same with the models as `posed` (a sampling context of `stage`) last posed them.
+  // Shadow pass and main pass of `frame`: `stage`'s placed models as `posed` (a sampling
+  // context of `stage`: every renderer draws a context's output) last posed them, seen by
+  // `camera`.
   Status record(const render::RecordingFrame& frame, render::FrameTarget& target,
                 const stage::Stage& stage, const stage::StageContext& posed,
                 const render::Camera& camera);

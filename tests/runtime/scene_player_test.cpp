@@ -126,5 +126,38 @@ TEST_F(ScenePlayerTest, RecordsAFrame) {
   EXPECT_GT(p.renderer().last_stats().main_draws, 0u);
 }
 
+bool same_pose(const model::ModelPose& a, const model::ModelPose& b) {
+  if (a.local.size() != b.local.size() || a.morph_weights != b.morph_weights) return false;
+  for (std::size_t i = 0; i < a.local.size(); ++i) {
+    if (a.local[i].translation != b.local[i].translation ||
+        a.local[i].rotation != b.local[i].rotation || a.local[i].scale != b.local[i].scale) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The player poses a sampling context of its own and draws that (as render, export and the host
+// API do): the stage's own world is left as it was built, and what is shown at t is what any
+// other context of the stage gives at t.
+TEST_F(ScenePlayerTest, ItPosesAContextOfItsOwnAndLeavesTheStagesWorldAlone) {
+  ScenePlayer& p = *player_;
+  const stage::Stage& stage = p.stage();
+  std::vector<model::ModelPose> built;
+  for (std::size_t i = 0; i < stage.instances().size(); ++i) built.push_back(stage.placed(i).pose);
+  const double t = stage.start_s() + 5.0;
+  p.show(stage.start_s() + 2.0);
+  p.show(t);
+  stage::StageContext fresh = stage.make_context();
+  stage.run(fresh, {t, 0.0});
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < stage.instances().size(); ++i) {
+    EXPECT_TRUE(same_pose(stage.placed(i).pose, built[i])) << "instance " << i;
+    EXPECT_TRUE(same_pose(p.posed().placed(i).pose, fresh.placed(i).pose)) << "instance " << i;
+    moved += same_pose(p.posed().placed(i).pose, built[i]) ? 0 : 1;
+  }
+  EXPECT_GT(moved, 0u) << "the pianist and the keys move between the start and 5 s";
+}
+
 }  // namespace
 }  // namespace tutti::runtime
