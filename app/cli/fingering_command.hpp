@@ -28,7 +28,7 @@ struct FingeringOptions {
   std::string smoothing = "monotone_quintic";
   std::filesystem::path plot{};         // PNG piano roll, empty = none
   std::string plot_seconds{};           // "A:B" window for the plot, empty = whole piece
-  std::filesystem::path content_dir{};  // empty = piano::default_content_dir()
+  std::filesystem::path content_dir{};  // empty = piano_model::default_content_dir()
 };
 
 // Writes the result, prints the report, or one "error: ..." line to `err`. Returns the exit code.

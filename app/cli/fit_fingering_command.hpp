@@ -22,7 +22,7 @@ struct FitFingeringOptions {
   std::string start = "default";  // preset or weights file to start from
   std::string hand_size{};
   int rounds = 8;
-  std::filesystem::path content_dir{};  // empty = piano::default_content_dir()
+  std::filesystem::path content_dir{};  // empty = piano_model::default_content_dir()
 };
 
 // Prints the match rate before/after and the time taken; one "error: ..." line on failure.

@@ -55,7 +55,7 @@ int run_perform(const PerformOptions& o, std::ostream& out, std::ostream& err) {
     }
   }
   const std::filesystem::path content =
-      o.content_dir.empty() ? piano::default_content_dir() : o.content_dir;
+      o.content_dir.empty() ? piano_model::default_content_dir() : o.content_dir;
   auto styles = key_action::load_styles(key_action::styles_path(content));
   if (!styles) return fail(styles.error());
   std::vector<key_action::PerformanceStyle> chosen;

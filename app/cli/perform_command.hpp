@@ -22,7 +22,7 @@ struct PerformOptions {
   std::string style = "precise";  // a content/piano/styles.json style, or "all" (report only)
   std::uint64_t seed = 1;
   std::string hand_size;              // hands.json preset; empty = its default
-  std::filesystem::path content_dir;  // empty = piano::default_content_dir()
+  std::filesystem::path content_dir;  // empty = piano_model::default_content_dir()
   bool json = false;  // the report and per-note outcomes as JSON on stdout, instead of text
 };
 

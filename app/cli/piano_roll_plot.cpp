@@ -89,12 +89,12 @@ struct Frame {
   int y(double mm) const { return kPlotMargin + int(std::floor(mm_hi - mm)); }
 };
 
-double key_mm(const piano::Keyboard& keyboard, int key) {
+double key_mm(const piano_model::Keyboard& keyboard, int key) {
   return keyboard.x_mm(std::clamp(key, keyboard.lowest_key(), keyboard.highest_key()));
 }
 
 Frame frame_for(const music::Score& score, const piano_performance::PianoPerformancePlan& plan,
-                const piano::Keyboard& keyboard, std::optional<PlotWindow> window) {
+                const piano_model::Keyboard& keyboard, std::optional<PlotWindow> window) {
   Frame f;
   f.t0 = window ? window->start_s : 0.0;
   f.t1 = window ? window->end_s : std::max(score.end_s, 0.001);
@@ -109,7 +109,7 @@ Frame frame_for(const music::Score& score, const piano_performance::PianoPerform
     hi = std::max(hi, key_mm(keyboard, n.pitch));
   }
   for (const piano::HandPlan* hand : {&plan.fingering.right, &plan.fingering.left}) {
-    for (const piano::HandCorridor& c : hand->corridors) {
+    for (const piano_model::HandCorridor& c : hand->corridors) {
       if (c.end_s < f.t0 || c.start_s > f.t1) continue;
       lo = std::min(lo, c.lo_mm);
       hi = std::max(hi, c.hi_mm);
@@ -127,7 +127,7 @@ Frame frame_for(const music::Score& score, const piano_performance::PianoPerform
   return f;
 }
 
-void draw_grid(Canvas& canvas, const Frame& f, const piano::Keyboard& keyboard, int width,
+void draw_grid(Canvas& canvas, const Frame& f, const piano_model::Keyboard& keyboard, int width,
                int height) {
   for (int s = int(std::ceil(f.t0)); s <= int(std::floor(f.t1)); ++s) {
     canvas.fill(f.x(s), kPlotMargin, f.x(s), height - kPlotMargin - 1, kSecondLine);
@@ -139,9 +139,9 @@ void draw_grid(Canvas& canvas, const Frame& f, const piano::Keyboard& keyboard, 
   }
 }
 
-void draw_corridors(Canvas& canvas, const Frame& f, const piano::HandCorridors& corridors,
+void draw_corridors(Canvas& canvas, const Frame& f, const piano_model::HandCorridors& corridors,
                     const HandColours& colours) {
-  for (const piano::HandCorridor& c : corridors) {
+  for (const piano_model::HandCorridor& c : corridors) {
     if (c.end_s < f.t0 || c.start_s > f.t1) continue;
     const int x0 = f.x(c.start_s);
     const int x1 = std::max(x0, f.x(c.end_s) - 1);
@@ -152,7 +152,7 @@ void draw_corridors(Canvas& canvas, const Frame& f, const piano::HandCorridors& 
 
 // Bars first, then (after the paths) the finger numbers, so a path never hides a number.
 void draw_notes(Canvas& canvas, const Frame& f, const music::Score& score,
-                const piano::Keyboard& keyboard, bool labels) {
+                const piano_model::Keyboard& keyboard, bool labels) {
   constexpr int kHalfBar = 7;  // px: a bar 15 px tall, room for a 10 px digit
   for (const music::Note& n : score.notes) {
     if (n.hand == music::Hand::unknown || n.offset_s < f.t0 || n.onset_s > f.t1) continue;
@@ -204,7 +204,7 @@ Result<PlotWindow> parse_plot_window(const std::string& text) {
 
 PlotImage plot_piano_roll(const music::Score& fingered,
                           const piano_performance::PianoPerformancePlan& plan,
-                          const piano::Keyboard& keyboard, std::optional<PlotWindow> window) {
+                          const piano_model::Keyboard& keyboard, std::optional<PlotWindow> window) {
   const Frame f = frame_for(fingered, plan, keyboard, window);
   const int width = 2 * kPlotMargin + int(std::ceil((f.t1 - f.t0) * f.px_per_s));
   const int height = 2 * kPlotMargin + int(f.mm_hi - f.mm_lo) + 1;

@@ -42,7 +42,7 @@ inline constexpr int kPlotMargin = 10;
 
 PlotImage plot_piano_roll(const music::Score& fingered,
                           const piano_performance::PianoPerformancePlan& plan,
-                          const piano::Keyboard& keyboard, std::optional<PlotWindow> window);
+                          const piano_model::Keyboard& keyboard, std::optional<PlotWindow> window);
 
 // The plot as a PNG file (image/png.hpp: deterministic, written atomically).
 Status write_png(const std::filesystem::path& path, const PlotImage& image);

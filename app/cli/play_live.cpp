@@ -42,7 +42,7 @@ Status LivePlay::attach(const stage::Stage& stage, ecs::World& posed, const scen
                                            piano_family::keyboard_players(scene).front().hand_size);
   if (!model) return model.error();
   auto params = finger_motion::load_finger_motion_params(
-      finger_motion::finger_motion_params_path(piano::default_content_dir()));
+      finger_motion::finger_motion_params_path(piano_model::default_content_dir()));
   if (!params) return params.error();
   auto pianist = live::LivePianist::create(std::move(*model), *params);
   if (!pianist) return pianist.error();

@@ -11,7 +11,7 @@ namespace fs = std::filesystem;
 Result<piano::FingeringModel> load_model_with_weights(const std::string& weights,
                                                       const std::string& hand_size,
                                                       const fs::path& content_dir) {
-  const fs::path content = content_dir.empty() ? piano::default_content_dir() : content_dir;
+  const fs::path content = content_dir.empty() ? piano_model::default_content_dir() : content_dir;
   const bool is_file =
       weights.find('/') != std::string::npos || fs::path(weights).extension() == ".json";
   auto model = piano::load_fingering_model(is_file ? "default" : weights, hand_size, content);

@@ -12,7 +12,7 @@
 
 namespace tutti::cli {
 
-// content_dir empty = piano::default_content_dir(); hand_size empty = hands.json's default.
+// content_dir empty = piano_model::default_content_dir(); hand_size empty = hands.json's default.
 Result<piano::FingeringModel> load_model_with_weights(const std::string& weights,
                                                       const std::string& hand_size,
                                                       const std::filesystem::path& content_dir);

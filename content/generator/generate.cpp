@@ -47,20 +47,20 @@ namespace {
 Status generate_keyboards(const std::filesystem::path& content_dir, const PianoDimensions& piano,
                           const std::filesystem::path& out_dir) {
   auto instruments =
-      piano::KeyboardInstruments::load(piano::keyboard_instruments_path(content_dir));
+      piano_model::KeyboardInstruments::load(piano_model::keyboard_instruments_path(content_dir));
   if (!instruments.ok()) return instruments.error();
-  for (const piano::KeyboardInstrument& instrument : instruments->all()) {
+  for (const piano_model::KeyboardInstrument& instrument : instruments->all()) {
     if (instrument.model == "piano.glb") continue;
-    auto keyboard = piano::Keyboard::load(content_dir / "piano" / "keyboard.json",
-                                          instrument.lowest_key, instrument.highest_key,
-                                          instrument.octave_span_mm);
+    auto keyboard =
+        piano_model::Keyboard::load(content_dir / "piano" / "keyboard.json", instrument.lowest_key,
+                                    instrument.highest_key, instrument.octave_span_mm);
     if (!keyboard.ok()) return keyboard.error();
     PianoDimensions dims = piano;
     // An organ's console stands on its platform, the pedals at the floor.
     if (instrument.pedalboard) dims.key_top_above_floor_mm += instrument.pedalboard->seat_raise_mm;
     // A narrower octave's black keys are narrower by as much as its white keys.
     if (instrument.octave_span_mm > 0.0) {
-      auto piano_keys = piano::Keyboard::load(content_dir / "piano" / "keyboard.json");
+      auto piano_keys = piano_model::Keyboard::load(content_dir / "piano" / "keyboard.json");
       if (!piano_keys.ok()) return piano_keys.error();
       dims.black_key_width_mm *= keyboard->white_key_width_mm() / piano_keys->white_key_width_mm();
     }
@@ -79,7 +79,7 @@ Status generate_keyboards(const std::filesystem::path& content_dir, const PianoD
 
 Status generate_assets(const std::filesystem::path& content_dir,
                        const std::filesystem::path& out_dir) {
-  auto keyboard = piano::Keyboard::load(content_dir / "piano" / "keyboard.json");
+  auto keyboard = piano_model::Keyboard::load(content_dir / "piano" / "keyboard.json");
   if (!keyboard.ok()) return keyboard.error();
   auto dimensions = AssetDimensions::load(content_dir / "generator" / "dimensions.json");
   if (!dimensions.ok()) return dimensions.error();

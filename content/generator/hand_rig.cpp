@@ -92,10 +92,10 @@ Result<HandRigData> HandRigData::from_json(const nlohmann::json& document,
 }
 
 Result<HandRig> load_hand_rig(const std::filesystem::path& content_dir, components::HandSide side) {
-  auto keyboard = piano::Keyboard::load(content_dir / "piano" / "keyboard.json");
+  auto keyboard = piano_model::Keyboard::load(content_dir / "piano" / "keyboard.json");
   if (!keyboard.ok()) return keyboard.error();
-  auto hands = piano::HandModel::load(content_dir / "piano" / "hands.json", "",
-                                      keyboard->white_key_width_mm());
+  auto hands = piano_model::HandModel::load(content_dir / "piano" / "hands.json", "",
+                                            keyboard->white_key_width_mm());
   if (!hands.ok()) return hands.error();
   auto params = finger_motion::load_finger_motion_params(
       finger_motion::finger_motion_params_path(content_dir));
@@ -112,7 +112,7 @@ Result<HandRig> load_hand_rig(const std::filesystem::path& content_dir, componen
   // each finger's rest line in the middle of its reach range.
   const double scale = hands->scale();
   auto rest_x = [&](int finger) {
-    const piano::FingerRange& range = hands->range(hand, finger);
+    const piano_model::FingerRange& range = hands->range(hand, finger);
     return 0.5 * (range.lo_mm + range.hi_mm);
   };
   const finger_motion::FingerGeometry& middle = params->fingers[2];

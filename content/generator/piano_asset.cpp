@@ -12,9 +12,9 @@ namespace {
 
 // The pedals (pedal_geometry.hpp) hinged at the console's front `hinge_z_m`, on a frame on the
 // floor: `root` > `pedalboard` > `pedal_36`..`pedal_67`.
-void add_pedalboard(ModelBuilder& builder, const piano::Pedalboard& board, double hinge_z_m,
+void add_pedalboard(ModelBuilder& builder, const piano_model::Pedalboard& board, double hinge_z_m,
                     int root) {
-  using G = piano::PedalGeometry;
+  using G = piano_model::PedalGeometry;
   const int natural_material = builder.add_material({"pedal_natural", {0.55, 0.36, 0.2, 1.0}, 0.0, 0.4});
   const int sharp_material = builder.add_material({"pedal_sharp", {0.03, 0.025, 0.02, 1.0}, 0.0, 0.3});
   const int frame_material = builder.add_material({"pedal_frame", {0.2, 0.11, 0.05, 1.0}, 0.0, 0.5});
@@ -30,7 +30,7 @@ void add_pedalboard(ModelBuilder& builder, const piano::Pedalboard& board, doubl
   const int sharp_mesh = builder.add_mesh("pedal_sharp", sharp, sharp_material);
   // The frame under the pedals: a board on the floor, and the sharps' rail at the back.
   MeshData frame;
-  const double half = piano::pedalboard_half_width_m(board) + 0.02;
+  const double half = piano_model::pedalboard_half_width_m(board) + 0.02;
   const double top = G::kNaturalTopAboveFloor_m;
   add_box(frame, {f(-half), f(-top), 0.0f}, {f(half), f(-top + 0.012), f(G::kNaturalLength_m + 0.02)});
   add_box(frame, {f(-half), f(-top), 0.0f}, {f(half), f(-G::kPedalThickness_m - 0.002), 0.04f});
@@ -38,18 +38,19 @@ void add_pedalboard(ModelBuilder& builder, const piano::Pedalboard& board, doubl
   const int board_node = builder.add_node("pedalboard", frame_mesh, {0.0, top, hinge_z_m});
   builder.add_child(root, board_node);
   for (int key = board.lowest_key; key <= board.highest_key; ++key) {
-    const bool is_sharp = piano::pedal_is_sharp(key);
-    const int node = builder.add_node("pedal_" + std::to_string(key), is_sharp ? sharp_mesh : natural_mesh,
-                                      {piano::pedal_x_m(board, key), is_sharp ? G::kSharpRise_m : 0.0, 0.0});
+    const bool is_sharp = piano_model::pedal_is_sharp(key);
+    const int node = builder.add_node(
+        "pedal_" + std::to_string(key), is_sharp ? sharp_mesh : natural_mesh,
+        {piano_model::pedal_x_m(board, key), is_sharp ? G::kSharpRise_m : 0.0, 0.0});
     builder.add_child(board_node, node);
   }
 }
 
 }  // namespace
 
-tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensions& dims,
+tinygltf::Model build_piano(const piano_model::Keyboard& keyboard, const PianoDimensions& dims,
                             const std::array<double, 3>& case_color, const std::string& root_name,
-                            const piano::Pedalboard* pedalboard) {
+                            const piano_model::Pedalboard* pedalboard) {
   ModelBuilder builder;
   const int ivory = builder.add_material({"key_white", {0.86, 0.84, 0.80, 1.0}, 0.0, 0.35});
   const int ebony = builder.add_material({"key_black", {0.02, 0.02, 0.02, 1.0}, 0.0, 0.3});
@@ -82,7 +83,8 @@ tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensio
   const double case_half_mm =
       pedalboard == nullptr
           ? half_width_mm
-          : std::max(half_width_mm, 1000.0 * piano::pedalboard_half_width_m(*pedalboard) + 30.0);
+          : std::max(half_width_mm,
+                     1000.0 * piano_model::pedalboard_half_width_m(*pedalboard) + 30.0);
   const double outer = case_half_mm + dims.cheek_width_mm;
   const double key_top = dims.key_top_above_floor_mm;
   const double key_bottom = key_top - dims.white_key_height_mm;
@@ -99,9 +101,9 @@ tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensio
           {m(half_width_mm + 1), m(key_top + 90), m(back_of_keys - 1)});  // fallboard
   // An organ's pedals go in under the console, below a kick board.
   const double kick_mm =
-      pedalboard == nullptr ? 0.0 : 1000.0 * piano::PedalGeometry::kKickBoardHeight_m;
+      pedalboard == nullptr ? 0.0 : 1000.0 * piano_model::PedalGeometry::kKickBoardHeight_m;
   const double under_mm =
-      pedalboard == nullptr ? 0.0 : 1000.0 * piano::PedalGeometry::kUnderConsole_m;
+      pedalboard == nullptr ? 0.0 : 1000.0 * piano_model::PedalGeometry::kUnderConsole_m;
   add_box(body, {m(-outer), m(kick_mm), m(-dims.cabinet_depth_mm)},
           {m(outer), m(dims.cabinet_height_mm), m(cabinet_front)});  // cabinet
   if (pedalboard != nullptr) {
@@ -111,7 +113,7 @@ tinygltf::Model build_piano(const piano::Keyboard& keyboard, const PianoDimensio
       // The bench's platform, in front of the pedals' ends (the bench stands 600 mm in front of
       // the keys at the default spot, piano_plugin.cpp).
       const double front_of_pedals =
-          cabinet_front - under_mm + 1000.0 * piano::PedalGeometry::kNaturalLength_m;
+          cabinet_front - under_mm + 1000.0 * piano_model::PedalGeometry::kNaturalLength_m;
       add_box(body, {m(-450.0), 0.0f, m(front_of_pedals + 20.0)},
               {m(450.0), m(pedalboard->seat_raise_mm), m(1000.0)});
     }

@@ -48,7 +48,7 @@ constexpr const char* kStateKey = "keyboards";
 // its outline (in the pedal's frame: x across, y up from the top, z along from the hinge).
 void toes_on_pedals(stage::PoseChecker& c, const std::string& who, const PianoRig& rig,
                     double t_s) {
-  using piano::PedalGeometry;
+  using piano_model::PedalGeometry;
   for (int foot : {kRightFoot, kLeftFoot}) {
     const components::Foot* state = foot_of(c.world(), rig, foot);
     if (state == nullptr || state->press_depth < 0.999 || state->key < 0 || state->key > 127) {
@@ -59,8 +59,8 @@ void toes_on_pedals(stage::PoseChecker& c, const std::string& who, const PianoRi
     if (pedal < 0 || toe < 0) continue;
     const glm::vec3 local = glm::inverse(c.instrument_world()[static_cast<std::size_t>(pedal)]) *
                             glm::vec4(origin(c.body_world()[static_cast<std::size_t>(toe)]), 1.0f);
-    const double length = piano::pedal_is_sharp(state->key) ? PedalGeometry::kSharpLength_m
-                                                            : PedalGeometry::kNaturalLength_m;
+    const double length = piano_model::pedal_is_sharp(state->key) ? PedalGeometry::kSharpLength_m
+                                                                  : PedalGeometry::kNaturalLength_m;
     const double off_side =
         std::max(0.0, std::abs(static_cast<double>(local.x)) - PedalGeometry::kPedalWidth_m / 2.0);
     const double off_end =

@@ -20,7 +20,7 @@ void add_hands(const ecs::World& world, ecs::Entity performer, stage::PlayerView
   if (const auto* plan = world.try_get<PianistPlan>(performer)) {
     const piano::HandPlan* hands[2] = {&plan->fingering.right, &plan->fingering.left};
     for (std::size_t side = 0; side < 2; ++side) {
-      for (const piano::HandCorridor& c : hands[side]->corridors) {
+      for (const piano_model::HandCorridor& c : hands[side]->corridors) {
         out.hand_bands[side].push_back({c.start_s, c.end_s, c.lo_mm, c.hi_mm});
       }
     }

@@ -20,11 +20,11 @@ constexpr double kMostCut = 0.4;
 constexpr double kCutCost_per_s = 2.0;
 constexpr double kPi = 3.14159265358979323846;
 
-bool names_the_pedals(const music::Part& part, const piano::Pedalboard& board) {
+bool names_the_pedals(const music::Part& part, const piano_model::Pedalboard& board) {
   return music::longest_phrase(music::part_name_words(part.name), board.names) > 0;
 }
 
-int fold_onto_board(int key, const piano::Pedalboard& board) {
+int fold_onto_board(int key, const piano_model::Pedalboard& board) {
   while (key < board.lowest_key) key += 12;
   while (key > board.highest_key) key -= 12;
   return key;
@@ -41,16 +41,16 @@ double move_s(double distance_m) {
 }
 
 // A foot's resting key when it plays nothing: a natural a quarter of the board in from its end.
-int resting_key(const piano::Pedalboard& board, int foot) {
+int resting_key(const piano_model::Pedalboard& board, int foot) {
   const int span = board.highest_key - board.lowest_key;
   int key = foot == kLeftFoot ? board.lowest_key + span / 4 : board.lowest_key + (3 * span) / 4;
-  if (piano::pedal_is_sharp(key)) --key;
+  if (piano_model::pedal_is_sharp(key)) --key;
   return key;
 }
 
 // The part of lowest median pitch among two or more, if it is a line (at most 5 % of its notes
 // share an onset) whose median lies below a fifth over the split; else -1.
-int lowest_single_line_part(const music::Score& score, const piano::Pedalboard& board) {
+int lowest_single_line_part(const music::Score& score, const piano_model::Pedalboard& board) {
   std::vector<std::vector<const music::Note*>> parts;
   for (const music::Note& n : score.notes) {
     if (n.part < 0) continue;
@@ -86,7 +86,8 @@ int lowest_single_line_part(const music::Score& score, const piano::Pedalboard& 
 
 }  // namespace
 
-std::vector<bool> choose_pedal_notes(const music::Score& score, const piano::Pedalboard& board) {
+std::vector<bool> choose_pedal_notes(const music::Score& score,
+                                     const piano_model::Pedalboard& board) {
   std::vector<bool> pedal(score.notes.size(), false);
   // A part named as the pedals'.
   bool named = false;
@@ -136,7 +137,7 @@ std::vector<bool> choose_pedal_notes(const music::Score& score, const piano::Ped
 }
 
 FeetPlan plan_feet(const music::Score& score, const std::vector<bool>& pedal_notes,
-                   const piano::Pedalboard& board) {
+                   const piano_model::Pedalboard& board) {
   FeetPlan plan;
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < score.notes.size() && i < pedal_notes.size(); ++i) {
@@ -150,7 +151,7 @@ FeetPlan plan_feet(const music::Score& score, const std::vector<bool>& pedal_not
   for (int foot : {kRightFoot, kLeftFoot}) {
     plan.rest_key[static_cast<std::size_t>(foot)] = resting_key(board, foot);
     plan.rest_x_m[static_cast<std::size_t>(foot)] =
-        piano::pedal_x_m(board, plan.rest_key[static_cast<std::size_t>(foot)]);
+        piano_model::pedal_x_m(board, plan.rest_key[static_cast<std::size_t>(foot)]);
   }
   std::array<int, 2> last{-1, -1};  // each foot's latest press
   for (std::size_t index : order) {
@@ -161,7 +162,7 @@ FeetPlan plan_feet(const music::Score& score, const std::vector<bool>& pedal_not
     press.down_s = note.onset_s;
     press.up_s = std::max(note.offset_s, note.onset_s);
     press.note = index;
-    press.x_m = piano::pedal_x_m(board, press.key);
+    press.x_m = piano_model::pedal_x_m(board, press.key);
     // Each foot's cost: how far it goes, playing on the other's side, crossing the other foot,
     // and how much of the note it holds it must cut short to get there in time (up to
     // kMostCut of it; a foot that would cut more is taken only when both would).
@@ -178,7 +179,7 @@ FeetPlan plan_feet(const music::Score& score, const std::vector<bool>& pedal_not
       latest_up[f] = press.down_s - FootTiming::press_s - FootTiming::release_s -
                      (distance > 1e-6 ? move_s(distance) : 0.0);
       double cut_s = 0.0;
-      reaches[f] = piano::foot_reaches(board, foot == kRightFoot, press.key);
+      reaches[f] = piano_model::foot_reaches(board, foot == kRightFoot, press.key);
       can[f] = reaches[f];
       if (held != nullptr && held->up_s > latest_up[f]) {
         cut_s = held->up_s - latest_up[f];

@@ -18,7 +18,7 @@
 
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 struct Pedalboard;
 }
 
@@ -46,11 +46,12 @@ struct FeetPlan {
 };
 
 // Which of `score`'s notes the feet play (see the header's comment), by index.
-std::vector<bool> choose_pedal_notes(const music::Score& score, const piano::Pedalboard& board);
+std::vector<bool> choose_pedal_notes(const music::Score& score,
+                                     const piano_model::Pedalboard& board);
 
 // The marked notes on the board's keys (folded by octaves), each given a foot.
 FeetPlan plan_feet(const music::Score& score, const std::vector<bool>& pedal_notes,
-                   const piano::Pedalboard& board);
+                   const piano_model::Pedalboard& board);
 
 // A foot at one moment: over pedal `from_key`, moving toward `to_key` (the same when still),
 // pressing `from_key` by `depth` (0 up .. 1 down), the sole `lift_m` above the pedal's top.

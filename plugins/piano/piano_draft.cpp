@@ -56,11 +56,11 @@ bool names_another_instrument(const std::vector<std::string>& words) {
 
 // The keyboard instrument a part is for: by name first; by General MIDI program unless the name
 // says another instrument (files that state no program leave it at 0, "piano").
-const piano::KeyboardInstrument* keyboard_of(const music::Part& info,
-                                             const piano::KeyboardInstruments& instruments) {
+const piano_model::KeyboardInstrument* keyboard_of(
+    const music::Part& info, const piano_model::KeyboardInstruments& instruments) {
   if (info.percussion) return nullptr;
   const std::vector<std::string> words = music::part_name_words(info.name);
-  const piano::KeyboardInstrument* keyboard = instruments.recognise(words, -1);
+  const piano_model::KeyboardInstrument* keyboard = instruments.recognise(words, -1);
   if (keyboard == nullptr && names_a_keyboard(words)) keyboard = instruments.find("piano");
   if (keyboard == nullptr && !names_another_instrument(words)) {
     keyboard = instruments.recognise({}, info.program);
@@ -70,7 +70,7 @@ const piano::KeyboardInstrument* keyboard_of(const music::Part& info,
 
 // A keyboard player other than the pianist: the instrument and the parts they play.
 struct Keyboardist {
-  const piano::KeyboardInstrument* instrument = nullptr;
+  const piano_model::KeyboardInstrument* instrument = nullptr;
   std::vector<int> parts;
 };
 
@@ -82,9 +82,9 @@ double keyboardist_x(bool with_piano, std::size_t k) {
   return seat == 0 ? 0.0 : -kSpacing_m * static_cast<double>(seat);  // never -0.0 in the file
 }
 
-Result<piano::KeyboardInstruments> load_instruments() {
-  return piano::KeyboardInstruments::load(
-      piano::keyboard_instruments_path(piano::default_content_dir()));
+Result<piano_model::KeyboardInstruments> load_instruments() {
+  return piano_model::KeyboardInstruments::load(
+      piano_model::keyboard_instruments_path(piano_model::default_content_dir()));
 }
 
 ordered_json part_references(const music::Score& score, const std::vector<int>& parts) {
@@ -117,7 +117,7 @@ Result<stage::FamilyDraft> PianoPlugin::draft(const music::Score& score,
   // The other instruments, one player each, in the order their parts come.
   std::vector<Keyboardist> keyboardists;
   for (int part : parts) {
-    const piano::KeyboardInstrument* keyboard =
+    const piano_model::KeyboardInstrument* keyboard =
         keyboard_of(score.parts[static_cast<std::size_t>(part)], *instruments);
     if (keyboard == nullptr) continue;
     if (keyboard->id == "piano") {

@@ -123,8 +123,8 @@ glm::mat4 piano_root(const KeyboardPlayer& pianist) {
          glm::inverse(stage::placement_matrix(defaults.position_m, defaults.facing_deg));
 }
 
-Status bind_piano(stage::StageBuilder& builder, const piano::KeyboardInstrument& instrument,
-                  const piano::Keyboard& keyboard, const key_action::KeyAction& action,
+Status bind_piano(stage::StageBuilder& builder, const piano_model::KeyboardInstrument& instrument,
+                  const piano_model::Keyboard& keyboard, const key_action::KeyAction& action,
                   bool draw_hands, const glm::mat4& root, PianoRig& rig) {
   auto piano_model = builder.generated_model(instrument.model);
   if (!piano_model) return piano_model.error();
@@ -257,10 +257,10 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   PianistPlan& plan = *planned;
   for (const std::string& note : plan.plan_notes) builder.note(note);
   // The instrument, its keyboard and its key levers, for the keys' dip.
-  auto instruments =
-      piano::KeyboardInstruments::load(piano::keyboard_instruments_path(builder.content_dir()));
+  auto instruments = piano_model::KeyboardInstruments::load(
+      piano_model::keyboard_instruments_path(builder.content_dir()));
   if (!instruments) return instruments.error();
-  const piano::KeyboardInstrument* instrument = instruments->find(pianist.instrument);
+  const piano_model::KeyboardInstrument* instrument = instruments->find(pianist.instrument);
   if (instrument == nullptr) return Error{"no keyboard instrument \"" + pianist.instrument + "\""};
   auto model = piano::load_fingering_model("default", pianist.hand_size, builder.content_dir(),
                                            instrument);

@@ -20,7 +20,7 @@ namespace tutti::piano_family {
 namespace {
 
 // A key outside the instrument's compass, moved by octaves onto it.
-int fold_onto(int key, const piano::KeyboardInstrument& instrument) {
+int fold_onto(int key, const piano_model::KeyboardInstrument& instrument) {
   while (key < instrument.lowest_key) key += 12;
   while (key > instrument.highest_key) key -= 12;
   return key;
@@ -52,7 +52,7 @@ std::string pianist_plan_key(const scene::Scene& scene, const KeyboardPlayer& pi
 // The editor's pins become the planner's pins (Note::finger, plan_score's pins_from_marks). A
 // pin names its note by key and onset; one that matches no note is an error, not ignored.
 Status apply_finger_pins(const scene::Scene& scene, const KeyboardPlayer& pianist,
-                         const piano::KeyboardInstrument& instrument, music::Score& score) {
+                         const piano_model::KeyboardInstrument& instrument, music::Score& score) {
   constexpr double kSameOnset_s = 1e-3;
   for (std::size_t i = 0; i < pianist.pins.size(); ++i) {
     const FingerPin& pin = pianist.pins[i];
@@ -82,8 +82,8 @@ Status apply_finger_pins(const scene::Scene& scene, const KeyboardPlayer& pianis
 Result<key_action::HumanePerformance> perform_in_style(
     const scene::Scene& scene, const KeyboardPlayer& pianist, const music::Score& score,
     const piano_performance::PianoPerformancePlan& paths, const piano::FingeringModel& model,
-    const piano::KeyboardInstrument& instrument, const finger_motion::FingerMotionParams& params,
-    const std::filesystem::path& content_dir) {
+    const piano_model::KeyboardInstrument& instrument,
+    const finger_motion::FingerMotionParams& params, const std::filesystem::path& content_dir) {
   auto styles = key_action::load_styles(key_action::styles_path(content_dir));
   if (!styles) return styles.error();
   auto style = styles->find(pianist.style.empty() ? "precise" : pianist.style);
@@ -153,9 +153,9 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
   }
   // The instrument's compass: notes beyond it are played an octave (or more) in.
   auto instruments =
-      piano::KeyboardInstruments::load(piano::keyboard_instruments_path(content_dir));
+      piano_model::KeyboardInstruments::load(piano_model::keyboard_instruments_path(content_dir));
   if (!instruments) return instruments.error();
-  const piano::KeyboardInstrument* instrument = instruments->find(pianist.instrument);
+  const piano_model::KeyboardInstrument* instrument = instruments->find(pianist.instrument);
   if (instrument == nullptr) {
     return Error{scene.source + ": " + pianist.pointer + "/instrument: no keyboard instrument \"" +
                  pianist.instrument + "\""};

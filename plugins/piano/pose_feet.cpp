@@ -15,7 +15,7 @@
 namespace tutti::piano_family {
 namespace {
 
-using piano::PedalGeometry;
+using piano_model::PedalGeometry;
 
 // The sole pitched toes-down, as an organist plays with the toe (the heel off the pedal).
 constexpr float kToesDownRad = 0.35f;
@@ -34,8 +34,8 @@ Leg leg_of(const stage::BodyNodes& n, int foot) {
 glm::vec3 toe_point(const PianoRig& rig, const std::vector<glm::mat4>& instrument_world, int key) {
   const int node = key >= 0 && key < 128 ? rig.pedal_nodes[static_cast<std::size_t>(key)] : -1;
   if (node < 0) return glm::vec3(0.0f);
-  const float along = static_cast<float>(piano::pedal_is_sharp(key) ? PedalGeometry::kSharpToe_m
-                                                                    : PedalGeometry::kNaturalToe_m);
+  const float along = static_cast<float>(
+      piano_model::pedal_is_sharp(key) ? PedalGeometry::kSharpToe_m : PedalGeometry::kNaturalToe_m);
   return glm::vec3(instrument_world[static_cast<std::size_t>(node)] * glm::vec4(0.0f, 0.0f, along, 1.0f));
 }
 

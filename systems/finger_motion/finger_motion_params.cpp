@@ -11,7 +11,7 @@
 namespace tutti::finger_motion {
 namespace {
 
-using piano::JsonReader;
+using piano_model::JsonReader;
 
 // Reads `key` into `out`, requiring out > 0 (or >= 0 when `allow_zero`).
 Status read_positive(const JsonReader& reader, const nlohmann::json& object,
@@ -220,7 +220,7 @@ Result<FingerMotionParams> finger_motion_params_from_json(const nlohmann::json& 
 }
 
 Result<FingerMotionParams> load_finger_motion_params(const std::filesystem::path& path) {
-  auto document = piano::read_json_file(path);
+  auto document = piano_model::read_json_file(path);
   if (!document) return document.error();
   return finger_motion_params_from_json(*document, path.filename().string());
 }

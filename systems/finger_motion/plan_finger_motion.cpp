@@ -32,8 +32,8 @@ void precompute_for_evaluate(KeyContact& c, const StrokeTiming& timing) {
   c.release_decay_scale = std::exp((c.release_end_s - c.offset_s) / timing.relax_time_constant_s);
 }
 
-// How far past the ends of its range (piano::FingerRange) a finger still holds a key as the hand
-// moves on. Half a white key (12 mm) left pads up to 12 mm beside their keys on 11 third-party
+// How far past the ends of its range (piano_model::FingerRange) a finger still holds a key as the
+// hand moves on. Half a white key (12 mm) left pads up to 12 mm beside their keys on 11 third-party
 // pieces; 0, 2 and 4 mm all put them on: 4 keeps a little of the spread's give.
 constexpr double kHoldBeyondRangeMm = 4.0;
 constexpr double kDepartureStepS = 0.005;
@@ -41,7 +41,7 @@ constexpr double kDepartureStepS = 0.005;
 // The first time in [onset, offset] at which the hand has moved so far that the key at key_x
 // lies outside the finger's reach: there the finger lets the key go (a pianist leaving a held
 // note for the next position, the pedal or nothing holding it), else `offset_s`.
-double hand_departure_s(const KeyContact& c, const piano::FingerRange& range,
+double hand_departure_s(const KeyContact& c, const piano_model::FingerRange& range,
                         const spline_motion::HandPath& path) {
   if (path.empty()) return c.offset_s;
   // A key the hand already struck from outside the range (a stretch the path allowed) is let
@@ -61,7 +61,7 @@ double hand_departure_s(const KeyContact& c, const piano::FingerRange& range,
 // Sorts, merges same-onset contacts and trims offsets: to the same finger's next stroke and to
 // the hand's departure. `preset_strokes`: each contact's stroke_start_s is already the one
 // wanted (a NoteStroke's).
-void order_contacts(std::vector<KeyContact>& contacts, const piano::FingerRange& range,
+void order_contacts(std::vector<KeyContact>& contacts, const piano_model::FingerRange& range,
                     const spline_motion::HandPath& path, const StrokeTiming& timing,
                     bool preset_strokes) {
   std::sort(contacts.begin(), contacts.end(), [](const KeyContact& a, const KeyContact& b) {
@@ -232,7 +232,7 @@ void settle_key_beds(HandFingerPlan& side, const FingerMotionPlan& plan,
 Result<FingerMotionPlan> plan_finger_motion(
     const music::Score& score, const piano::ScorePlan& score_plan,
     const spline_motion::HandPath& right_path, const spline_motion::HandPath& left_path,
-    const piano::Keyboard& keyboard, const piano::HandModel& hand_model,
+    const piano_model::Keyboard& keyboard, const piano_model::HandModel& hand_model,
     const FingerMotionParams& params, std::span<const NoteStroke> strokes) {
   const std::size_t count = score.notes.size();
   if (!strokes.empty() && strokes.size() != count) {
@@ -258,8 +258,8 @@ Result<FingerMotionPlan> plan_finger_motion(
     plan.white_shape[f] = chain_shape(g, g.white_bend_rad);
     plan.black_shape[f] = chain_shape(g, g.black_bend_rad);
     const int finger = static_cast<int>(f) + 1;
-    const piano::FingerRange right = hand_model.range(music::Hand::right, finger);
-    const piano::FingerRange left = hand_model.range(music::Hand::left, finger);
+    const piano_model::FingerRange right = hand_model.range(music::Hand::right, finger);
+    const piano_model::FingerRange left = hand_model.range(music::Hand::left, finger);
     plan.right.rest_offset_mm[f] = 0.5 * (right.lo_mm + right.hi_mm);
     plan.left.rest_offset_mm[f] = 0.5 * (left.lo_mm + left.hi_mm);
   }
@@ -326,7 +326,7 @@ Result<FingerMotionPlan> plan_finger_motion(
 }
 
 std::array<FingerGeometry, 5> scaled_geometry(const FingerMotionParams& params,
-                                              const piano::HandModel& hand_model) {
+                                              const piano_model::HandModel& hand_model) {
   const double scale = hand_model.scale();
   std::array<FingerGeometry, 5> geometry = params.fingers;
   for (FingerGeometry& g : geometry) {

@@ -58,12 +58,12 @@ struct NoteStroke {
 Result<FingerMotionPlan> plan_finger_motion(
     const music::Score& score, const piano::ScorePlan& score_plan,
     const spline_motion::HandPath& right_path, const spline_motion::HandPath& left_path,
-    const piano::Keyboard& keyboard, const piano::HandModel& hand_model,
+    const piano_model::Keyboard& keyboard, const piano_model::HandModel& hand_model,
     const FingerMotionParams& params, std::span<const NoteStroke> strokes = {});
 
 // The finger geometry plan_finger_motion uses: params' lengths and root heights scaled by the
 // hand model.
 std::array<FingerGeometry, 5> scaled_geometry(const FingerMotionParams& params,
-                                              const piano::HandModel& hand_model);
+                                              const piano_model::HandModel& hand_model);
 
 }  // namespace tutti::finger_motion

@@ -5,6 +5,10 @@
 #include <cmath>
 
 namespace tutti::piano {
+
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::FingerRange;
+
 namespace {
 
 constexpr double kSameOnsetS = 1e-4;  // notes struck together

@@ -7,6 +7,11 @@
 #include <tutti/piano_model/json_document.hpp>
 
 namespace tutti::piano {
+
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::JsonReader;
+using piano_model::read_json_file;
+
 namespace {
 
 // Reads optional keys of one section into fields; absent keys keep their current value.

@@ -8,6 +8,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 Result<HandPlan> plan_hand_exact(std::span<const PlanNote> notes, music::Hand side,
                                  const FingeringModel& model,
                                  std::span<const HandCorridor> other_hand) {

@@ -18,6 +18,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 // Errors: invalid input notes (see hand_plan.hpp). An empty input gives an empty plan.
 // `other_hand`: the other hand's corridors, planned first (other_hand_cost.hpp); empty = alone.
 Result<HandPlan> plan_hand_exact(std::span<const PlanNote> notes, music::Hand side,

@@ -5,6 +5,11 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandModel;
+using piano_model::Keyboard;
+using piano_model::KeyboardInstrument;
+
 Result<FingeringModel> load_fingering_model(std::string_view weights, std::string_view hand_preset,
                                             const std::filesystem::path& content_dir,
                                             const KeyboardInstrument* instrument) {

@@ -16,6 +16,12 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::default_content_dir;
+using piano_model::HandModel;
+using piano_model::Keyboard;
+using piano_model::KeyboardInstrument;
+
 struct FingeringModel {
   Keyboard keyboard;
   HandModel hand;

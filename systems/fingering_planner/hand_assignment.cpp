@@ -8,6 +8,10 @@
 #include <string>
 
 namespace tutti::piano {
+
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::Keyboard;
+
 namespace {
 
 music::Hand hand_from_name(const std::string& name) {

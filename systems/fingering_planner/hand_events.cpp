@@ -13,6 +13,12 @@
 #include <tutti/music/pitch.hpp>
 
 namespace tutti::piano {
+
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::FingerRange;
+using piano_model::HandCorridor;
+using piano_model::Keyboard;
+
 namespace {
 
 // Finger (1..5) of the i-th lowest slot for a mask of fingers, per hand side.

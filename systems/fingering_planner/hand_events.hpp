@@ -22,6 +22,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 struct HandSlot {
   int lo_key = 0;  // lowest and highest key sharing this finger (equal unless > 5 keys)
   int hi_key = 0;

@@ -18,6 +18,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridors;
+
 struct PlanNote {
   int key = 60;  // MIDI key
   double onset_s = 0.0;

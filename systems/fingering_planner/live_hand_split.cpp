@@ -6,6 +6,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::Keyboard;
+
 LiveHandSplit::LiveHandSplit(const FingeringModel& model)
     : model_(&model),
       reach_mm_(model.hand.reach_mm()) {}

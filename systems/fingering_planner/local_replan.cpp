@@ -9,6 +9,10 @@
 #include <tutti/fingering_planner/hand_events.hpp>
 
 namespace tutti::piano {
+
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 namespace {
 
 // Events agreeing with the previous plan at each edge of the window before it is accepted.

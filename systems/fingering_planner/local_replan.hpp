@@ -18,6 +18,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 struct LocalReplan {
   HandPlan plan;
   int searched_first_event = 0;  // the window searched again (events, inclusive); empty when

@@ -9,6 +9,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 Result<HandPlan> plan_hand_lookahead(std::span<const PlanNote> notes, music::Hand side,
                                      const FingeringModel& model, int lookahead,
                                      std::span<const HandCorridor> other_hand) {

@@ -14,6 +14,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 // `lookahead` >= 1 (1 = pure greedy). Errors: invalid notes, lookahead < 1.
 Result<HandPlan> plan_hand_lookahead(std::span<const PlanNote> notes, music::Hand side,
                                      const FingeringModel& model, int lookahead,

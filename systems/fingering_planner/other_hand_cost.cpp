@@ -5,6 +5,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 void add_other_hand_cost(PreparedHand& hand, std::span<const HandCorridor> other_hand,
                          const FingeringModel& model) {
   const CostWeights& w = model.weights;

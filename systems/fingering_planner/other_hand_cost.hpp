@@ -18,6 +18,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 // Adds the cost to every candidate's strike cost. `other_hand`: the other hand's corridors
 // (sorted by time, as planned); empty or a zero weight = nothing changes.
 void add_other_hand_cost(PreparedHand& hand, std::span<const HandCorridor> other_hand,

@@ -24,6 +24,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::HandCorridor;
+
 enum class PlannerMode { exact, lookahead };
 
 struct PlanOptions {

@@ -8,6 +8,10 @@
 #include <tutti/music/pitch.hpp>
 
 namespace tutti::piano {
+
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::FingerRange;
+
 namespace {
 
 // Pair term between a key struck by f0 at the previous event and one struck by f1 now

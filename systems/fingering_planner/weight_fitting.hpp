@@ -25,6 +25,9 @@
 
 namespace tutti::piano {
 
+// The piano model's names this planner uses (systems/piano_model).
+using piano_model::default_content_dir;
+
 // Agreement of a plan with a score's marks (notes with Note::finger 1..5), per hand.
 struct MatchStats {
   int right_marked = 0;

@@ -31,8 +31,8 @@ struct HumaneInputs {
   const piano::ScorePlan* fingering = nullptr;
   const spline_motion::HandPath* right_path = nullptr;
   const spline_motion::HandPath* left_path = nullptr;
-  const piano::Keyboard* keyboard = nullptr;
-  const piano::HandModel* hand_model = nullptr;
+  const piano_model::Keyboard* keyboard = nullptr;
+  const piano_model::HandModel* hand_model = nullptr;
   const finger_motion::FingerMotionParams* params = nullptr;  // content's, before the style
   const KeyAction* action = nullptr;
   const PerformanceStyle* style = nullptr;

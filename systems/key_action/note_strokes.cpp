@@ -57,7 +57,8 @@ ContactGeometry contact_geometry(const finger_motion::FingerGeometry& g, bool bl
 }  // namespace
 
 NoteStrokes plan_note_strokes(const music::Score& score, const piano::ScorePlan& fingering,
-                              const piano::Keyboard& keyboard, const piano::HandModel& hand_model,
+                              const piano_model::Keyboard& keyboard,
+                              const piano_model::HandModel& hand_model,
                               const finger_motion::FingerMotionParams& params,
                               const KeyAction& action, const PerformanceStyle& style,
                               std::uint64_t seed) {

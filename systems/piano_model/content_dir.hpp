@@ -4,6 +4,6 @@
 
 #include <tutti/content/content_dir.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 using content::default_content_dir;
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 
 struct HandCorridor {
   double start_s = 0.0;  // first key of this event goes down
@@ -23,4 +23,4 @@ struct HandCorridor {
 // Sorted by start_s; consecutive corridors do not overlap in time (end_s <= next start_s).
 using HandCorridors = std::vector<HandCorridor>;
 
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

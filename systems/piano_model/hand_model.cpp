@@ -5,7 +5,7 @@
 
 #include <tutti/piano_model/json_document.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 
 Result<HandModel> HandModel::load(const std::filesystem::path& path, std::string_view preset,
                                   double white_key_width_mm) {
@@ -78,4 +78,4 @@ Result<HandModel> HandModel::from_json(const nlohmann::json& document, const std
   return model;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

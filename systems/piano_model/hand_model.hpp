@@ -15,7 +15,7 @@
 #include <tutti/core/result.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 
 struct FingerRange {
   double lo_mm = 0.0;  // lowest offset of the fingertip from the reference point
@@ -49,4 +49,4 @@ class HandModel {
   double scale_ = 1.0;
 };
 
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -5,7 +5,7 @@
 
 #include <tutti/content/json_reader.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 using content::JsonReader;
 using content::read_json_file;
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -6,7 +6,7 @@
 #include <tutti/music/pitch.hpp>
 #include <tutti/piano_model/json_document.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 namespace {
 
 constexpr std::array<const char*, 12> kPitchClassNames = {"C",  "C#", "D",  "D#", "E",  "F",
@@ -114,4 +114,4 @@ Result<Keyboard> Keyboard::from_json(const nlohmann::json& document, const std::
   return keyboard;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -12,7 +12,7 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 
 class Keyboard {
  public:
@@ -41,4 +41,4 @@ class Keyboard {
   double white_key_width_mm_ = 23.5;
 };
 
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -8,7 +8,7 @@
 #include <tutti/music/part_names.hpp>
 #include <tutti/piano_model/json_document.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 namespace {
 
 Result<int> midi_key(const JsonReader& reader, const nlohmann::json& object,
@@ -239,4 +239,4 @@ const nlohmann::json& KeyboardInstrument::touch_or_piano() const {
   return touch ? *touch : piano_touch;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -19,7 +19,7 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 
 struct KeyboardCase {
   double cheek_width_mm = 60.0;
@@ -84,4 +84,4 @@ class KeyboardInstruments {
 // content_dir / "piano" / "instruments.json".
 std::filesystem::path keyboard_instruments_path(const std::filesystem::path& content_dir);
 
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -10,7 +10,7 @@
 
 #include <tutti/piano_model/keyboard_instruments.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 
 struct PedalGeometry {
   static constexpr double kNaturalTopAboveFloor_m = 0.07;
@@ -69,4 +69,4 @@ inline double pedalboard_half_width_m(const Pedalboard& board) {
   return pedal_x_m(board, board.highest_key) + PedalGeometry::kPedalWidth_m / 2.0;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -10,16 +10,16 @@ namespace tutti::piano_performance {
 namespace {
 
 struct Item {
-  piano::HandCorridor c;
+  piano_model::HandCorridor c;
   std::size_t origin = 0;
 };
 
-bool finite(const piano::HandCorridor& c) {
+bool finite(const piano_model::HandCorridor& c) {
   return std::isfinite(c.start_s) && std::isfinite(c.end_s) && std::isfinite(c.lo_mm) &&
          std::isfinite(c.hi_mm);
 }
 
-bool disjoint(const piano::HandCorridor& a, const piano::HandCorridor& b) {
+bool disjoint(const piano_model::HandCorridor& a, const piano_model::HandCorridor& b) {
   return a.hi_mm < b.lo_mm || b.hi_mm < a.lo_mm;
 }
 
@@ -31,11 +31,12 @@ std::string line(const char* format, Args... args) {
 }
 
 // Kind 2: drop non-finite, swap reversed pairs, sort, cut overlaps. Returns the items left.
-std::vector<Item> sanitize(std::span<const piano::HandCorridor> corridors, CorridorRepair& r) {
+std::vector<Item> sanitize(std::span<const piano_model::HandCorridor> corridors,
+                           CorridorRepair& r) {
   std::vector<Item> items;
   items.reserve(corridors.size());
   for (std::size_t i = 0; i < corridors.size(); ++i) {
-    piano::HandCorridor c = corridors[i];
+    piano_model::HandCorridor c = corridors[i];
     if (!finite(c)) {
       ++r.dropped;
       r.notes.push_back(line("corridor %zu dropped: non-finite value", i));
@@ -56,7 +57,7 @@ std::vector<Item> sanitize(std::span<const piano::HandCorridor> corridors, Corri
     r.notes.push_back("corridors sorted by start time");
   }
   for (std::size_t k = 1; k < items.size(); ++k) {
-    piano::HandCorridor& prev = items[k - 1].c;
+    piano_model::HandCorridor& prev = items[k - 1].c;
     if (prev.end_s > items[k].c.start_s) {
       prev.end_s = std::max(prev.start_s, items[k].c.start_s);
       ++r.sanitized;
@@ -72,12 +73,12 @@ void open_jumps(std::vector<Item>& items, const RepairOptions& options, Corridor
   const std::size_t n = items.size();
   std::vector<double> trim_start(n, 0.0);
   std::vector<double> trim_end(n, 0.0);
-  const auto trim_of = [&](const piano::HandCorridor& c) {
+  const auto trim_of = [&](const piano_model::HandCorridor& c) {
     return std::min(options.max_trim_s, options.max_trim_fraction * (c.end_s - c.start_s));
   };
   for (std::size_t k = 0; k + 1 < n; ++k) {
-    const piano::HandCorridor& a = items[k].c;
-    const piano::HandCorridor& b = items[k + 1].c;
+    const piano_model::HandCorridor& a = items[k].c;
+    const piano_model::HandCorridor& b = items[k + 1].c;
     if (a.end_s != b.start_s || !disjoint(a, b)) continue;
     const double ta = trim_of(a);
     const double tb = trim_of(b);
@@ -91,7 +92,7 @@ void open_jumps(std::vector<Item>& items, const RepairOptions& options, Corridor
              items[k].origin, a.end_s, distance, 1000.0 * (ta + tb)));
   }
   for (std::size_t k = 0; k < n; ++k) {
-    piano::HandCorridor& c = items[k].c;
+    piano_model::HandCorridor& c = items[k].c;
     const double start = c.start_s + trim_start[k];
     c.end_s = std::max(start, c.end_s - trim_end[k]);  // rounding must not reverse it
     c.start_s = start;
@@ -118,7 +119,7 @@ std::vector<Item> drop_unopenable(std::vector<Item> items, CorridorRepair& r) {
   kept.reserve(items.size());
   for (const Item& item : items) {
     const PortalTail saved = tail;
-    const piano::HandCorridor& c = item.c;
+    const piano_model::HandCorridor& c = item.c;
     if (add(c.start_s, c.lo_mm, c.hi_mm) && add(c.end_s, c.lo_mm, c.hi_mm)) {
       kept.push_back(item);
       continue;
@@ -133,7 +134,7 @@ std::vector<Item> drop_unopenable(std::vector<Item> items, CorridorRepair& r) {
 
 }  // namespace
 
-CorridorRepair repair_corridors(std::span<const piano::HandCorridor> corridors,
+CorridorRepair repair_corridors(std::span<const piano_model::HandCorridor> corridors,
                                 const RepairOptions& options) {
   CorridorRepair r;
   std::vector<Item> items = sanitize(corridors, r);

@@ -34,7 +34,7 @@ struct RepairOptions {
 };
 
 struct CorridorRepair {
-  piano::HandCorridors corridors;   // what the path is planned through
+  piano_model::HandCorridors corridors;  // what the path is planned through
   std::vector<std::size_t> origin;  // per repaired corridor: its index in the input
   int jumps = 0;                    // transition gaps opened (kind 1)
   int sanitized = 0;                // corridors edited for a contract violation (kind 2)
@@ -44,7 +44,7 @@ struct CorridorRepair {
   int total() const { return jumps + sanitized + dropped; }
 };
 
-CorridorRepair repair_corridors(std::span<const piano::HandCorridor> corridors,
+CorridorRepair repair_corridors(std::span<const piano_model::HandCorridor> corridors,
                                 const RepairOptions& options = {});
 
 }  // namespace tutti::piano_performance

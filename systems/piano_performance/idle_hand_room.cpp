@@ -8,9 +8,9 @@
 namespace tutti::piano_performance {
 namespace {
 
-bool sorted_and_well_formed(std::span<const piano::HandCorridor> corridors) {
+bool sorted_and_well_formed(std::span<const piano_model::HandCorridor> corridors) {
   for (std::size_t i = 0; i < corridors.size(); ++i) {
-    const piano::HandCorridor& c = corridors[i];
+    const piano_model::HandCorridor& c = corridors[i];
     if (!std::isfinite(c.start_s) || !std::isfinite(c.end_s) || !std::isfinite(c.lo_mm) ||
         !std::isfinite(c.hi_mm) || c.start_s > c.end_s || c.lo_mm > c.hi_mm) {
       return false;
@@ -22,11 +22,11 @@ bool sorted_and_well_formed(std::span<const piano::HandCorridor> corridors) {
 
 }  // namespace
 
-piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corridors,
-                                    std::span<const piano::HandCorridor> other_corridors,
-                                    const spline_motion::HandPath& other, music::Hand side,
-                                    const IdleRoomOptions& options) {
-  piano::HandCorridors out(corridors.begin(), corridors.end());
+piano_model::HandCorridors with_idle_room(
+    std::span<const piano_model::HandCorridor> corridors,
+    std::span<const piano_model::HandCorridor> other_corridors,
+    const spline_motion::HandPath& other, music::Hand side, const IdleRoomOptions& options) {
+  piano_model::HandCorridors out(corridors.begin(), corridors.end());
   if (other.empty() || !(options.step_s > 0.0) || !(options.leave_s >= 0.0) ||
       !std::isfinite(options.thumb_mm) || !std::isfinite(options.clearance_mm) ||
       corridors.empty() || !sorted_and_well_formed(corridors)) {
@@ -40,8 +40,9 @@ piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corrido
   // outermost key on that side while it plays, if further.
   const auto other_thumb_side = [&](double t) {
     const double x = spline_motion::evaluate(other, t).x_mm;
-    auto it = std::partition_point(other_corridors.begin(), other_corridors.end(),
-                                   [&](const piano::HandCorridor& c) { return c.start_s <= t; });
+    auto it =
+        std::partition_point(other_corridors.begin(), other_corridors.end(),
+                             [&](const piano_model::HandCorridor& c) { return c.start_s <= t; });
     const bool playing = it != other_corridors.begin() && std::prev(it)->end_s >= t &&
                          std::prev(it)->keys_known;
     if (below) {  // the other hand is the right one: its low side
@@ -52,7 +53,7 @@ piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corrido
     return playing ? std::max(side_x, std::prev(it)->keys_hi_mm) : side_x;
   };
   const double room_mm = options.thumb_mm + options.clearance_mm;
-  const auto crossed = [&](const piano::HandCorridor& c, double t) {
+  const auto crossed = [&](const piano_model::HandCorridor& c, double t) {
     const double x = spline_motion::evaluate(other, t).x_mm;
     return below ? c.lo_mm > x : c.hi_mm < x;
   };
@@ -69,7 +70,7 @@ piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corrido
         const double x = other_thumb_side(t);
         nearest = below ? std::min(nearest, x) : std::max(nearest, x);
       }
-      piano::HandCorridor room{t0, t1, 0.0, 0.0};
+      piano_model::HandCorridor room{t0, t1, 0.0, 0.0};
       if (below) {
         room.hi_mm = nearest - room_mm;
         room.lo_mm = room.hi_mm - kOpenMm;

@@ -32,9 +32,9 @@ struct IdleRoomOptions {
 // `corridors`: this hand's, sorted and well formed (as the fingering planner gives them; others
 // are returned unchanged). `other_corridors` and `other`: the other hand's corridors and path
 // (an empty path = nothing added). `side`: this hand.
-piano::HandCorridors with_idle_room(std::span<const piano::HandCorridor> corridors,
-                                    std::span<const piano::HandCorridor> other_corridors,
-                                    const spline_motion::HandPath& other, music::Hand side,
-                                    const IdleRoomOptions& options = {});
+piano_model::HandCorridors with_idle_room(
+    std::span<const piano_model::HandCorridor> corridors,
+    std::span<const piano_model::HandCorridor> other_corridors,
+    const spline_motion::HandPath& other, music::Hand side, const IdleRoomOptions& options = {});
 
 }  // namespace tutti::piano_performance

@@ -14,10 +14,10 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 
 // The originals minus those no check can mean anything for (non-finite or reversed: the repair
 // dropped or rewrote them, and says so).
-piano::HandCorridors well_formed(const piano::HandCorridors& corridors) {
-  piano::HandCorridors out;
+piano_model::HandCorridors well_formed(const piano_model::HandCorridors& corridors) {
+  piano_model::HandCorridors out;
   out.reserve(corridors.size());
-  for (const piano::HandCorridor& c : corridors) {
+  for (const piano_model::HandCorridor& c : corridors) {
     if (std::isfinite(c.start_s) && std::isfinite(c.end_s) && std::isfinite(c.lo_mm) &&
         std::isfinite(c.hi_mm) && c.start_s <= c.end_s && c.lo_mm <= c.hi_mm) {
       out.push_back(c);
@@ -28,9 +28,9 @@ piano::HandCorridors well_formed(const piano::HandCorridors& corridors) {
 
 }  // namespace
 
-spline_motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
-                                  const PerformanceOptions& options, HandReport& report,
-                                  const OtherHand& other_hand) {
+spline_motion::HandPath plan_hand_motion(const piano_model::HandCorridors& corridors,
+                                         const PerformanceOptions& options, HandReport& report,
+                                         const OtherHand& other_hand) {
   const auto start = std::chrono::steady_clock::now();
   report.events = corridors.size();
   report.repair = repair_corridors(

@@ -70,15 +70,15 @@ PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
 
 // The other hand, for one hand's path: its corridors and its path (null = plan the hand alone).
 struct OtherHand {
-  std::span<const piano::HandCorridor> corridors;
+  std::span<const piano_model::HandCorridor> corridors;
   const spline_motion::HandPath* path = nullptr;
 };
 
 // One hand's repair + path + reports, from its corridors (exposed for tests and tools). With
 // the other hand's path, this hand's idle gaps keep out of its way (idle_hand_room.hpp,
 // options.idle_room; report.hand says which hand this is).
-spline_motion::HandPath plan_hand_motion(const piano::HandCorridors& corridors,
-                                  const PerformanceOptions& options, HandReport& report,
-                                  const OtherHand& other_hand = {});
+spline_motion::HandPath plan_hand_motion(const piano_model::HandCorridors& corridors,
+                                         const PerformanceOptions& options, HandReport& report,
+                                         const OtherHand& other_hand = {});
 
 }  // namespace tutti::piano_performance

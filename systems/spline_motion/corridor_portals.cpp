@@ -24,9 +24,9 @@ std::string num(double v) {
 
 }  // namespace
 
-Status validate_corridors(std::span<const piano::HandCorridor> corridors) {
+Status validate_corridors(std::span<const piano_model::HandCorridor> corridors) {
   for (std::size_t i = 0; i < corridors.size(); ++i) {
-    const piano::HandCorridor& c = corridors[i];
+    const piano_model::HandCorridor& c = corridors[i];
     if (!std::isfinite(c.start_s) || !std::isfinite(c.end_s) || !std::isfinite(c.lo_mm) ||
         !std::isfinite(c.hi_mm)) {
       return corridor_error(i, "non-finite value (start_s " + num(c.start_s) + ", end_s " +
@@ -48,11 +48,11 @@ Status validate_corridors(std::span<const piano::HandCorridor> corridors) {
   return Status::success();
 }
 
-Result<std::vector<Portal>> corridor_portals(std::span<const piano::HandCorridor> corridors) {
+Result<std::vector<Portal>> corridor_portals(std::span<const piano_model::HandCorridor> corridors) {
   if (Status status = validate_corridors(corridors); !status) return status.error();
   std::vector<Portal> portals;
   portals.reserve(2 * corridors.size());
-  const auto add = [&](double t, const piano::HandCorridor& c, std::size_t index) -> Status {
+  const auto add = [&](double t, const piano_model::HandCorridor& c, std::size_t index) -> Status {
     if (!portals.empty() && portals.back().t_s == t) {
       Portal& p = portals.back();
       const double lo = std::max(p.lo_mm, c.lo_mm);

@@ -26,14 +26,14 @@ struct Portal {
   std::size_t corridor = 0;  // index of the (first) corridor that produced this portal
 };
 
-// Checks the contract of piano::HandCorridors: every number finite, start_s <= end_s,
+// Checks the contract of piano_model::HandCorridors: every number finite, start_s <= end_s,
 // lo_mm <= hi_mm, end_s <= next start_s. The error message names the offending index, e.g.
 // "hand corridor 7: lo_mm 412.5 > hi_mm 400".
-Status validate_corridors(std::span<const piano::HandCorridor> corridors);
+Status validate_corridors(std::span<const piano_model::HandCorridor> corridors);
 
 // Validates, then returns the portals with strictly increasing t_s (at most 2 per corridor).
 // Fails when corridors meeting at one instant have disjoint ranges (the hand would have to
 // jump) — the message names both corridors, the time and the ranges.
-Result<std::vector<Portal>> corridor_portals(std::span<const piano::HandCorridor> corridors);
+Result<std::vector<Portal>> corridor_portals(std::span<const piano_model::HandCorridor> corridors);
 
 }  // namespace tutti::spline_motion

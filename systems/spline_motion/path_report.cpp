@@ -47,12 +47,13 @@ void piece_extent(const HandPath& path, double a, double b, Extent& e) {
 
 }  // namespace
 
-PathReport corridor_violations(const HandPath& path, std::span<const piano::HandCorridor> corridors,
+PathReport corridor_violations(const HandPath& path,
+                               std::span<const piano_model::HandCorridor> corridors,
                                const ReportOptions& options) {
   PathReport report;
   const int samples = std::max(options.samples_per_corridor, 2);
   for (std::size_t i = 0; i < corridors.size(); ++i) {
-    const piano::HandCorridor& c = corridors[i];
+    const piano_model::HandCorridor& c = corridors[i];
     Extent e;
     for (int s = 0; s < samples; ++s) {
       const double t = c.start_s + (c.end_s - c.start_s) * s / (samples - 1);

@@ -30,7 +30,8 @@ struct PathReport {
 // samples through evaluate() and from every piece overlapping the corridor (its ends and the
 // roots of its derivative, i.e. its true extrema up to root bracketing on 16 steps per piece).
 // The corridors need not be the ones the path was planned from.
-PathReport corridor_violations(const HandPath& path, std::span<const piano::HandCorridor> corridors,
+PathReport corridor_violations(const HandPath& path,
+                               std::span<const piano_model::HandCorridor> corridors,
                                const ReportOptions& options = {});
 
 }  // namespace tutti::spline_motion

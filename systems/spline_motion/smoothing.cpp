@@ -139,7 +139,7 @@ Result<HandPath> smooth_taut_string(const TautString& string, std::span<const Po
   return Error{"hand path: unknown smoothing mode"};
 }
 
-Result<HandPath> plan_hand_path(std::span<const piano::HandCorridor> corridors,
+Result<HandPath> plan_hand_path(std::span<const piano_model::HandCorridor> corridors,
                                 const PlanOptions& options) {
   Result<std::vector<Portal>> portals = corridor_portals(corridors);
   if (!portals) return portals.error();

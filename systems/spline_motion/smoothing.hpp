@@ -35,7 +35,7 @@ struct PlanOptions {
 
 // Validates the corridors (errors name the index), computes the taut string and smooths it.
 // No corridors -> an empty path (evaluates to 0 mm, at rest).
-Result<HandPath> plan_hand_path(std::span<const piano::HandCorridor> corridors,
+Result<HandPath> plan_hand_path(std::span<const piano_model::HandCorridor> corridors,
                                 const PlanOptions& options = {});
 
 // The smoothing step alone. `portals` must be those the string was computed from.

@@ -147,7 +147,7 @@ TautString taut_string(std::span<const Portal> portals) {
   return result;
 }
 
-Result<TautString> taut_string(std::span<const piano::HandCorridor> corridors) {
+Result<TautString> taut_string(std::span<const piano_model::HandCorridor> corridors) {
   Result<std::vector<Portal>> portals = corridor_portals(corridors);
   if (!portals) return portals.error();
   return taut_string(std::span<const Portal>(*portals));

@@ -45,7 +45,7 @@ struct TautString {
 };
 
 // Validates (see corridor_portals) and computes the string.
-Result<TautString> taut_string(std::span<const piano::HandCorridor> corridors);
+Result<TautString> taut_string(std::span<const piano_model::HandCorridor> corridors);
 
 // For portals already produced by corridor_portals (strictly increasing t_s, lo <= hi).
 TautString taut_string(std::span<const Portal> portals);

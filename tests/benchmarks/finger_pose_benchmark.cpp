@@ -26,9 +26,9 @@ struct Fixture {
 const Fixture& fixture() {
   static const Fixture f = [] {
     const std::filesystem::path content = TUTTI_CONTENT_DIR;
-    auto keyboard = piano::Keyboard::load(content / "piano" / "keyboard.json");
-    auto hand = piano::HandModel::load(content / "piano" / "hands.json", "",
-                                       keyboard->white_key_width_mm());
+    auto keyboard = piano_model::Keyboard::load(content / "piano" / "keyboard.json");
+    auto hand = piano_model::HandModel::load(content / "piano" / "hands.json", "",
+                                             keyboard->white_key_width_mm());
     auto params =
         finger_motion::load_finger_motion_params(finger_motion::finger_motion_params_path(content));
     if (!keyboard || !hand || !params) std::abort();

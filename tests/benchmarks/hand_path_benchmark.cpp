@@ -15,11 +15,11 @@
 
 namespace {
 
+using tutti::piano_model::HandCorridor;
+using tutti::piano_model::HandCorridors;
 using tutti::spline_motion::HandPath;
 using tutti::spline_motion::PlanOptions;
 using tutti::spline_motion::SmoothingMode;
-using tutti::piano::HandCorridor;
-using tutti::piano::HandCorridors;
 
 // Piano-like: notes of 20..500 ms, legato (touching) or detached, steps and leaps.
 HandCorridors make_corridors(int count, std::uint64_t seed = 1) {

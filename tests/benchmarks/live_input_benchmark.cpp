@@ -32,7 +32,7 @@ const Fixture& fixture() {
     Fixture out;
     auto model = piano::load_fingering_model();
     auto params = finger_motion::load_finger_motion_params(
-        finger_motion::finger_motion_params_path(piano::default_content_dir()));
+        finger_motion::finger_motion_params_path(piano_model::default_content_dir()));
     auto score = music::load_score(std::filesystem::path(TUTTI_SOURCE_DIR) /
                                    "content/music/ode_to_joy.musicxml");
     if (!model || !params || !score) std::abort();

@@ -187,7 +187,7 @@ TEST(ContentGenerator, DimensionsComeFromTheDataFile) {
   auto shipped =
       content_generator::AssetDimensions::load(content_dir() / "generator" / "dimensions.json");
   ASSERT_TRUE(shipped.ok()) << shipped.error().message;
-  auto keyboard = piano::Keyboard::load(content_dir() / "piano" / "keyboard.json");
+  auto keyboard = piano_model::Keyboard::load(content_dir() / "piano" / "keyboard.json");
   ASSERT_TRUE(keyboard.ok()) << keyboard.error().message;
   EXPECT_TRUE(content_generator::to_glb(content_generator::build_piano(*keyboard, shipped->piano))
                   .value() ==

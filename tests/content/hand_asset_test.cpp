@@ -27,10 +27,10 @@ constexpr const char* kFingers[5] = {"thumb", "index", "middle", "ring", "little
 
 // The motion model with no notes: every finger at rest (what the renderer sees between notes).
 FingerMotionPlan rest_plan() {
-  auto keyboard = piano::Keyboard::load(content_dir() / "piano" / "keyboard.json");
+  auto keyboard = piano_model::Keyboard::load(content_dir() / "piano" / "keyboard.json");
   EXPECT_TRUE(keyboard.ok());
-  auto hands = piano::HandModel::load(content_dir() / "piano" / "hands.json", "",
-                                      keyboard->white_key_width_mm());
+  auto hands = piano_model::HandModel::load(content_dir() / "piano" / "hands.json", "",
+                                            keyboard->white_key_width_mm());
   EXPECT_TRUE(hands.ok());
   auto params = finger_motion::load_finger_motion_params(
       finger_motion::finger_motion_params_path(content_dir()));

@@ -11,10 +11,10 @@
 namespace tutti::test {
 namespace {
 
-piano::Keyboard keyboard() {
-  auto loaded = piano::Keyboard::load(content_dir() / "piano" / "keyboard.json");
+piano_model::Keyboard keyboard() {
+  auto loaded = piano_model::Keyboard::load(content_dir() / "piano" / "keyboard.json");
   EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message);
-  return loaded.ok() ? *loaded : piano::Keyboard{};
+  return loaded.ok() ? *loaded : piano_model::Keyboard{};
 }
 
 class PianoAsset : public ::testing::Test {
@@ -97,7 +97,7 @@ TEST_F(PianoAsset, TheHarpsichordsKeysAreNarrower) {
 }
 
 TEST_F(PianoAsset, KeyNodesSitAtTheKeyboardsXPositionsInMetres) {
-  const piano::Keyboard board = keyboard();
+  const piano_model::Keyboard board = keyboard();
   for (int key = 21; key <= 108; ++key) {
     const int node = find_node(model_, "key_" + std::to_string(key));
     ASSERT_GE(node, 0);
@@ -109,7 +109,7 @@ TEST_F(PianoAsset, KeyNodesSitAtTheKeyboardsXPositionsInMetres) {
 }
 
 TEST_F(PianoAsset, WhiteAndBlackKeysUseTheirOwnMeshesWithRealDimensions) {
-  const piano::Keyboard board = keyboard();
+  const piano_model::Keyboard board = keyboard();
   int white_mesh = -1;
   int black_mesh = -1;
   for (int key = 21; key <= 108; ++key) {
@@ -141,7 +141,7 @@ TEST_F(PianoAsset, WhiteAndBlackKeysUseTheirOwnMeshesWithRealDimensions) {
 }
 
 TEST_F(PianoAsset, KeyOriginsAreAtTheBackPivotAndBlackKeysStandHigher) {
-  const piano::Keyboard board = keyboard();
+  const piano_model::Keyboard board = keyboard();
   const double white_top = world_translation(model_, find_node(model_, "key_60"), kY);
   EXPECT_NEAR(white_top, 0.72, 1e-6);  // key top above the floor
   for (int key = 21; key <= 108; ++key) {
@@ -188,7 +188,7 @@ TEST(PianoModel, BuildsFromAnyKeyboardItIsGiven) {
       {"white_key_width_mm", 23.5},
       {"black_key_centres_mm",
        {{"C#", 20.5625}, {"D#", 47.9792}, {"F#", 89.1042}, {"G#", 116.5208}, {"A#", 143.9375}}}};
-  auto board = piano::Keyboard::from_json(document, "small.json");
+  auto board = piano_model::Keyboard::from_json(document, "small.json");
   ASSERT_TRUE(board.ok()) << board.error().message;
   const tinygltf::Model model = content_generator::build_piano(*board);
   int keys = 0;

@@ -25,7 +25,7 @@ std::unique_ptr<LivePianist> make_pianist(const LivePianistOptions& options = {}
   auto model = piano::load_fingering_model();
   EXPECT_TRUE(model.ok());
   auto params = finger_motion::load_finger_motion_params(
-      finger_motion::finger_motion_params_path(piano::default_content_dir()));
+      finger_motion::finger_motion_params_path(piano_model::default_content_dir()));
   EXPECT_TRUE(params.ok());
   auto pianist = LivePianist::create(std::move(*model), *params, options);
   EXPECT_TRUE(pianist.ok()) << pianist.error().message;

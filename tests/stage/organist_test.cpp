@@ -90,9 +90,9 @@ TEST(Organist, PlaysABachChoralesBassOnThePedals) {
       const int pedal = rig.pedal_nodes[static_cast<std::size_t>(press.key)];
       ASSERT_GE(toe, 0);
       ASSERT_GE(pedal, 0);
-      const float along = static_cast<float>(piano::pedal_is_sharp(press.key)
-                                                 ? piano::PedalGeometry::kSharpToe_m
-                                                 : piano::PedalGeometry::kNaturalToe_m);
+      const float along = static_cast<float>(piano_model::pedal_is_sharp(press.key)
+                                                 ? piano_model::PedalGeometry::kSharpToe_m
+                                                 : piano_model::PedalGeometry::kNaturalToe_m);
       const glm::vec3 expected = glm::vec3(organ_world[static_cast<std::size_t>(pedal)] *
                                            glm::vec4(0.0f, 0.0f, along, 1.0f));
       const glm::vec3 at = glm::vec3(body_world[static_cast<std::size_t>(toe)][3]);

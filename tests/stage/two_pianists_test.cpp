@@ -162,8 +162,9 @@ TEST(TwoPianists, APianistAndAnOrganistUsingThePedals) {
                                                              : rig.body_nodes.toe_left;
       ASSERT_GE(toe, 0);
       const int pedal = rig.pedal_nodes[static_cast<std::size_t>(press.key)];
-      const double along = piano::pedal_is_sharp(press.key) ? piano::PedalGeometry::kSharpToe_m
-                                                            : piano::PedalGeometry::kNaturalToe_m;
+      const double along = piano_model::pedal_is_sharp(press.key)
+                               ? piano_model::PedalGeometry::kSharpToe_m
+                               : piano_model::PedalGeometry::kNaturalToe_m;
       const glm::vec3 expected = glm::vec3(organ_world[static_cast<std::size_t>(pedal)] *
                                            glm::vec4(0.0f, 0.0f, static_cast<float>(along), 1.0f));
       const glm::vec3 at = glm::vec3(body_world[static_cast<std::size_t>(toe)][3]);
@@ -172,7 +173,7 @@ TEST(TwoPianists, APianistAndAnOrganistUsingThePedals) {
       // The pedal is down: turned about its hinge by the full travel.
       const glm::quat& r = organ.pose.local[static_cast<std::size_t>(pedal)].rotation;
       EXPECT_NEAR(2.0 * std::asin(std::min(1.0f, glm::length(glm::vec3(r.x, r.y, r.z)))),
-                  piano::PedalGeometry::kDownRad, 1e-4)
+                  piano_model::PedalGeometry::kDownRad, 1e-4)
           << "pedal " << press.key << " at " << t;
     }
   }

@@ -13,8 +13,8 @@ namespace tutti::piano_family {
 namespace {
 
 // The organ's pedalboard as content/piano/instruments.json has it (AGO: C2-G4, 63.5 mm).
-piano::Pedalboard ago_board() {
-  piano::Pedalboard board;
+piano_model::Pedalboard ago_board() {
+  piano_model::Pedalboard board;
   board.lowest_key = 36;
   board.highest_key = 67;
   board.natural_spacing_mm = 63.5;
@@ -148,10 +148,10 @@ TEST(PlanFeet, TheBoardsEndsAreEachOneFootsWhateverTheCost) {
   ASSERT_EQ(plan.presses.size(), notes.size());
   for (const PedalPress& p : plan.presses) {
     EXPECT_EQ(p.foot, p.key < 52 ? kLeftFoot : kRightFoot) << "key " << p.key;
-    EXPECT_TRUE(piano::foot_reaches(ago_board(), p.foot == kRightFoot, p.key));
+    EXPECT_TRUE(piano_model::foot_reaches(ago_board(), p.foot == kRightFoot, p.key));
   }
-  EXPECT_FALSE(piano::foot_reaches(ago_board(), true, 36));
-  EXPECT_FALSE(piano::foot_reaches(ago_board(), false, 67));
+  EXPECT_FALSE(piano_model::foot_reaches(ago_board(), true, 36));
+  EXPECT_FALSE(piano_model::foot_reaches(ago_board(), false, 67));
   expect_feet_never_in_two_places(plan);
 }
 
@@ -199,12 +199,12 @@ TEST(EvaluateFoot, DownThroughEachNoteAndAPureFunctionOfTime) {
 }
 
 TEST(PedalGeometry, NaturalsEvenlySpacedSharpsBetweenThemCentredOnMiddleE) {
-  const piano::Pedalboard board = ago_board();
-  EXPECT_NEAR(piano::pedal_x_m(board, 52), 0.0, 1e-12) << "E3, the board's middle natural";
-  EXPECT_NEAR(piano::pedal_x_m(board, 53) - piano::pedal_x_m(board, 52), 0.0635, 1e-12);
-  EXPECT_NEAR(piano::pedal_x_m(board, 37),
-              0.5 * (piano::pedal_x_m(board, 36) + piano::pedal_x_m(board, 38)), 1e-12);
-  EXPECT_NEAR(piano::pedal_x_m(board, 36), -piano::pedal_x_m(board, 67), 1e-12);
+  const piano_model::Pedalboard board = ago_board();
+  EXPECT_NEAR(piano_model::pedal_x_m(board, 52), 0.0, 1e-12) << "E3, the board's middle natural";
+  EXPECT_NEAR(piano_model::pedal_x_m(board, 53) - piano_model::pedal_x_m(board, 52), 0.0635, 1e-12);
+  EXPECT_NEAR(piano_model::pedal_x_m(board, 37),
+              0.5 * (piano_model::pedal_x_m(board, 36) + piano_model::pedal_x_m(board, 38)), 1e-12);
+  EXPECT_NEAR(piano_model::pedal_x_m(board, 36), -piano_model::pedal_x_m(board, 67), 1e-12);
 }
 
 }  // namespace

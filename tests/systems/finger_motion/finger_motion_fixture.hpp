@@ -20,17 +20,17 @@ namespace tutti::finger_motion::test {
 inline std::filesystem::path content_dir() { return TUTTI_CONTENT_DIR; }
 
 struct Models {
-  piano::Keyboard keyboard;
-  piano::HandModel hand;
+  piano_model::Keyboard keyboard;
+  piano_model::HandModel hand;
   FingerMotionParams params;
 };
 
 inline const Models& models() {
   static const Models m = [] {
-    auto keyboard = piano::Keyboard::load(content_dir() / "piano" / "keyboard.json");
+    auto keyboard = piano_model::Keyboard::load(content_dir() / "piano" / "keyboard.json");
     EXPECT_TRUE(keyboard.ok());
-    auto hand = piano::HandModel::load(content_dir() / "piano" / "hands.json", "",
-                                       keyboard->white_key_width_mm());
+    auto hand = piano_model::HandModel::load(content_dir() / "piano" / "hands.json", "",
+                                             keyboard->white_key_width_mm());
     EXPECT_TRUE(hand.ok());
     auto params = load_finger_motion_params(finger_motion_params_path(content_dir()));
     EXPECT_TRUE(params.ok()) << (params.ok() ? "" : params.error().message);

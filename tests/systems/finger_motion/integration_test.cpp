@@ -17,10 +17,10 @@ namespace {
 
 // plan_hand_path rejects corridors that touch in time with disjoint ranges (no time to move);
 // systems/piano_performance will repair that properly. Here: end the earlier one 5 ms early.
-piano::HandCorridors trimmed(piano::HandCorridors corridors) {
+piano_model::HandCorridors trimmed(piano_model::HandCorridors corridors) {
   for (std::size_t i = 0; i + 1 < corridors.size(); ++i) {
-    piano::HandCorridor& a = corridors[i];
-    const piano::HandCorridor& b = corridors[i + 1];
+    piano_model::HandCorridor& a = corridors[i];
+    const piano_model::HandCorridor& b = corridors[i + 1];
     const bool disjoint = a.hi_mm < b.lo_mm || b.hi_mm < a.lo_mm;
     if (disjoint && a.end_s >= b.start_s) a.end_s = std::max(a.start_s, b.start_s - 0.005);
   }

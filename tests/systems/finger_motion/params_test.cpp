@@ -11,7 +11,7 @@ namespace tutti::finger_motion {
 namespace {
 
 nlohmann::json content_json() {
-  auto document = piano::read_json_file(finger_motion_params_path(test::content_dir()));
+  auto document = piano_model::read_json_file(finger_motion_params_path(test::content_dir()));
   EXPECT_TRUE(document.ok());
   return *document;
 }

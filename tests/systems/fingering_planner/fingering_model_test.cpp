@@ -11,7 +11,8 @@ namespace {
 // Each keyboard's own key sizes, one hand: on the harpsichord's narrower keys (a 152.4 mm
 // octave) the hand is as wide in millimetres as on the piano, so it spans more keys.
 TEST(FingeringModel, EachInstrumentsKeysTheSameHand) {
-  auto instruments = KeyboardInstruments::load(keyboard_instruments_path(default_content_dir()));
+  auto instruments = piano_model::KeyboardInstruments::load(
+      piano_model::keyboard_instruments_path(default_content_dir()));
   ASSERT_TRUE(instruments) << instruments.error().message;
   auto piano = load_fingering_model("default", "", default_content_dir(), instruments->find("piano"));
   auto harpsichord =

@@ -137,7 +137,7 @@ TEST(Scales, CorridorsAreTheChosenFingersIntersection) {
   ASSERT_TRUE(plan.ok());
   for (std::size_t i = 0; i < notes.size(); ++i) {
     const HandCorridor& c = plan->corridors[i];
-    const FingerRange& r = m.hand.range(Hand::right, plan->fingers[i]);
+    const piano_model::FingerRange& r = m.hand.range(Hand::right, plan->fingers[i]);
     EXPECT_NEAR(c.lo_mm, m.keyboard.x_mm(notes[i].key) - r.hi_mm, 1e-9);
     EXPECT_NEAR(c.hi_mm, m.keyboard.x_mm(notes[i].key) - r.lo_mm, 1e-9);
     EXPECT_DOUBLE_EQ(c.start_s, notes[i].onset_s);

@@ -7,7 +7,7 @@
 
 #include <tutti/piano_model/content_dir.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 namespace {
 
 using music::Hand;
@@ -49,4 +49,4 @@ TEST(ContentDir, EnvironmentOverridesTheBuiltInFolder) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -13,7 +13,7 @@
 #include <tutti/piano_model/content_dir.hpp>
 #include "scratch_dir.hpp"
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 namespace {
 
 KeyboardInstruments bundled() {
@@ -174,4 +174,4 @@ TEST_F(KeyboardInstrumentErrors, APedalboardIsCheckedToo) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

@@ -8,7 +8,7 @@
 #include <tutti/music/pitch.hpp>
 #include <tutti/piano_model/content_dir.hpp>
 
-namespace tutti::piano {
+namespace tutti::piano_model {
 namespace {
 
 Keyboard load_keyboard() {
@@ -76,4 +76,4 @@ TEST(Keyboard, ErrorsNameTheJsonPath) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::piano_model

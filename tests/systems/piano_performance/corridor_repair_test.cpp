@@ -15,11 +15,11 @@
 namespace tutti::piano_performance {
 namespace {
 
-using piano::HandCorridor;
+using piano_model::HandCorridor;
 
 TEST(CorridorRepair, LegatoJumpOpensAGapOnBothSides) {
   // 1 s and 0.1 s corridors touching at t=1 with disjoint ranges.
-  const piano::HandCorridors in{{0.0, 1.0, 0.0, 10.0}, {1.0, 1.1, 50.0, 60.0}};
+  const piano_model::HandCorridors in{{0.0, 1.0, 0.0, 10.0}, {1.0, 1.1, 50.0, 60.0}};
   ASSERT_FALSE(spline_motion::corridor_portals(in).ok());  // the gap this repair exists for
   const CorridorRepair r = repair_corridors(in);
   EXPECT_EQ(r.jumps, 1);
@@ -34,7 +34,7 @@ TEST(CorridorRepair, LegatoJumpOpensAGapOnBothSides) {
 }
 
 TEST(CorridorRepair, OverlappingRangesAreLeftAlone) {
-  const piano::HandCorridors in{{0.0, 1.0, 0.0, 10.0}, {1.0, 2.0, 5.0, 60.0}};
+  const piano_model::HandCorridors in{{0.0, 1.0, 0.0, 10.0}, {1.0, 2.0, 5.0, 60.0}};
   const CorridorRepair r = repair_corridors(in);
   EXPECT_EQ(r.total(), 0);
   EXPECT_DOUBLE_EQ(r.corridors[0].end_s, 1.0);
@@ -43,7 +43,7 @@ TEST(CorridorRepair, OverlappingRangesAreLeftAlone) {
 
 TEST(CorridorRepair, ZeroLengthCorridorStaysValid) {
   // A zero-length corridor between two long ones, disjoint from both.
-  const piano::HandCorridors in{
+  const piano_model::HandCorridors in{
       {0.0, 1.0, 0.0, 10.0}, {1.0, 1.0, 50.0, 60.0}, {1.0, 2.0, 100.0, 110.0}};
   const CorridorRepair r = repair_corridors(in);
   EXPECT_EQ(r.jumps, 2);
@@ -53,7 +53,7 @@ TEST(CorridorRepair, ZeroLengthCorridorStaysValid) {
 }
 
 TEST(CorridorRepair, TwoZeroLengthDisjointAtOneInstantDropsTheLater) {
-  const piano::HandCorridors in{{1.0, 1.0, 0.0, 10.0}, {1.0, 1.0, 50.0, 60.0}};
+  const piano_model::HandCorridors in{{1.0, 1.0, 0.0, 10.0}, {1.0, 1.0, 50.0, 60.0}};
   const CorridorRepair r = repair_corridors(in);
   EXPECT_EQ(r.dropped, 1);
   ASSERT_EQ(r.corridors.size(), 1u);
@@ -63,9 +63,9 @@ TEST(CorridorRepair, TwoZeroLengthDisjointAtOneInstantDropsTheLater) {
 
 TEST(CorridorRepair, ContractViolationsAreFixed) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const piano::HandCorridors in{{2.0, 3.0, 10.0, 0.0},  // reversed range
-                                {0.0, 2.5, 0.0, 10.0},  // unsorted and overlapping the first
-                                {4.0, nan, 0.0, 1.0}};  // non-finite
+  const piano_model::HandCorridors in{{2.0, 3.0, 10.0, 0.0},  // reversed range
+                                      {0.0, 2.5, 0.0, 10.0},  // unsorted and overlapping the first
+                                      {4.0, nan, 0.0, 1.0}};  // non-finite
   const CorridorRepair r = repair_corridors(in);
   EXPECT_EQ(r.dropped, 1);
   EXPECT_GE(r.sanitized, 2);
@@ -76,10 +76,10 @@ TEST(CorridorRepair, ContractViolationsAreFixed) {
 
 TEST(CorridorRepair, MalformedCorridorsStillGiveAPathAndAReport) {
   const double inf = std::numeric_limits<double>::infinity();
-  const piano::HandCorridors in{{0.0, 1.0, 0.0, 10.0},
-                                {1.0, 1.5, 40.0, 30.0},
-                                {1.2, 2.0, 100.0, 110.0},
-                                {3.0, 4.0, -inf, 5.0}};
+  const piano_model::HandCorridors in{{0.0, 1.0, 0.0, 10.0},
+                                      {1.0, 1.5, 40.0, 30.0},
+                                      {1.2, 2.0, 100.0, 110.0},
+                                      {3.0, 4.0, -inf, 5.0}};
   HandReport report;
   const spline_motion::HandPath path = plan_hand_motion(in, PerformanceOptions{}, report);
   EXPECT_TRUE(report.path_error.empty()) << report.path_error;

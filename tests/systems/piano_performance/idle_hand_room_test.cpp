@@ -15,8 +15,8 @@
 namespace tutti::piano_performance {
 namespace {
 
-using piano::HandCorridor;
-using piano::HandCorridors;
+using piano_model::HandCorridor;
+using piano_model::HandCorridors;
 
 // A corridor whose keys are known (the planner's): reference range and keys' extent, mm.
 HandCorridor played(double from_s, double to_s, double lo, double hi, double keys_lo,

@@ -169,7 +169,7 @@ void expect_inside(const HandReport& hand) {
   }
 }
 
-const piano::HandCorridors& corridors_of(const PianoPerformancePlan& plan, music::Hand hand) {
+const piano_model::HandCorridors& corridors_of(const PianoPerformancePlan& plan, music::Hand hand) {
   return hand == music::Hand::right ? plan.fingering.right.corridors
                                     : plan.fingering.left.corridors;
 }

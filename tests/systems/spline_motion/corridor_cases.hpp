@@ -16,8 +16,8 @@
 
 namespace tutti::spline_motion::testing {
 
-using piano::HandCorridor;
-using piano::HandCorridors;
+using piano_model::HandCorridor;
+using piano_model::HandCorridors;
 
 // Piano-like sequences: held notes of 0..0.5 s, gaps of 0 (legato, touching) to 0.3 s, quick
 // shifts (a few ms) between long holds, zero-length and zero-width corridors, big leaps.

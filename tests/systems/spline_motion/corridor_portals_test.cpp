@@ -9,8 +9,8 @@
 namespace tutti::spline_motion {
 namespace {
 
-using piano::HandCorridor;
-using piano::HandCorridors;
+using piano_model::HandCorridor;
+using piano_model::HandCorridors;
 using ::testing::HasSubstr;
 
 TEST(CorridorPortals, EmptyInputGivesNoPortals) {

@@ -14,7 +14,7 @@
 namespace tutti::spline_motion {
 namespace {
 
-using piano::HandCorridors;
+using piano_model::HandCorridors;
 using testing::random_corridors;
 
 HandPath plan(const HandCorridors& c, SmoothingMode mode = SmoothingMode::monotone_quintic) {

@@ -11,7 +11,7 @@
 namespace tutti::spline_motion {
 namespace {
 
-using piano::HandCorridors;
+using piano_model::HandCorridors;
 using testing::random_corridors;
 
 HandPath planned_path(const HandCorridors& c, SmoothingMode mode) {

@@ -11,7 +11,7 @@
 namespace tutti::spline_motion {
 namespace {
 
-using piano::HandCorridors;
+using piano_model::HandCorridors;
 using testing::certificate;
 using testing::random_corridors;
 
