@@ -57,9 +57,9 @@ std::string part_list(const music::Score& score) {
   return text.empty() ? "none" : text;
 }
 
-std::string instrument_list(const std::vector<brass::Instrument>& known) {
+std::string instrument_list(const std::vector<brass_model::Instrument>& known) {
   std::string text;
-  for (const brass::Instrument& i : known) text += (text.empty() ? "" : ", ") + i.id;
+  for (const brass_model::Instrument& i : known) text += (text.empty() ? "" : ", ") + i.id;
   return text;
 }
 
@@ -80,15 +80,15 @@ const char* breath_kind_name(brass::BreathKind kind) {
 }
 
 struct PlayerReport {
-  brass::BrassLine line;
+  brass_model::BrassLine line;
   brass::BrassPlanSummary summary;
   brass::BreathPlan breaths;
 };
 
 nlohmann::json player_json(const PlayerReport& r, const brass::BrassMotionParams& motion) {
-  const brass::Instrument& instrument = *r.line.instrument;
+  const brass_model::Instrument& instrument = *r.line.instrument;
   nlohmann::json notes = nlohmann::json::array();
-  for (const brass::LineNote& n : r.line.notes) {
+  for (const brass_model::LineNote& n : r.line.notes) {
     nlohmann::json note = {{"onset_s", n.onset_s},
                            {"offset_s", n.offset_s},
                            {"score_note", n.score_index},
@@ -96,10 +96,10 @@ nlohmann::json player_json(const PlayerReport& r, const brass::BrassMotionParams
                            {"written", music::pitch_name(n.written)},
                            {"playable", n.playable}};
     if (n.fingering >= 0) {
-      const brass::Fingering& f = instrument.chart[static_cast<std::size_t>(n.fingering)];
-      note["fingering"] = brass::fingering_name(instrument, f);
+      const brass_model::Fingering& f = instrument.chart[static_cast<std::size_t>(n.fingering)];
+      note["fingering"] = brass_model::fingering_name(instrument, f);
       note["partial"] = f.partial;
-      if (instrument.mechanism == brass::Mechanism::slide) {
+      if (instrument.mechanism == brass_model::Mechanism::slide) {
         note["position"] = f.position;
         note["slide_mm"] = f.slide_mm;
       }
@@ -133,19 +133,19 @@ nlohmann::json player_json(const PlayerReport& r, const brass::BrassMotionParams
 }
 
 void player_text(const PlayerReport& r, const brass::BrassMotionParams& motion, std::ostream& out) {
-  const brass::Instrument& instrument = *r.line.instrument;
+  const brass_model::Instrument& instrument = *r.line.instrument;
   out << "part " << r.line.part + 1 << " \"" << r.line.part_name << "\" voice " << r.line.voice + 1
       << ": " << instrument.display_name << " (" << instrument.id << "), " << r.line.notes.size()
       << " notes, " << r.summary.alternates << " alternates, " << r.summary.unplayable
       << " out of range, " << r.breaths.events.size() << " breaths";
-  if (instrument.mechanism == brass::Mechanism::slide) {
+  if (instrument.mechanism == brass_model::Mechanism::slide) {
     char travel[64];
     std::snprintf(travel, sizeof travel, ", slide travel %.0f mm", r.summary.slide_travel_mm);
     out << travel;
   }
   out << "\n";
   std::size_t next_breath = 0;
-  for (const brass::LineNote& n : r.line.notes) {
+  for (const brass_model::LineNote& n : r.line.notes) {
     while (next_breath < r.breaths.events.size() &&
            r.breaths.events[next_breath].start_s <= n.onset_s) {
       const brass::BreathEvent& b = r.breaths.events[next_breath++];
@@ -160,11 +160,11 @@ void player_text(const PlayerReport& r, const brass::BrassMotionParams& motion, 
                     n.onset_s, music::pitch_name(n.sounding).c_str(),
                     music::pitch_name(n.written).c_str());
     } else {
-      const brass::Fingering& f = instrument.chart[static_cast<std::size_t>(n.fingering)];
+      const brass_model::Fingering& f = instrument.chart[static_cast<std::size_t>(n.fingering)];
       std::snprintf(line, sizeof line,
                     "  %9.3f  %-4s (written %-4s)  %-7s partial %2d  tension %.2f%s\n", n.onset_s,
                     music::pitch_name(n.sounding).c_str(), music::pitch_name(n.written).c_str(),
-                    brass::fingering_name(instrument, f).c_str(), f.partial,
+                    brass_model::fingering_name(instrument, f).c_str(), f.partial,
                     brass::embouchure_tension(instrument, n.written, motion),
                     n.alternate ? "  (alternate)" : "");
     }
@@ -180,7 +180,7 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
   const Fail fail{err};
   auto score = music::load_score(options.file);
   if (!score) return fail(score.error());
-  auto known = brass::load_all_instruments();
+  auto known = brass_model::load_all_instruments();
   if (!known) return fail(known.error());
   auto weights = brass::load_planner_weights();
   if (!weights) return fail(weights.error());
@@ -189,9 +189,10 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
   auto breath_params = brass::load_breath_params();
   if (!breath_params) return fail(breath_params.error());
 
-  const brass::Instrument* forced = nullptr;
+  const brass_model::Instrument* forced = nullptr;
   if (!options.instrument.empty()) {
-    for (const brass::Instrument& i : *known) forced = i.id == options.instrument ? &i : forced;
+    for (const brass_model::Instrument& i : *known)
+      forced = i.id == options.instrument ? &i : forced;
     if (forced == nullptr) {
       return fail("no instrument \"" + options.instrument +
                   "\" (known: " + instrument_list(*known) + ")");
@@ -204,10 +205,10 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
       return fail(options.file.string() + ": no part \"" + options.part +
                   "\" (parts: " + part_list(*score) + ")");
     }
-    const brass::Instrument* instrument =
+    const brass_model::Instrument* instrument =
         forced != nullptr
             ? forced
-            : brass::detect_instrument(score->parts[static_cast<std::size_t>(part)], *known);
+            : brass_model::detect_instrument(score->parts[static_cast<std::size_t>(part)], *known);
     if (instrument == nullptr) {
       return fail(options.file.string() + ": part " + std::to_string(part + 1) + " \"" +
                   score->parts[static_cast<std::size_t>(part)].name +

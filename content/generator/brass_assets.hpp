@@ -12,7 +12,7 @@ namespace tutti::content_generator {
 
 tinygltf::Model build_trumpet(const TrumpetDimensions& dims = {});
 
-// `max_extension_mm`: the slide's 7th position (brass::Instrument::slide_length_mm of
+// `max_extension_mm`: the slide's 7th position (brass_model::Instrument::slide_length_mm of
 // content/instruments/trombone_tenor.json); must be below inner_slide_length_mm - 30.
 tinygltf::Model build_trombone(double max_extension_mm, const TromboneDimensions& dims = {});
 

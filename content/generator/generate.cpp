@@ -83,7 +83,7 @@ Status generate_assets(const std::filesystem::path& content_dir,
   if (!keyboard.ok()) return keyboard.error();
   auto dimensions = AssetDimensions::load(content_dir / "generator" / "dimensions.json");
   if (!dimensions.ok()) return dimensions.error();
-  auto trombone = brass::load_instrument(content_dir / "instruments" / "trombone_tenor.json");
+  auto trombone = brass_model::load_instrument(content_dir / "instruments" / "trombone_tenor.json");
   if (!trombone.ok()) return trombone.error();
   if (trombone->slide_length_mm <= 0.0 ||
       trombone->slide_length_mm + 30.0 > dimensions->trombone.inner_slide_length_mm) {

@@ -24,8 +24,8 @@ namespace tutti::brass_family {
 
 struct BrassPlan {
   // The lines point at their instrument: it lives as long as the plan.
-  std::shared_ptr<const brass::Instrument> instrument;
-  std::shared_ptr<const brass::BrassLine> line;
+  std::shared_ptr<const brass_model::Instrument> instrument;
+  std::shared_ptr<const brass_model::BrassLine> line;
   std::shared_ptr<const brass::BrassPlayerMotion> player;
   // What this player's plan was made from (instrument, part, voice, music, breath marks).
   std::string plan_key;

@@ -32,7 +32,7 @@ constexpr Section kSections[] = {{"trumpet", "Trumpet"},
                                  {"euphonium", "Euphonium"},
                                  {"tuba", "Tuba"}};
 
-std::size_t section_of(const brass::Instrument& instrument) {
+std::size_t section_of(const brass_model::Instrument& instrument) {
   for (std::size_t s = 0; s < std::size(kSections); ++s) {
     if (instrument.model_name() == kSections[s].model) return s;
   }
@@ -42,7 +42,7 @@ std::size_t section_of(const brass::Instrument& instrument) {
 struct Player {
   std::string name;
   std::string camera_stem;  // "trumpet_1"
-  const brass::Instrument* instrument = nullptr;
+  const brass_model::Instrument* instrument = nullptr;
   int part = 0;
   int voice = 1;
   std::size_t section = 0;
@@ -77,7 +77,7 @@ void seat_in_arc(std::vector<Player>& players, double centre_x) {
 // The brass parts among `parts`, as find_brass_parts recognises them.
 std::vector<brass::BrassPart> brass_parts_among(const music::Score& score,
                                                 std::span<const int> parts,
-                                                const std::vector<brass::Instrument>& known) {
+                                                const std::vector<brass_model::Instrument>& known) {
   std::vector<brass::BrassPart> found;
   for (const brass::BrassPart& b : brass::find_brass_parts(score, known)) {
     if (std::find(parts.begin(), parts.end(), b.part) != parts.end()) found.push_back(b);
@@ -89,7 +89,7 @@ std::vector<brass::BrassPart> brass_parts_among(const music::Score& score,
 
 Result<std::vector<int>> BrassPlugin::draft_recognise(const music::Score& score,
                                                       std::span<const int> available) const {
-  auto known = brass::load_all_instruments();
+  auto known = brass_model::load_all_instruments();
   if (!known) return known.error();
   std::vector<int> parts;
   for (const brass::BrassPart& b : brass_parts_among(score, available, *known)) {
@@ -101,7 +101,7 @@ Result<std::vector<int>> BrassPlugin::draft_recognise(const music::Score& score,
 Result<stage::FamilyDraft> BrassPlugin::draft(const music::Score& score,
                                               std::span<const int> parts,
                                               const stage::DraftPlace& place) const {
-  auto known = brass::load_all_instruments();
+  auto known = brass_model::load_all_instruments();
   if (!known) return known.error();
   const std::vector<brass::BrassPart> found = brass_parts_among(score, parts, *known);
 

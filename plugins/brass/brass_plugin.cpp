@@ -41,7 +41,7 @@ double extra_number(const model::ModelAsset& asset, int node, const char* key, d
 void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const BrassPlan& plan,
                  ecs::Entity performer) {
   ecs::World& world = builder.world();
-  for (const brass::LineNote& line_note : plan.line->notes) {
+  for (const brass_model::LineNote& line_note : plan.line->notes) {
     if (line_note.score_index < 0) continue;
     auto* note = world.try_get<components::Note>(
         builder.note_entity(music_file, static_cast<std::size_t>(line_note.score_index)));
@@ -65,10 +65,10 @@ void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const Bra
 }
 
 // The player's phrases: playable notes joined across rests shorter than kLongRestS.
-std::vector<std::array<double, 2>> phrases_of(const brass::BrassLine& line) {
+std::vector<std::array<double, 2>> phrases_of(const brass_model::BrassLine& line) {
   constexpr double kLongRestS = 4.0;
   std::vector<std::array<double, 2>> phrases;
-  for (const brass::LineNote& note : line.notes) {
+  for (const brass_model::LineNote& note : line.notes) {
     if (!note.playable) continue;
     if (!phrases.empty() && note.onset_s - phrases.back()[1] < kLongRestS) {
       phrases.back()[1] = std::max(phrases.back()[1], note.offset_s);
@@ -238,7 +238,7 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
     if (!planned) return planned.error();
     BrassPlan& plan = *planned;
     for (const std::string& note : plan.plan_notes) builder.note(note);
-    const brass::Instrument& played = *plan.instrument;
+    const brass_model::Instrument& played = *plan.instrument;
 
     const ecs::Entity player = builder.add_performer(
         name(), seat, components::Performer{performer.name, performer.seed});
@@ -253,7 +253,7 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
     world.add<components::Breath>(player);
     world.add<components::BreathSchedule>(player, breath_schedule(plan));
     BrassRig rig;
-    rig.trombone = played.mechanism == brass::Mechanism::slide;
+    rig.trombone = played.mechanism == brass_model::Mechanism::slide;
     rig.seated = performer.stance == scene::Stance::seated;
     rig.placement = stage::placement_matrix(performer.position_m, performer.facing_deg);
     rig.instrument = world.create();

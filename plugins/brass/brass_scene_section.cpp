@@ -45,10 +45,10 @@ Status parse_instrument_mapping(const SectionContext& context, const json& objec
                                 fs::path& out) {
   if (!object.contains("instrument_model")) return {};
   auto loaded =
-      brass::load_instrument(context.content_dir() / "instruments" / (instrument + ".json"));
+      brass_model::load_instrument(context.content_dir() / "instruments" / (instrument + ".json"));
   if (!loaded) return loaded.error();
   const AssetKind* kind = &trombone_kind();
-  if (loaded->mechanism == brass::Mechanism::valves) {
+  if (loaded->mechanism == brass_model::Mechanism::valves) {
     if (loaded->valves.size() != 3) {
       return context.error(
           join_path(path, "instrument_model"),

@@ -56,9 +56,9 @@ Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat
       return *previous;
     }
   }
-  auto instrument = brass::load_instrument_by_id(performer.instrument, builder.content_dir());
+  auto instrument = brass_model::load_instrument_by_id(performer.instrument, builder.content_dir());
   if (!instrument) return instrument.error();
-  plan.instrument = std::make_shared<const brass::Instrument>(std::move(*instrument));
+  plan.instrument = std::make_shared<const brass_model::Instrument>(std::move(*instrument));
   const int part = scene::find_part(score, performer.part);
   if (part < 0) {
     return Error{scene.source + ": performer \"" + performer.name + "\": no part \"" +
@@ -80,7 +80,7 @@ Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat
   }
   plan.player = std::make_shared<const brass::BrassPlayerMotion>(brass::plan_brass_player(
       *extracted, score, data.motion, data.breath, data.weights.change, marks));
-  plan.line = std::make_shared<const brass::BrassLine>(std::move(*extracted));
+  plan.line = std::make_shared<const brass_model::BrassLine>(std::move(*extracted));
   builder.replanned(performer.name);
   return plan;
 }

@@ -10,7 +10,7 @@
 
 #include <tutti/brass_model/instrument.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 
 struct LineNote {
   int score_index = -1;  // into Score::notes
@@ -55,4 +55,4 @@ struct BrassLine {
   std::vector<LineNote> notes;
 };
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 
 double partial_semitones(int partial) { return 12.0 * std::log2(double(partial)); }
 
@@ -51,4 +51,4 @@ double slide_semitones(double tube_length_mm, double extension_mm) {
   return 12.0 * std::log2(1.0 + 2.0 * extension_mm / tube_length_mm);
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -9,7 +9,7 @@
 
 #include <tutti/brass_model/instrument.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 
 inline constexpr double kSpeedOfSoundMPerS = 343.0;  // dry air, 20 °C
 
@@ -38,4 +38,4 @@ double slide_extension_mm(double tube_length_mm, double semitones);
 // The inverse: the lowering, in semitones, of an extension.
 double slide_semitones(double tube_length_mm, double extension_mm);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -10,7 +10,7 @@
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/music/part_names.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 namespace {
 
 using Words = std::vector<std::string>;
@@ -137,4 +137,4 @@ const Instrument* detect_instrument(const music::Part& part, std::span<const Ins
   return pick(by_name.empty() ? by_program : by_name, part, words);
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -12,7 +12,7 @@
 #include <tutti/content/json_reader.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 namespace {
 
 struct Candidate {
@@ -235,4 +235,4 @@ Status derive_chart(InstrumentFile& file) {
   return Status::success();
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -19,8 +19,8 @@
 #include <tutti/brass_model/instrument_file.hpp>
 #include <tutti/core/result.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 
 Status derive_chart(InstrumentFile& file);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

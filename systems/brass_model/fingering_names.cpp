@@ -3,7 +3,7 @@
 
 #include <cctype>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 namespace {
 
 bool valve_is_down(std::uint8_t mask, std::size_t valve) { return (mask & (1u << valve)) != 0; }
@@ -66,4 +66,4 @@ std::optional<SlideFingering> parse_slide_fingering(std::span<const ValveSpec> t
   return f;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

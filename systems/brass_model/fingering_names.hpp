@@ -12,7 +12,7 @@
 
 #include <tutti/brass_model/instrument.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 
 // "open" for no valve; otherwise the valves down joined by '-', side-switching valves first,
 // the others in file order ("T-1-2").
@@ -32,4 +32,4 @@ std::string slide_fingering_name(std::span<const ValveSpec> triggers, std::uint8
 std::optional<SlideFingering> parse_slide_fingering(std::span<const ValveSpec> triggers,
                                                     std::string_view text);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -11,7 +11,7 @@
 #include <tutti/content/content_dir.hpp>
 #include <tutti/content/json_reader.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 
 const std::string& Instrument::model_name() const {
   static const std::string trombone = "trombone";
@@ -82,4 +82,4 @@ std::string fingering_name(const Instrument& instrument, const Fingering& finger
   return name;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

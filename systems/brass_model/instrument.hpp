@@ -15,7 +15,7 @@
 #include <tutti/core/result.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 
 enum class Mechanism { valves, slide };
 
@@ -106,4 +106,4 @@ const Instrument* detect_instrument(const music::Part& part, std::span<const Ins
 std::string fingering_name(const Instrument& instrument, const Fingering& fingering,
                            bool with_partial = false);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

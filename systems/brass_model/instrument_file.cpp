@@ -11,7 +11,7 @@
 #include <tutti/content/json_reader.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 namespace {
 
 using nlohmann::json;
@@ -579,4 +579,4 @@ Result<InstrumentFile> parse_instrument_file(const json& doc, const std::string&
   return out;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

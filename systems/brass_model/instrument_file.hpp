@@ -13,7 +13,7 @@
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/core/result.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 
 // A fingering named in the file ("1-3", "T1"), optionally on a given partial (0 = any).
 struct FingeringRef {
@@ -61,4 +61,4 @@ Result<InstrumentFile> parse_instrument_file(const nlohmann::json& document,
                                              const std::string& file,
                                              const std::string& expected_id);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -11,6 +11,9 @@
 
 namespace tutti::brass {
 
+// The brass model's names used here (systems/brass_model).
+using brass_model::kMaxValves;
+
 // One press of one valve: down from press_s to down_s, held, up from release_s to up_s.
 struct ValveStroke {
   double press_s = 0.0;

@@ -8,6 +8,11 @@
 #include <tutti/music/meter.hpp>
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::LineNote;
+
 namespace {
 
 constexpr double kBeatTolerance = 1e-6;  // quarter notes: rests of exactly 0.5, 1, 2 beats

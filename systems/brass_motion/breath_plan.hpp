@@ -50,6 +50,9 @@
 
 namespace tutti::brass {
 
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+
 enum class BreathKind { before_entrance, in_rest, last_beat, prepared, catch_breath };
 
 struct BreathEvent {

@@ -9,6 +9,9 @@
 
 namespace tutti::brass {
 
+// The brass model's names used here (systems/brass_model).
+using brass_model::kMaxValves;
+
 struct BrassPose {
   std::array<float, kMaxValves> valve_press{};  // 0 = up .. 1 = down
   double slide_mm = 0.0;

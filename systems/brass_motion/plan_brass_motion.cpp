@@ -5,6 +5,17 @@
 #include <cmath>
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::change_window_start_s;
+using brass_model::ChangeWindow;
+using brass_model::Fingering;
+using brass_model::Instrument;
+using brass_model::kMaxValves;
+using brass_model::LineNote;
+using brass_model::Mechanism;
+
 namespace {
 
 struct PlayedFingering {

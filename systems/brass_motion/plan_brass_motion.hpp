@@ -18,6 +18,11 @@
 
 namespace tutti::brass {
 
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::ChangeWindow;
+using brass_model::Instrument;
+
 // The line must have its instrument and its fingerings (LineNote::fingering); notes without one
 // are not played. `window` must be the one the fingering planner used.
 BrassMotionPlan plan_brass_motion(const BrassLine& line, const BrassMotionParams& params,

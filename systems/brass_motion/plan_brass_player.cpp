@@ -7,6 +7,11 @@
 
 namespace tutti::brass {
 
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::ChangeWindow;
+using brass_model::LineNote;
+
 BrassLine as_played(const BrassLine& line, const BreathPlan& breaths) {
   BrassLine played = line;
   for (const ShortenedNote& s : breaths.shortened) {

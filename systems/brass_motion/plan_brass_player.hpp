@@ -13,6 +13,10 @@
 
 namespace tutti::brass {
 
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::ChangeWindow;
+
 // The line with the breath plan's shortened notes applied (offsets moved earlier).
 BrassLine as_played(const BrassLine& line, const BreathPlan& breaths);
 

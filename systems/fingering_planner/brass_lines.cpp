@@ -5,6 +5,13 @@
 #include <string>
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::detect_instrument;
+using brass_model::Instrument;
+using brass_model::LineNote;
+
 namespace {
 
 // Distinct stated voice numbers of a part, ascending (empty or one = not split by voice).

@@ -16,6 +16,10 @@
 
 namespace tutti::brass {
 
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::Instrument;
+
 struct BrassPart {
   int part = -1;  // Score part index
   const Instrument* instrument = nullptr;

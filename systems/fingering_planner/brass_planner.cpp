@@ -14,6 +14,14 @@
 #include <tutti/music/pitch.hpp>
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::change_window_s;
+using brass_model::Fingering;
+using brass_model::Instrument;
+using brass_model::LineNote;
+
 namespace {
 
 constexpr double kUnset = std::numeric_limits<double>::infinity();

@@ -27,6 +27,10 @@
 
 namespace tutti::brass {
 
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::ChangeWindow;
+
 struct PlannerWeights {
   double alternate_rank = 1.0;
   double tuning_per_cent = 0.02;

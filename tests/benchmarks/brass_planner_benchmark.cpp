@@ -15,6 +15,7 @@
 namespace {
 
 using namespace tutti::brass;
+using namespace tutti::brass_model;
 
 const Instrument& instrument(const std::string& id) {
   static const std::vector<Instrument> all = *load_all_instruments();

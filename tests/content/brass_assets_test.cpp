@@ -104,7 +104,8 @@ TEST_F(BrassAndStage, TromboneSlideMaximumComesFromTheInstrumentFile) {
   const int slide = find_node(model, "slide");
   ASSERT_GE(find_node(model, "grip_right"), 0);
   EXPECT_EQ(parent_of(model, find_node(model, "grip_right")), slide);
-  auto instrument = brass::load_instrument(content_dir() / "instruments" / "trombone_tenor.json");
+  auto instrument =
+      brass_model::load_instrument(content_dir() / "instruments" / "trombone_tenor.json");
   ASSERT_TRUE(instrument.ok()) << instrument.error().message;
   EXPECT_GT(instrument->slide_length_mm, 500.0);
   EXPECT_DOUBLE_EQ(extra(model, "slide", "max_extension_mm"), instrument->slide_length_mm);

@@ -10,7 +10,7 @@
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::brass::test {
+namespace tutti::brass_model::test {
 
 inline const std::vector<Instrument>& shipped() {
   static const std::vector<Instrument> all = [] {
@@ -48,4 +48,4 @@ inline std::string standard(const Instrument& i, int written) {
   return all.empty() ? std::string("(none)") : fingering_name(i, all.front());
 }
 
-}  // namespace tutti::brass::test
+}  // namespace tutti::brass_model::test

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 namespace {
 
 const std::vector<ValveSpec> kThreeValves = {{"1", 2.0}, {"2", 1.0}, {"3", 3.0}};
@@ -97,4 +97,4 @@ TEST(BrassPhysics, SlideExtensionFromTubeLength) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -9,7 +9,7 @@
 #include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 namespace {
 
 std::string detected(const std::string& name, int program = 0, int transpose = 0,
@@ -131,4 +131,4 @@ TEST(DetectInstrument, BeethovenSeventhBrass) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -14,7 +14,7 @@
 
 #include "brass_fixture.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 namespace {
 
 using test::instrument;
@@ -289,4 +289,4 @@ TEST(FingeringChart, NamesWithPartials) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

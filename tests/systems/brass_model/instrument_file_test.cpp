@@ -15,7 +15,7 @@
 #include <tutti/content/json_reader.hpp>
 #include "testdata.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_model {
 namespace {
 
 namespace fs = std::filesystem;
@@ -294,4 +294,4 @@ TEST(InstrumentFile, TheArmsReachIsOptionalAndChecked) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_model

@@ -11,6 +11,13 @@
 #include <tutti/fingering_planner/brass_planner.hpp>
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::Instrument;
+using brass_model::LineNote;
+using brass_model::load_all_instruments;
+
 namespace {
 
 TEST(BrassPoseAllocation, NoAllocationPerEvaluation) {

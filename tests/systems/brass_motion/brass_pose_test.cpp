@@ -27,6 +27,14 @@
 #include "testdata.hpp"
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::Fingering;
+using brass_model::Instrument;
+using brass_model::LineNote;
+using brass_model::load_all_instruments;
+
 namespace {
 
 struct Setup {

@@ -9,6 +9,10 @@
 #include "breath_fixture.hpp"
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::LineNote;
+
 namespace {
 
 TEST(EvaluateBreathAllocation, NoAllocationPerCall) {

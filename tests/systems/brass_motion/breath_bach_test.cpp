@@ -14,6 +14,11 @@
 #include "testdata.hpp"
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::LineNote;
+
 namespace {
 
 BrassLine trumpet_line(const music::Score& score, int part) {

@@ -16,6 +16,9 @@
 
 namespace tutti::brass::test {
 
+using brass_model::BrassLine;
+using brass_model::LineNote;
+
 inline std::filesystem::path content_dir() { return TUTTI_CONTENT_DIR; }
 
 // Fixed values (the documented defaults, as shipped in content/brass/breath.json), so the

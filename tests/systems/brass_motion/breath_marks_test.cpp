@@ -12,6 +12,11 @@
 #include "breath_fixture.hpp"
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::LineNote;
+
 namespace {
 
 using test::fixed_params;

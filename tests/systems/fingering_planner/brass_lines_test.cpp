@@ -8,6 +8,11 @@
 #include "testdata.hpp"
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::load_all_instruments;
+
 namespace {
 
 TEST(BrassLines, TwoPlayersInOnePartSplitTopAndBottom) {

@@ -16,6 +16,16 @@
 #include "testdata.hpp"
 
 namespace tutti::brass {
+
+// The brass model's names used here (systems/brass_model).
+using brass_model::BrassLine;
+using brass_model::detect_instrument;
+using brass_model::Fingering;
+using brass_model::fingering_name;
+using brass_model::Instrument;
+using brass_model::LineNote;
+using brass_model::load_all_instruments;
+
 namespace {
 
 const Instrument& instrument(const std::string& id) {
