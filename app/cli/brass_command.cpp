@@ -63,17 +63,17 @@ std::string instrument_list(const std::vector<brass_model::Instrument>& known) {
   return text;
 }
 
-const char* breath_kind_name(brass::BreathKind kind) {
+const char* breath_kind_name(brass_motion::BreathKind kind) {
   switch (kind) {
-    case brass::BreathKind::before_entrance:
+    case brass_motion::BreathKind::before_entrance:
       return "before_entrance";
-    case brass::BreathKind::in_rest:
+    case brass_motion::BreathKind::in_rest:
       return "in_rest";
-    case brass::BreathKind::last_beat:
+    case brass_motion::BreathKind::last_beat:
       return "last_beat";
-    case brass::BreathKind::prepared:
+    case brass_motion::BreathKind::prepared:
       return "prepared";
-    case brass::BreathKind::catch_breath:
+    case brass_motion::BreathKind::catch_breath:
       return "catch_breath";
   }
   return "?";
@@ -82,10 +82,10 @@ const char* breath_kind_name(brass::BreathKind kind) {
 struct PlayerReport {
   brass_model::BrassLine line;
   brass::BrassPlanSummary summary;
-  brass::BreathPlan breaths;
+  brass_motion::BreathPlan breaths;
 };
 
-nlohmann::json player_json(const PlayerReport& r, const brass::BrassMotionParams& motion) {
+nlohmann::json player_json(const PlayerReport& r, const brass_motion::BrassMotionParams& motion) {
   const brass_model::Instrument& instrument = *r.line.instrument;
   nlohmann::json notes = nlohmann::json::array();
   for (const brass_model::LineNote& n : r.line.notes) {
@@ -104,12 +104,12 @@ nlohmann::json player_json(const PlayerReport& r, const brass::BrassMotionParams
         note["slide_mm"] = f.slide_mm;
       }
       note["alternate"] = n.alternate;
-      note["tension"] = brass::embouchure_tension(instrument, n.written, motion);
+      note["tension"] = brass_motion::embouchure_tension(instrument, n.written, motion);
     }
     notes.push_back(std::move(note));
   }
   nlohmann::json breaths = nlohmann::json::array();
-  for (const brass::BreathEvent& b : r.breaths.events) {
+  for (const brass_motion::BreathEvent& b : r.breaths.events) {
     breaths.push_back({{"kind", breath_kind_name(b.kind)},
                        {"prepare_start_s", b.prepare_start_s},
                        {"start_s", b.start_s},
@@ -132,7 +132,8 @@ nlohmann::json player_json(const PlayerReport& r, const brass::BrassMotionParams
           {"diagnostics", std::move(diagnostics)}};
 }
 
-void player_text(const PlayerReport& r, const brass::BrassMotionParams& motion, std::ostream& out) {
+void player_text(const PlayerReport& r, const brass_motion::BrassMotionParams& motion,
+                 std::ostream& out) {
   const brass_model::Instrument& instrument = *r.line.instrument;
   out << "part " << r.line.part + 1 << " \"" << r.line.part_name << "\" voice " << r.line.voice + 1
       << ": " << instrument.display_name << " (" << instrument.id << "), " << r.line.notes.size()
@@ -148,7 +149,7 @@ void player_text(const PlayerReport& r, const brass::BrassMotionParams& motion, 
   for (const brass_model::LineNote& n : r.line.notes) {
     while (next_breath < r.breaths.events.size() &&
            r.breaths.events[next_breath].start_s <= n.onset_s) {
-      const brass::BreathEvent& b = r.breaths.events[next_breath++];
+      const brass_motion::BreathEvent& b = r.breaths.events[next_breath++];
       char line[128];
       std::snprintf(line, sizeof line, "  %9.3f  breath (%s) until %.3f s, depth %.2f\n", b.start_s,
                     breath_kind_name(b.kind), b.end_s, b.depth);
@@ -165,7 +166,7 @@ void player_text(const PlayerReport& r, const brass::BrassMotionParams& motion, 
                     "  %9.3f  %-4s (written %-4s)  %-7s partial %2d  tension %.2f%s\n", n.onset_s,
                     music::pitch_name(n.sounding).c_str(), music::pitch_name(n.written).c_str(),
                     brass_model::fingering_name(instrument, f).c_str(), f.partial,
-                    brass::embouchure_tension(instrument, n.written, motion),
+                    brass_motion::embouchure_tension(instrument, n.written, motion),
                     n.alternate ? "  (alternate)" : "");
     }
     out << line;
@@ -184,9 +185,9 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
   if (!known) return fail(known.error());
   auto weights = brass::load_planner_weights();
   if (!weights) return fail(weights.error());
-  auto motion = brass::load_brass_motion_params();
+  auto motion = brass_motion::load_brass_motion_params();
   if (!motion) return fail(motion.error());
-  auto breath_params = brass::load_breath_params();
+  auto breath_params = brass_motion::load_breath_params();
   if (!breath_params) return fail(breath_params.error());
 
   const brass_model::Instrument* forced = nullptr;
@@ -240,8 +241,8 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
       PlayerReport report;
       report.line = std::move(*line);
       report.summary =
-          brass::plan_line_around_breaths(report.line, *score, *weights, *breath_params);
-      report.breaths = brass::plan_breaths(report.line, *score, *breath_params);
+          brass_motion::plan_line_around_breaths(report.line, *score, *weights, *breath_params);
+      report.breaths = brass_motion::plan_breaths(report.line, *score, *breath_params);
       players.push_back(std::move(report));
     }
   }

@@ -26,7 +26,7 @@ struct BrassPlan {
   // The lines point at their instrument: it lives as long as the plan.
   std::shared_ptr<const brass_model::Instrument> instrument;
   std::shared_ptr<const brass_model::BrassLine> line;
-  std::shared_ptr<const brass::BrassPlayerMotion> player;
+  std::shared_ptr<const brass_motion::BrassPlayerMotion> player;
   // What this player's plan was made from (instrument, part, voice, music, breath marks).
   std::string plan_key;
   std::vector<std::string> plan_notes;  // the planner's diagnostics for this player

@@ -49,7 +49,7 @@ void claim_notes(stage::StageBuilder& builder, std::size_t music_file, const Bra
     note->performer = performer;
     note->playable = line_note.playable;
   }
-  for (const brass::ShortenedNote& shortened : plan.player->breaths.shortened) {
+  for (const brass_motion::ShortenedNote& shortened : plan.player->breaths.shortened) {
     if (shortened.note < 0 ||
         static_cast<std::size_t>(shortened.note) >= plan.line->notes.size()) {
       continue;
@@ -159,12 +159,12 @@ Status bind_player(stage::StageBuilder& builder, const BrassPlayer& performer,
 // The planned breaths as the editor and hosts read them.
 components::BreathSchedule breath_schedule(const BrassPlan& plan) {
   components::BreathSchedule schedule;
-  for (const brass::BreathEvent& event : plan.player->breaths.events) {
+  for (const brass_motion::BreathEvent& event : plan.player->breaths.events) {
     components::BreathSpan span;
     span.prepare_s = event.prepare_start_s;
     span.start_s = event.start_s;
     span.end_s = event.end_s;
-    span.catch_breath = event.kind == brass::BreathKind::catch_breath;
+    span.catch_breath = event.kind == brass_motion::BreathKind::catch_breath;
     span.marked = event.marked;
     span.boundary_s =
         event.before_note >= 0 &&
@@ -184,10 +184,10 @@ ensemble_variation::PerformerInput ensemble_input(const BrassPlayer& performer,
   input.params = ensemble_variation::resolve_variation(performer.seed, performer.variation);
   input.lead = performer.lead;
   input.score = &score;
-  for (const brass::BreathEvent& e : plan.player->breaths.events) {
+  for (const brass_motion::BreathEvent& e : plan.player->breaths.events) {
     input.breaths.push_back({e.prepare_start_s, e.start_s, e.end_s, e.depth,
-                             e.kind != brass::BreathKind::catch_breath &&
-                                 e.kind != brass::BreathKind::before_entrance});
+                             e.kind != brass_motion::BreathKind::catch_breath &&
+                                 e.kind != brass_motion::BreathKind::before_entrance});
   }
   for (const scene::Expression& e : performer.expressions) {
     ensemble_variation::ExpressionSpan span;
@@ -208,7 +208,7 @@ ensemble_variation::PerformerInput ensemble_input(const BrassPlayer& performer,
 }  // namespace
 
 void BrassPlugin::add_systems(ecs::Schedule& schedule) const {
-  brass::register_brass_motion(schedule);
+  brass_motion::register_brass_motion(schedule);
   ensemble_variation::register_ensemble_variation(schedule);
   schedule.add(ecs::Phase::pose, kBrassSkeletonSystemName, brass_skeleton_system,
                ecs::access(ecs::Reads<BrassRig, components::Valve, components::Slide, components::Mouth,
@@ -248,7 +248,8 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
     claim_notes(builder, performer.music_file, plan, player);
     world.add<components::Transform>(
         player, stage::stage_transform(performer.position_m, performer.facing_deg));
-    world.add<brass::BrassPlayerMotionHandle>(player, brass::BrassPlayerMotionHandle{plan.player});
+    world.add<brass_motion::BrassPlayerMotionHandle>(
+        player, brass_motion::BrassPlayerMotionHandle{plan.player});
     world.add<components::Mouth>(player);
     world.add<components::Breath>(player);
     world.add<components::BreathSchedule>(player, breath_schedule(plan));

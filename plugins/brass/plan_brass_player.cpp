@@ -33,9 +33,10 @@ std::string brass_plan_key(const scene::Scene& scene, const BrassPlayer& perform
 Result<BrassPlanningData> load_brass_planning_data(const std::filesystem::path& content_dir) {
   auto weights = brass::load_planner_weights((content_dir / "brass" / "planner.json").string());
   if (!weights) return weights.error();
-  auto motion = brass::load_brass_motion_params((content_dir / "brass" / "motion.json").string());
+  auto motion =
+      brass_motion::load_brass_motion_params((content_dir / "brass" / "motion.json").string());
   if (!motion) return motion.error();
-  auto breath = brass::load_breath_params(content_dir / "brass" / "breath.json");
+  auto breath = brass_motion::load_breath_params(content_dir / "brass" / "breath.json");
   if (!breath) return breath.error();
   return BrassPlanningData{std::move(*weights), std::move(*motion), std::move(*breath)};
 }
@@ -70,16 +71,17 @@ Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat
     return Error{scene.source + ": performer \"" + performer.name +
                  "\": " + extracted.error().message};
   }
-  brass::BreathMarks marks;
+  brass_motion::BreathMarks marks;
   marks.add_s = performer.breaths.add_s;
   marks.remove_s = performer.breaths.remove_s;
   const brass::BrassPlanSummary summary =
-      brass::plan_line_around_breaths(*extracted, score, data.weights, data.breath, marks);
+      brass_motion::plan_line_around_breaths(*extracted, score, data.weights, data.breath, marks);
   for (const brass::BrassDiagnostic& d : summary.diagnostics) {
     plan.plan_notes.push_back(performer.name + ": " + d.message);
   }
-  plan.player = std::make_shared<const brass::BrassPlayerMotion>(brass::plan_brass_player(
-      *extracted, score, data.motion, data.breath, data.weights.change, marks));
+  plan.player =
+      std::make_shared<const brass_motion::BrassPlayerMotion>(brass_motion::plan_brass_player(
+          *extracted, score, data.motion, data.breath, data.weights.change, marks));
   plan.line = std::make_shared<const brass_model::BrassLine>(std::move(*extracted));
   builder.replanned(performer.name);
   return plan;

@@ -17,8 +17,8 @@ namespace tutti::brass_family {
 
 struct BrassPlanningData {
   brass::PlannerWeights weights;
-  brass::BrassMotionParams motion;
-  brass::BreathParams breath;
+  brass_motion::BrassMotionParams motion;
+  brass_motion::BreathParams breath;
 };
 
 // From content_dir/brass.

@@ -73,7 +73,7 @@ void pose_player(ecs::World& world, ecs::Entity performer, BrassRig& rig, double
   if (slide != nullptr) {
     slide_mm = slide->extension_mm;
     reach_mm = slide_mm;
-    if (const auto* handle = world.try_get<brass::BrassPlayerMotionHandle>(performer);
+    if (const auto* handle = world.try_get<brass_motion::BrassPlayerMotionHandle>(performer);
         handle != nullptr && handle->motion != nullptr) {
       reach_mm = std::max(reach_mm, tutti::spline_motion::evaluate_plateau_envelope(
                                         handle->motion->motion.slide_reach, t_s));

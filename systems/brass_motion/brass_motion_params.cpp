@@ -6,7 +6,7 @@
 #include <tutti/content/content_dir.hpp>
 #include <tutti/content/json_reader.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 Result<BrassMotionParams> load_brass_motion_params() {
   return load_brass_motion_params(
@@ -39,4 +39,4 @@ Result<BrassMotionParams> load_brass_motion_params(const std::string& file) {
   return p;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

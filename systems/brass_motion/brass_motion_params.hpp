@@ -6,7 +6,7 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 struct BrassMotionParams {
   double valve_lead_s = 0.035;          // a valve starts down this long before the onset
@@ -27,4 +27,4 @@ struct BrassMotionParams {
 Result<BrassMotionParams> load_brass_motion_params();  // content/brass/motion.json
 Result<BrassMotionParams> load_brass_motion_params(const std::string& file);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

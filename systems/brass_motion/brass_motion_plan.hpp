@@ -9,7 +9,7 @@
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/spline_motion/plateau_envelope.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::kMaxValves;
@@ -63,4 +63,4 @@ struct BrassMotionPlan {
   int late_slide_moves = 0;            // moves that could not arrive by their onset
 };
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -10,7 +10,7 @@
 #include <tutti/components/slide.hpp>
 #include <tutti/components/valve.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 namespace {
 
 const BrassPlayerMotion* motion_of(const ecs::World& world, ecs::Entity performer) {
@@ -67,4 +67,4 @@ void register_brass_motion(ecs::Schedule& schedule) {
                                        components::Slide>{}));
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

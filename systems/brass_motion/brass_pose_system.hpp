@@ -16,7 +16,7 @@
 #include <tutti/ecs/schedule.hpp>
 #include <tutti/ecs/world.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // Everything needed to pose one brass player; built once after planning, then immutable.
 struct BrassPlayerMotion {
@@ -35,4 +35,4 @@ void brass_pose_system(ecs::World& world, const ecs::FrameTime& frame);
 inline constexpr const char* kBrassMotionSystemName = "brass_motion";
 void register_brass_motion(ecs::Schedule& schedule);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

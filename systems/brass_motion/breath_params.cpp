@@ -6,7 +6,7 @@
 #include <tutti/content/content_dir.hpp>
 #include <tutti/content/json_reader.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 std::filesystem::path breath_params_path() {
   return content::default_content_dir() / "brass" / "breath.json";
 }
@@ -53,4 +53,4 @@ Result<BreathParams> breath_params_from_json(const nlohmann::json& document,
   return p;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -11,7 +11,7 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 struct BreathParams {
   // Inhaling. A breath fills the end of the rule's window (rest, last beat, last two beats) for
@@ -58,4 +58,4 @@ Result<BreathParams> load_breath_params(const std::filesystem::path& file);
 Result<BreathParams> breath_params_from_json(const nlohmann::json& document,
                                              const std::string& file_name);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -7,7 +7,7 @@
 
 #include <tutti/music/meter.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -555,4 +555,4 @@ BreathState evaluate_breath(const BreathPlan& plan, double t) {
   return state;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -48,7 +48,7 @@
 #include <tutti/brass_motion/breath_params.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -140,4 +140,4 @@ BreathState evaluate_breath(const BreathPlan& plan, double t);
 // Strain (0..1) at an air level: 0 at or above strain_from_air, 1 at 0, smoothstep between.
 double strain_at_air(double air, double strain_from_air);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

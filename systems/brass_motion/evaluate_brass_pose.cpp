@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 namespace {
 
 // Last element whose start (by `key`) is <= t, or nullptr.
@@ -73,4 +73,4 @@ BrassPose evaluate_brass_pose(const BrassMotionPlan& plan, double t) {
   return pose;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

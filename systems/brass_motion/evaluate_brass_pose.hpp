@@ -7,7 +7,7 @@
 
 #include <tutti/brass_motion/brass_motion_plan.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::kMaxValves;
@@ -28,4 +28,4 @@ BrassPose evaluate_brass_pose(const BrassMotionPlan& plan, double t);
 // ends (minimum jerk: 10u³ − 15u⁴ + 6u⁵); derivative with respect to u in `slope`.
 double min_jerk(double u, double* slope = nullptr);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -195,4 +195,4 @@ BrassMotionPlan plan_brass_motion(const BrassLine& line, const BrassMotionParams
   return plan;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

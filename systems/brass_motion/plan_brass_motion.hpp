@@ -16,7 +16,7 @@
 #include <tutti/brass_motion/brass_motion_params.hpp>
 #include <tutti/brass_motion/brass_motion_plan.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -32,4 +32,4 @@ BrassMotionPlan plan_brass_motion(const BrassLine& line, const BrassMotionParams
 double embouchure_tension(const Instrument& instrument, int written,
                           const BrassMotionParams& params);
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

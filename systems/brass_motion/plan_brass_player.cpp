@@ -5,7 +5,12 @@
 
 #include <tutti/brass_motion/plan_brass_motion.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
+
+// The brass planner's names used here (systems/fingering_planner).
+using brass::BrassPlanSummary;
+using brass::plan_line;
+using brass::PlannerWeights;
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -49,4 +54,4 @@ BrassPlayerMotion plan_brass_player(const BrassLine& line, const music::Score& s
   return out;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -11,7 +11,11 @@
 #include <tutti/fingering_planner/brass_planner.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
+
+// The brass planner's names used here (systems/fingering_planner).
+using brass::BrassPlanSummary;
+using brass::PlannerWeights;
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -34,4 +38,4 @@ BrassPlayerMotion plan_brass_player(const BrassLine& line, const music::Score& s
                                     const BrassMotionParams& motion, const BreathParams& breath,
                                     const ChangeWindow& window, const BreathMarks& marks = {});
 
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -16,6 +16,7 @@ namespace {
 
 using namespace tutti::brass;
 using namespace tutti::brass_model;
+using namespace tutti::brass_motion;
 
 const Instrument& instrument(const std::string& id) {
   static const std::vector<Instrument> all = *load_all_instruments();

@@ -161,8 +161,9 @@ TEST(Stage, TheSoundStopsWhereAPlayerTakesACatchBreath) {
   ASSERT_EQ(heard.notes.size(), written.notes.size());
   std::vector<double> breath_starts;
   for (std::size_t seat = 0; seat < 4; ++seat) {
-    const auto& player = stage->world().get<brass::BrassPlayerMotionHandle>(brass_player(*stage, seat));
-    for (const brass::BreathEvent& e : player.motion->breaths.events) {
+    const auto& player =
+        stage->world().get<brass_motion::BrassPlayerMotionHandle>(brass_player(*stage, seat));
+    for (const brass_motion::BreathEvent& e : player.motion->breaths.events) {
       breath_starts.push_back(e.start_s);
     }
   }

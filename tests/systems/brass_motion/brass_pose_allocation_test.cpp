@@ -10,7 +10,11 @@
 #include <tutti/brass_motion/plan_brass_motion.hpp>
 #include <tutti/fingering_planner/brass_planner.hpp>
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
+
+// The brass planner's names used here (systems/fingering_planner).
+using brass::load_planner_weights;
+using brass::plan_line;
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -52,4 +56,4 @@ TEST(BrassPoseAllocation, NoAllocationPerEvaluation) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -26,7 +26,18 @@
 #include <tutti/spline_motion/plateau_envelope.hpp>
 #include "testdata.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
+
+// The brass planner's names used here (systems/fingering_planner).
+using brass::BrassDiagnostic;
+using brass::BrassIssue;
+using brass::BrassPart;
+using brass::BrassPlanSummary;
+using brass::extract_line;
+using brass::find_brass_parts;
+using brass::load_planner_weights;
+using brass::plan_line;
+using brass::PlannerWeights;
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -289,9 +300,9 @@ TEST(BrassPose, SystemWritesThePerformerAndInstrumentComponents) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 namespace {
 
 // A phrase longer than one breath: the catch-breath shortens a note, and the motion follows
@@ -374,4 +385,4 @@ TEST(BrassPlayer, TheFingeringIsPlannedAroundTheBreaths) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

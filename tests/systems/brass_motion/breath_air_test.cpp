@@ -8,7 +8,7 @@
 
 #include "breath_fixture.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -260,4 +260,4 @@ TEST(BreathAir, EvaluationIsContinuousAcrossEveryBoundary) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -8,7 +8,7 @@
 #include "allocation_counter.hpp"
 #include "breath_fixture.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::LineNote;
@@ -46,4 +46,4 @@ TEST(EvaluateBreathAllocation, NoAllocationPerCall) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -13,7 +13,7 @@
 #include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -234,4 +234,4 @@ TEST(BreathBach, MarksOnTheFirstTrumpetOfBwv69_6) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

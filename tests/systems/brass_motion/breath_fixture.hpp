@@ -14,7 +14,7 @@
 #include <tutti/brass_motion/breath_plan.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::brass::test {
+namespace tutti::brass_motion::test {
 
 using brass_model::BrassLine;
 using brass_model::LineNote;
@@ -122,4 +122,4 @@ inline void expect_continuous(const BreathPlan& plan, double from_s, double to_s
   }
 }
 
-}  // namespace tutti::brass::test
+}  // namespace tutti::brass_motion::test

@@ -11,7 +11,7 @@
 #include <tutti/brass_motion/plan_brass_player.hpp>
 #include "breath_fixture.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -262,4 +262,4 @@ TEST(BreathMarks, PlansWithMarksAreDeterministic) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

@@ -8,7 +8,7 @@
 #include <tutti/content/json_reader.hpp>
 #include "testdata.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 namespace {
 
 nlohmann::json content_json() {
@@ -123,4 +123,4 @@ TEST(BreathParams, FileErrorsAreOneLineNamingTheFile) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion

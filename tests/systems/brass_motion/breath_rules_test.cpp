@@ -5,7 +5,7 @@
 
 #include "breath_fixture.hpp"
 
-namespace tutti::brass {
+namespace tutti::brass_motion {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::LineNote;
@@ -231,4 +231,4 @@ TEST(BreathRules, EmptyLineGivesAnEmptyPlan) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::brass_motion
