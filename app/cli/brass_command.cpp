@@ -81,7 +81,7 @@ const char* breath_kind_name(brass_motion::BreathKind kind) {
 
 struct PlayerReport {
   brass_model::BrassLine line;
-  brass::BrassPlanSummary summary;
+  fingering_planner::BrassPlanSummary summary;
   brass_motion::BreathPlan breaths;
 };
 
@@ -118,7 +118,8 @@ nlohmann::json player_json(const PlayerReport& r, const brass_motion::BrassMotio
                        {"before_note", b.before_note}});
   }
   nlohmann::json diagnostics = nlohmann::json::array();
-  for (const brass::BrassDiagnostic& d : r.summary.diagnostics) diagnostics.push_back(d.message);
+  for (const fingering_planner::BrassDiagnostic& d : r.summary.diagnostics)
+    diagnostics.push_back(d.message);
   return {{"part", r.line.part + 1},
           {"name", r.line.part_name},
           {"voice", r.line.voice + 1},
@@ -171,7 +172,7 @@ void player_text(const PlayerReport& r, const brass_motion::BrassMotionParams& m
     }
     out << line;
   }
-  for (const brass::BrassDiagnostic& d : r.summary.diagnostics)
+  for (const fingering_planner::BrassDiagnostic& d : r.summary.diagnostics)
     out << "  note: " << d.message << "\n";
 }
 
@@ -183,7 +184,7 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
   if (!score) return fail(score.error());
   auto known = brass_model::load_all_instruments();
   if (!known) return fail(known.error());
-  auto weights = brass::load_planner_weights();
+  auto weights = fingering_planner::load_planner_weights();
   if (!weights) return fail(weights.error());
   auto motion = brass_motion::load_brass_motion_params();
   if (!motion) return fail(motion.error());
@@ -199,7 +200,7 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
                   "\" (known: " + instrument_list(*known) + ")");
     }
   }
-  std::vector<brass::BrassPart> parts;
+  std::vector<fingering_planner::BrassPart> parts;
   if (!options.part.empty()) {
     const int part = find_part(*score, options.part);
     if (part < 0) {
@@ -216,11 +217,11 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
                   "\" is not a brass instrument tutti knows; name one with --instrument (" +
                   instrument_list(*known) + ")");
     }
-    parts.push_back({part, instrument, brass::voices_in_part(*score, part)});
+    parts.push_back({part, instrument, fingering_planner::voices_in_part(*score, part)});
   } else {
-    parts = brass::find_brass_parts(*score, *known);
+    parts = fingering_planner::find_brass_parts(*score, *known);
     if (forced != nullptr) {
-      for (brass::BrassPart& p : parts) p.instrument = forced;
+      for (fingering_planner::BrassPart& p : parts) p.instrument = forced;
     }
     if (parts.empty()) {
       return fail(options.file.string() + ": no brass parts found (parts: " + part_list(*score) +
@@ -229,14 +230,14 @@ int run_brass(const BrassOptions& options, std::ostream& out, std::ostream& err)
   }
 
   std::vector<PlayerReport> players;
-  for (const brass::BrassPart& part : parts) {
+  for (const fingering_planner::BrassPart& part : parts) {
     if (options.voice > part.voices) {
       return fail(options.file.string() + ": part " + std::to_string(part.part + 1) + " has " +
                   std::to_string(part.voices) + " voice(s), not " + std::to_string(options.voice));
     }
     for (int voice = 0; voice < part.voices; ++voice) {
       if (options.voice > 0 && voice != options.voice - 1) continue;
-      auto line = brass::extract_line(*score, part.part, voice, *part.instrument);
+      auto line = fingering_planner::extract_line(*score, part.part, voice, *part.instrument);
       if (!line) return fail(line.error());
       PlayerReport report;
       report.line = std::move(*line);

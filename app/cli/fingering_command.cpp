@@ -44,9 +44,9 @@ Result<OutFormat> output_format(const FingeringOptions& o) {
                "' (.musicxml/.xml, .txt/.pig, .mid, .json, or give --format)"};
 }
 
-Result<piano::PlannerMode> parse_mode(const std::string& mode) {
-  if (mode == "exact") return piano::PlannerMode::exact;
-  if (mode == "lookahead") return piano::PlannerMode::lookahead;
+Result<fingering_planner::PlannerMode> parse_mode(const std::string& mode) {
+  if (mode == "exact") return fingering_planner::PlannerMode::exact;
+  if (mode == "lookahead") return fingering_planner::PlannerMode::lookahead;
   return Error{"--mode: unknown mode '" + mode + "' (exact or lookahead)"};
 }
 
@@ -56,7 +56,7 @@ Result<spline_motion::SmoothingMode> parse_smoothing(const std::string& name) {
                "' (monotone_quintic, pchip, natural_spline or none)"};
 }
 
-Result<piano::FingeringModel> load_model(const FingeringOptions& o) {
+Result<fingering_planner::FingeringModel> load_model(const FingeringOptions& o) {
   return load_model_with_weights(o.weights, o.hand_size, o.content_dir);
 }
 

@@ -47,7 +47,7 @@ nlohmann::ordered_json hand_json(const piano_performance::HandReport& h) {
 
 }  // namespace
 
-music::Score fingered_score(const music::Score& score, const piano::ScorePlan& plan) {
+music::Score fingered_score(const music::Score& score, const fingering_planner::ScorePlan& plan) {
   music::Score out = score;
   for (std::size_t i = 0; i < out.notes.size(); ++i) {
     out.notes[i].finger = i < plan.fingers.size() ? plan.fingers[i] : 0;

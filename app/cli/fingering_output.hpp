@@ -21,7 +21,7 @@
 namespace tutti::cli {
 
 // The score with Note::finger and Note::hand from the plan (substitutions cleared).
-music::Score fingered_score(const music::Score& score, const piano::ScorePlan& plan);
+music::Score fingered_score(const music::Score& score, const fingering_planner::ScorePlan& plan);
 
 // {"file", "notes": [{index, pitch, onset_s, offset_s, hand, finger}], "hands": {right, left}}.
 std::string fingering_json(const music::Score& fingered, const piano_performance::PerformanceReport& r);

@@ -47,10 +47,11 @@ std::string fingering_report_text(const music::Score& score,
                  notes, ms, ms > 0.0 ? 1000.0 * double(notes) / ms : 0.0, r.fingering_ms,
                  r.right.path_ms + r.left.path_ms);
   int shown = 0;
-  for (const piano::HandPlan* hand : {&plan.fingering.right, &plan.fingering.left}) {
-    for (const piano::Diagnostic& d : hand->diagnostics) {
+  for (const fingering_planner::HandPlan* hand : {&plan.fingering.right, &plan.fingering.left}) {
+    for (const fingering_planner::Diagnostic& d : hand->diagnostics) {
       if (shown++ >= max_diagnostic_lines) break;
-      text += "  " + std::string(piano::diagnostic_kind_name(d.kind)) + ": " + d.message + "\n";
+      text += "  " + std::string(fingering_planner::diagnostic_kind_name(d.kind)) + ": " +
+              d.message + "\n";
     }
   }
   const std::size_t total = r.right.diagnostics + r.left.diagnostics;

@@ -44,17 +44,17 @@ int run_fit_fingering(const FitFingeringOptions& o, std::ostream& out, std::ostr
   auto model = load_model_with_weights(o.start, o.hand_size, o.content_dir);
   if (!model) return fail(model.error());
 
-  piano::FitOptions fit;
+  fingering_planner::FitOptions fit;
   fit.max_rounds = o.rounds;
   fit.hand_preset = o.hand_size;
   if (!o.content_dir.empty()) fit.content_dir = o.content_dir;
   const auto started = std::chrono::steady_clock::now();
-  auto result = piano::fit_weights(annotated, model->weights, fit);
+  auto result = fingering_planner::fit_weights(annotated, model->weights, fit);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!result) return fail(result.error());
 
-  const Status saved = piano::save_cost_weights(
+  const Status saved = fingering_planner::save_cost_weights(
       result->weights, o.output,
       "fitted by tutti fit-fingering on " + std::to_string(o.inputs.size()) + " file(s), " +
           std::to_string(marked) + " marked notes, starting from " + o.start);

@@ -74,7 +74,7 @@ int run_perform(const PerformOptions& o, std::ostream& out, std::ostream& err) {
   auto score = music::load_score(o.input);
   if (!score) return fail(score.error());
   for (music::Note& n : score->notes) n.finger = 0;
-  auto model = piano::load_fingering_model("default", o.hand_size, content);
+  auto model = fingering_planner::load_fingering_model("default", o.hand_size, content);
   if (!model) return fail(model.error());
   auto plan = piano_performance::plan_performance(*score, *model);
   if (!plan) return fail(plan.error());

@@ -108,7 +108,7 @@ Frame frame_for(const music::Score& score, const piano_performance::PianoPerform
     lo = std::min(lo, key_mm(keyboard, n.pitch));
     hi = std::max(hi, key_mm(keyboard, n.pitch));
   }
-  for (const piano::HandPlan* hand : {&plan.fingering.right, &plan.fingering.left}) {
+  for (const fingering_planner::HandPlan* hand : {&plan.fingering.right, &plan.fingering.left}) {
     for (const piano_model::HandCorridor& c : hand->corridors) {
       if (c.end_s < f.t0 || c.start_s > f.t1) continue;
       lo = std::min(lo, c.lo_mm);

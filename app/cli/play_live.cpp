@@ -15,7 +15,7 @@ Result<std::unique_ptr<LivePlay>> LivePlay::open(const LivePlayOptions& options,
   play->options_ = options;
   if (options.midi_in.empty() && !options.keyboard_piano) return play;
   const char* flag = options.midi_in.empty() ? "--keyboard-piano" : "--midi-in";
-  if (piano_family::keyboard_players(scene).empty()) {
+  if (piano::keyboard_players(scene).empty()) {
     return Error{std::string(flag) + ": " + scene.source + " has no pianist to play the notes"};
   }
   if (!options.midi_in.empty()) {
@@ -38,8 +38,8 @@ Status LivePlay::attach(const stage::Stage& stage, ecs::World& posed, const scen
   if (stage.find_performer("piano", 0).is_null()) {
     return Error{scene.source + ": the stage has no pianist"};
   }
-  auto model = piano::load_fingering_model("default",
-                                           piano_family::keyboard_players(scene).front().hand_size);
+  auto model = fingering_planner::load_fingering_model(
+      "default", piano::keyboard_players(scene).front().hand_size);
   if (!model) return model.error();
   auto params = finger_motion::load_finger_motion_params(
       finger_motion::finger_motion_params_path(piano_model::default_content_dir()));

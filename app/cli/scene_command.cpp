@@ -20,7 +20,7 @@ namespace {
 // ", a pianist", ", a pianist, an organist", ... (each keyboard player by name, article first).
 std::string keyboard_player_names(const scene::Scene& scene) {
   std::string out;
-  for (const piano_family::KeyboardPlayer& p : piano_family::keyboard_players(scene)) {
+  for (const piano::KeyboardPlayer& p : piano::keyboard_players(scene)) {
     const bool vowel = !p.name.empty() && std::string_view("aeiou").find(p.name.front()) !=
                                               std::string_view::npos;
     out += std::string(vowel ? ", an " : ", a ") + p.name;
@@ -64,7 +64,7 @@ int run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
     return fail(written.error());
   }
   for (const std::string& note : drafted->notes) err << "note: " << note << "\n";
-  const std::size_t brass = brass_family::brass_players(*scene).size();
+  const std::size_t brass = brass::brass_players(*scene).size();
   out << "scene: wrote " << o.output.string() << " (" << brass << " brass player"
       << (brass == 1 ? "" : "s") << keyboard_player_names(*scene) << ", "
       << scene->cameras.size() << " cameras, " << scene->shots.size() << " shots)\n";

@@ -18,7 +18,7 @@ std::string percent(int part, int whole) {
   return text;
 }
 
-std::string row(const std::string& name, const piano::StreamingAgreement& a) {
+std::string row(const std::string& name, const fingering_planner::StreamingAgreement& a) {
   const double exact = a.right.exact_cost + a.left.exact_cost;
   char ratio[32], split_ratio[32];
   std::snprintf(ratio, sizeof ratio, "%.3f", a.cost_ratio());
@@ -31,7 +31,8 @@ std::string row(const std::string& name, const piano::StreamingAgreement& a) {
          " | " + split_ratio + " |\n";
 }
 
-void add(piano::StreamingAgreement& total, const piano::StreamingAgreement& a) {
+void add(fingering_planner::StreamingAgreement& total,
+         const fingering_planner::StreamingAgreement& a) {
   total.notes += a.notes;
   for (auto [to, from] : {std::pair{&total.right, &a.right}, std::pair{&total.left, &a.left}}) {
     to->notes += from->notes;
@@ -53,7 +54,7 @@ int run_stream_report(const StreamReportOptions& o, std::ostream& out, std::ostr
   for (int l : o.lookaheads) {
     if (l < 0) return fail("--lookahead " + std::to_string(l) + ": must be >= 0");
   }
-  auto model = piano::load_fingering_model(o.weights);
+  auto model = fingering_planner::load_fingering_model(o.weights);
   if (!model) return fail(model.error());
   std::vector<music::Score> scores;
   for (const auto& input : o.inputs) {
@@ -65,12 +66,12 @@ int run_stream_report(const StreamReportOptions& o, std::ostream& out, std::ostr
   out << "| piece | L | notes | right = exact | left = exact | all = exact | cost / exact | = "
          "lookahead planner (L+1) | live split: hand = exact | hand and finger = exact | cost / "
          "exact |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-  std::vector<piano::StreamingAgreement> totals;
+  std::vector<fingering_planner::StreamingAgreement> totals;
   for (int l : o.lookaheads) {
-    piano::StreamingAgreement total;
+    fingering_planner::StreamingAgreement total;
     total.lookahead = l;
     for (std::size_t i = 0; i < scores.size(); ++i) {
-      auto a = piano::measure_streaming_agreement(scores[i], *model, l);
+      auto a = fingering_planner::measure_streaming_agreement(scores[i], *model, l);
       if (!a) return fail(o.inputs[i].string() + ": " + a.error().message);
       out << row(o.inputs[i].filename().string(), *a);
       add(total, *a);

@@ -13,8 +13,8 @@
 namespace tutti::cli {
 
 // content_dir empty = piano_model::default_content_dir(); hand_size empty = hands.json's default.
-Result<piano::FingeringModel> load_model_with_weights(const std::string& weights,
-                                                      const std::string& hand_size,
-                                                      const std::filesystem::path& content_dir);
+Result<fingering_planner::FingeringModel> load_model_with_weights(
+    const std::string& weights, const std::string& hand_size,
+    const std::filesystem::path& content_dir);
 
 }  // namespace tutti::cli

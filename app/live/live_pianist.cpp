@@ -22,12 +22,14 @@ components::HandSide hand_side(music::Hand hand) {
 }
 
 // The rest position of a hand: its reference point where the middle finger rests on `key`.
-double rest_x(const piano::FingeringModel& model, int key) { return model.keyboard.x_mm(key); }
+double rest_x(const fingering_planner::FingeringModel& model, int key) {
+  return model.keyboard.x_mm(key);
+}
 
 }  // namespace
 
-LivePianist::LivePianist(std::unique_ptr<piano::FingeringModel> model,
-                         piano::StreamingPianoPlanner planner,
+LivePianist::LivePianist(std::unique_ptr<fingering_planner::FingeringModel> model,
+                         fingering_planner::StreamingPianoPlanner planner,
                          finger_motion::FingerMotionPlan templ, const LivePianistOptions& options)
     : model_(std::move(model)),
       planner_(std::move(planner)),
@@ -37,7 +39,7 @@ LivePianist::LivePianist(std::unique_ptr<piano::FingeringModel> model,
              LiveHandPath(rest_x(*model_, 48), options.hand_move_s, options.moves_per_hand)} {}
 
 Result<std::unique_ptr<LivePianist>> LivePianist::create(
-    piano::FingeringModel model, const finger_motion::FingerMotionParams& params,
+    fingering_planner::FingeringModel model, const finger_motion::FingerMotionParams& params,
     const LivePianistOptions& options) {
   if (!(options.hand_move_s > 0.0) || std::isinf(options.hand_move_s)) {
     return Error{"live pianist: hand_move_s must be > 0"};
@@ -45,13 +47,13 @@ Result<std::unique_ptr<LivePianist>> LivePianist::create(
   // The template: geometry, bends, heights and timing as plan_finger_motion derives them, with
   // no contacts (an empty score).
   const music::Score empty;
-  const piano::ScorePlan no_plan;
+  const fingering_planner::ScorePlan no_plan;
   auto templ =
       finger_motion::plan_finger_motion(empty, no_plan, {}, {}, model.keyboard, model.hand, params);
   if (!templ) return templ.error();
   // The planner points into the model: on the heap, it stays put when the pianist moves.
-  auto owned = std::make_unique<piano::FingeringModel>(std::move(model));
-  auto planner = piano::StreamingPianoPlanner::create(*owned, options.planner);
+  auto owned = std::make_unique<fingering_planner::FingeringModel>(std::move(model));
+  auto planner = fingering_planner::StreamingPianoPlanner::create(*owned, options.planner);
   if (!planner) return planner.error();
   auto pianist = std::unique_ptr<LivePianist>(
       new LivePianist(std::move(owned), std::move(*planner), std::move(*templ), options));
@@ -79,7 +81,7 @@ bool LivePianist::update(std::span<const LiveNoteEvent> events, double now_s) {
     if (!e.on) continue;
     const int key =
         std::clamp(e.key, model_->keyboard.lowest_key(), model_->keyboard.highest_key());
-    piano::PlanNote note;
+    fingering_planner::PlanNote note;
     note.key = key;
     note.onset_s = e.time_s;
     note.offset_s = e.time_s;
@@ -93,13 +95,13 @@ bool LivePianist::update(std::span<const LiveNoteEvent> events, double now_s) {
   }
   decided_.clear();
   planner_.advance(now_s, decided_);
-  for (const piano::StreamedFinger& d : decided_) add_contact(d, now_s);
+  for (const fingering_planner::StreamedFinger& d : decided_) add_contact(d, now_s);
   changed = changed || !decided_.empty();
   if (changed) rebuild();
   return changed;
 }
 
-void LivePianist::add_contact(const piano::StreamedFinger& decided, double now_s) {
+void LivePianist::add_contact(const fingering_planner::StreamedFinger& decided, double now_s) {
   const auto sounding = std::find_if(sounding_.begin(), sounding_.end(),
                                      [&](const Sounding& s) { return s.id == decided.id; });
   const double event_s = sounding != sounding_.end() ? sounding->event_s : decided.onset_s;

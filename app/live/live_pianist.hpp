@@ -35,13 +35,13 @@
 namespace tutti::live {
 
 struct LivePianistOptions {
-  piano::StreamingOptions planner = default_planner();
+  fingering_planner::StreamingOptions planner = default_planner();
   double hand_move_s = 0.08;
   std::size_t contacts_per_finger = 8;
   std::size_t moves_per_hand = 16;  // hand path moves kept
 
-  static piano::StreamingOptions default_planner() {
-    piano::StreamingOptions o;
+  static fingering_planner::StreamingOptions default_planner() {
+    fingering_planner::StreamingOptions o;
     o.lookahead = 0;
     o.max_wait_s = 0.0;
     o.chord_window_s = 0.03;  // a chord played by hand arrives over a few tens of milliseconds
@@ -63,7 +63,7 @@ class LivePianist {
  public:
   // Errors: invalid planner options; the finger-motion template cannot be made.
   static Result<std::unique_ptr<LivePianist>> create(
-      piano::FingeringModel model, const finger_motion::FingerMotionParams& params,
+      fingering_planner::FingeringModel model, const finger_motion::FingerMotionParams& params,
       const LivePianistOptions& options = {});
 
   // This frame's events (from any sources, times <= now_s), seen at now_s. Returns true when
@@ -76,9 +76,10 @@ class LivePianist {
   int ignored_notes() const { return ignored_; }  // off the keyboard, or the planner refused
 
  private:
-  LivePianist(std::unique_ptr<piano::FingeringModel> model, piano::StreamingPianoPlanner planner,
+  LivePianist(std::unique_ptr<fingering_planner::FingeringModel> model,
+              fingering_planner::StreamingPianoPlanner planner,
               finger_motion::FingerMotionPlan templ, const LivePianistOptions& options);
-  void add_contact(const piano::StreamedFinger& decided, double now_s);
+  void add_contact(const fingering_planner::StreamedFinger& decided, double now_s);
   void end_contact(std::int64_t id, double t_s);
   void rebuild();
 
@@ -94,15 +95,15 @@ class LivePianist {
     bool open = true;  // no note-off yet
   };
 
-  std::unique_ptr<piano::FingeringModel> model_;  // the planner points into it
-  piano::StreamingPianoPlanner planner_;
+  std::unique_ptr<fingering_planner::FingeringModel> model_;  // the planner points into it
+  fingering_planner::StreamingPianoPlanner planner_;
   finger_motion::FingerMotionPlan template_;
   LivePianistOptions options_;
   std::array<LiveHandPath, 2> paths_;                            // right, left
   std::array<std::array<std::vector<Contact>, 5>, 2> contacts_;  // [hand][finger]
   std::array<std::int64_t, 128> key_id_{};                       // sounding note per key, 0 = none
   std::vector<Sounding> sounding_;
-  std::vector<piano::StreamedFinger> decided_;
+  std::vector<fingering_planner::StreamedFinger> decided_;
   std::vector<LivePlayed> played_;
   std::shared_ptr<const finger_motion::PianistMotion> motion_;
   std::int64_t next_id_ = 1;

@@ -10,7 +10,7 @@
 
 #include <tutti/scene/asset_mapping.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 // Three valves (trumpets, cornets, flugelhorns).
 inline constexpr std::array<std::string_view, 6> kTrumpetRoles{
@@ -29,4 +29,4 @@ inline constexpr std::array<scene::AssetKind, 2> kBrassAssetKinds{
 inline const scene::AssetKind& trumpet_kind() { return kBrassAssetKinds[0]; }
 inline const scene::AssetKind& trombone_kind() { return kBrassAssetKinds[1]; }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

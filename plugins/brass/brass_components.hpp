@@ -20,7 +20,7 @@
 #include <tutti/stage/body_retarget.hpp>
 #include <tutti/stage/performer_rig.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 struct BrassPlan {
   // The lines point at their instrument: it lives as long as the plan.
@@ -67,4 +67,4 @@ struct BrassRig {
   std::vector<glm::mat4> scratch_body_world;
 };
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -16,7 +16,7 @@
 #include <tutti/fingering_planner/brass_lines.hpp>
 #include <tutti/stage/family_draft.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 using nlohmann::ordered_json;
@@ -75,11 +75,11 @@ void seat_in_arc(std::vector<Player>& players, double centre_x) {
 }
 
 // The brass parts among `parts`, as find_brass_parts recognises them.
-std::vector<brass::BrassPart> brass_parts_among(const music::Score& score,
-                                                std::span<const int> parts,
-                                                const std::vector<brass_model::Instrument>& known) {
-  std::vector<brass::BrassPart> found;
-  for (const brass::BrassPart& b : brass::find_brass_parts(score, known)) {
+std::vector<fingering_planner::BrassPart> brass_parts_among(
+    const music::Score& score, std::span<const int> parts,
+    const std::vector<brass_model::Instrument>& known) {
+  std::vector<fingering_planner::BrassPart> found;
+  for (const fingering_planner::BrassPart& b : fingering_planner::find_brass_parts(score, known)) {
     if (std::find(parts.begin(), parts.end(), b.part) != parts.end()) found.push_back(b);
   }
   return found;
@@ -92,7 +92,7 @@ Result<std::vector<int>> BrassPlugin::draft_recognise(const music::Score& score,
   auto known = brass_model::load_all_instruments();
   if (!known) return known.error();
   std::vector<int> parts;
-  for (const brass::BrassPart& b : brass_parts_among(score, available, *known)) {
+  for (const fingering_planner::BrassPart& b : brass_parts_among(score, available, *known)) {
     parts.push_back(b.part);
   }
   return parts;
@@ -103,11 +103,11 @@ Result<stage::FamilyDraft> BrassPlugin::draft(const music::Score& score,
                                               const stage::DraftPlace& place) const {
   auto known = brass_model::load_all_instruments();
   if (!known) return known.error();
-  const std::vector<brass::BrassPart> found = brass_parts_among(score, parts, *known);
+  const std::vector<fingering_planner::BrassPart> found = brass_parts_among(score, parts, *known);
 
   // Players, by section, then part order, then voice.
   std::vector<Player> players;
-  for (const brass::BrassPart& b : found) {
+  for (const fingering_planner::BrassPart& b : found) {
     for (int v = 0; v < b.voices; ++v) {
       Player player;
       player.instrument = b.instrument;
@@ -196,4 +196,4 @@ Result<stage::FamilyDraft> BrassPlugin::draft(const music::Score& score,
   return draft;
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -13,7 +13,7 @@
 
 #include <tutti/scene/scene.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 struct BrassPlayer {
   std::string name;            // unique in the scene, non-empty
@@ -54,4 +54,4 @@ inline std::vector<BrassPlayer>& edit_brass_players(scene::Scene& scene) {
   return scene.section_or_add<std::vector<BrassPlayer>>(kBrassPlayersKey);
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -26,7 +26,7 @@
 #include <tutti/stage/model_binding.hpp>
 #include <tutti/stage/touching.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 // A number from a node's glTF extras (the generated models' travel_mm), else the fallback: a user
@@ -302,4 +302,4 @@ Status BrassPlugin::build(stage::StageBuilder& builder) const {
   return Status::success();
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -15,7 +15,7 @@
 #include <tutti/brass/brass_stops.hpp>
 #include <tutti/stage/family_plugin.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 class BrassPlugin final : public stage::FamilyPlugin {
  public:
@@ -46,4 +46,4 @@ class BrassPlugin final : public stage::FamilyPlugin {
   BrassSceneSection section_;
 };
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

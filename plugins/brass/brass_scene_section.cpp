@@ -11,7 +11,7 @@
 #include <tutti/brass_model/instrument.hpp>
 #include <tutti/scene/performance_marks.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 namespace fs = std::filesystem;
@@ -179,4 +179,4 @@ Status BrassSceneSection::read(const json& document, const SectionContext& conte
   return {};
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

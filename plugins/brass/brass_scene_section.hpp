@@ -9,7 +9,7 @@
 #include <tutti/brass/brass_asset_kinds.hpp>
 #include <tutti/scene/scene_section.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 class BrassSceneSection final : public scene::SceneSection {
  public:
@@ -20,4 +20,4 @@ class BrassSceneSection final : public scene::SceneSection {
               scene::Scene& scene) const override;
 };
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -10,7 +10,7 @@
 #include <tutti/components/slide.hpp>
 #include <tutti/components/valve.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 constexpr stage::StopKind kValveDown{"valve_down", "valve down", true};
@@ -106,4 +106,4 @@ std::unique_ptr<stage::StopTracker> track_brass_stops(ecs::World& world, std::st
   return std::make_unique<BrassStopTracker>(std::move(instruments));
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -12,11 +12,11 @@
 
 #include <tutti/stage/contact_detector.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 std::span<const stage::StopKind* const> brass_stop_kinds();
 // Watches the instruments of the performers seated in `family`, in spawn order; nullptr when
 // there are none.
 std::unique_ptr<stage::StopTracker> track_brass_stops(ecs::World& world, std::string_view family);
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -17,7 +17,7 @@
 #include <tutti/stage/pose_checker.hpp>
 #include <vector>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 using stage::origin;
@@ -189,4 +189,4 @@ void BrassPlugin::check_pose(stage::PoseChecker& checker, ecs::Entity performer)
   }
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -6,7 +6,7 @@
 #include <tutti/stage/player_view.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 void BrassPlugin::describe_player(const stage::Stage& stage, ecs::Entity performer,
                                   stage::PlayerView& out) const {
@@ -21,4 +21,4 @@ void BrassPlugin::describe_player(const stage::Stage& stage, ecs::Entity perform
   out.expressions = player.expressions;
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

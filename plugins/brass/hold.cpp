@@ -6,7 +6,7 @@
 
 #include <tutti/content/json_reader.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 using nlohmann::json;
@@ -187,4 +187,4 @@ Result<Hold> load_hold(const std::filesystem::path& file) {
   return hold;
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -16,7 +16,7 @@
 
 #include <tutti/stage/fingertip_reach.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 struct HandHold {
   std::string palm_at;  // instrument node the palm's centre holds; empty: the fingertips place it
@@ -68,4 +68,4 @@ struct Hold {
 // Reads and checks one hold file; errors name the file and the JSON path.
 Result<Hold> load_hold(const std::filesystem::path& file);
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

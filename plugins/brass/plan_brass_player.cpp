@@ -8,7 +8,7 @@
 #include <tutti/fingering_planner/brass_lines.hpp>
 #include <tutti/scene/load_scene.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 std::string times_key(const std::vector<double>& times) {
@@ -31,7 +31,8 @@ std::string brass_plan_key(const scene::Scene& scene, const BrassPlayer& perform
 }  // namespace
 
 Result<BrassPlanningData> load_brass_planning_data(const std::filesystem::path& content_dir) {
-  auto weights = brass::load_planner_weights((content_dir / "brass" / "planner.json").string());
+  auto weights =
+      fingering_planner::load_planner_weights((content_dir / "brass" / "planner.json").string());
   if (!weights) return weights.error();
   auto motion =
       brass_motion::load_brass_motion_params((content_dir / "brass" / "motion.json").string());
@@ -66,7 +67,8 @@ Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat
                  performer.part + "\" in " +
                  scene.music[performer.music_file].filename().string()};
   }
-  auto extracted = brass::extract_line(score, part, performer.voice - 1, *plan.instrument);
+  auto extracted =
+      fingering_planner::extract_line(score, part, performer.voice - 1, *plan.instrument);
   if (!extracted) {
     return Error{scene.source + ": performer \"" + performer.name +
                  "\": " + extracted.error().message};
@@ -74,9 +76,9 @@ Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat
   brass_motion::BreathMarks marks;
   marks.add_s = performer.breaths.add_s;
   marks.remove_s = performer.breaths.remove_s;
-  const brass::BrassPlanSummary summary =
+  const fingering_planner::BrassPlanSummary summary =
       brass_motion::plan_line_around_breaths(*extracted, score, data.weights, data.breath, marks);
-  for (const brass::BrassDiagnostic& d : summary.diagnostics) {
+  for (const fingering_planner::BrassDiagnostic& d : summary.diagnostics) {
     plan.plan_notes.push_back(performer.name + ": " + d.message);
   }
   plan.player =
@@ -87,4 +89,4 @@ Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat
   return plan;
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

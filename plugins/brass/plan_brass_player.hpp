@@ -13,10 +13,10 @@
 #include <tutti/fingering_planner/brass_planner.hpp>
 #include <tutti/stage/stage_builder.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 struct BrassPlanningData {
-  brass::PlannerWeights weights;
+  fingering_planner::PlannerWeights weights;
   brass_motion::BrassMotionParams motion;
   brass_motion::BreathParams breath;
 };
@@ -28,4 +28,4 @@ Result<BrassPlanningData> load_brass_planning_data(const std::filesystem::path& 
 Result<BrassPlan> plan_brass_seat(stage::StageBuilder& builder, std::size_t seat,
                                   const BrassPlanningData& data);
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

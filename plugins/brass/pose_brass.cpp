@@ -18,7 +18,7 @@
 #include <tutti/stage/stage.hpp>
 #include <tutti/stage/touching.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 using stage::origin;
@@ -350,4 +350,4 @@ void brass_skeleton_system(ecs::World& world, const ecs::FrameTime& frame) {
   });
 }
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -8,10 +8,10 @@
 #include <tutti/ecs/schedule.hpp>
 #include <tutti/ecs/world.hpp>
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 
 void brass_skeleton_system(ecs::World& world, const ecs::FrameTime& frame);
 
 inline constexpr const char* kBrassSkeletonSystemName = "brass_skeleton";
 
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

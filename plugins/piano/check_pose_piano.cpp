@@ -18,7 +18,7 @@
 #include <tutti/stage/pose_checker.hpp>
 #include <vector>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 using stage::origin;
@@ -98,7 +98,7 @@ void hand_capsules_of(stage::PoseChecker& c, State& state, const PianoRig& rig, 
   } else {
     return;
   }
-  piano_family::collect_hand_capsules(chain, *world, out);
+  piano::collect_hand_capsules(chain, *world, out);
 }
 
 // How deep one hand's capsules reach into the other's: hands cross over each other, never
@@ -297,4 +297,4 @@ void PianoPlugin::finish_pose_check(stage::PoseChecker& checker) const {
   finish_keyboard_players(checker);
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -12,13 +12,13 @@
 #include <tutti/stage/player_view.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 // The hands' allowed areas per event and the paths planned through them.
 void add_hands(const ecs::World& world, ecs::Entity performer, stage::PlayerView& out) {
   if (const auto* plan = world.try_get<PianistPlan>(performer)) {
-    const piano::HandPlan* hands[2] = {&plan->fingering.right, &plan->fingering.left};
+    const fingering_planner::HandPlan* hands[2] = {&plan->fingering.right, &plan->fingering.left};
     for (std::size_t side = 0; side < 2; ++side) {
       for (const piano_model::HandCorridor& c : hands[side]->corridors) {
         out.hand_bands[side].push_back({c.start_s, c.end_s, c.lo_mm, c.hi_mm});
@@ -85,4 +85,4 @@ void PianoPlugin::describe_player(const stage::Stage& stage, ecs::Entity perform
   add_hands(world, performer, out);
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

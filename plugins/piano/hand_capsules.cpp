@@ -6,7 +6,7 @@
 
 #include <tutti/stage/fingertip_reach.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 void collect_hand_capsules(const FingerChains& chains, std::span<const glm::mat4> world,
                            std::vector<HandCapsule>& out) {
@@ -69,4 +69,4 @@ double overlap_m(const HandCapsule& one, const HandCapsule& other) {
          segment_distance(one.a, one.b, other.a, other.b);
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 struct HandCapsule {
   glm::vec3 a{0.0f};
@@ -40,4 +40,4 @@ double segment_distance(const glm::vec3& p1, const glm::vec3& q1, const glm::vec
 // How deep two capsules overlap (metres; <= 0 apart).
 double overlap_m(const HandCapsule& one, const HandCapsule& other);
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -12,7 +12,7 @@
 
 #include <tutti/components/finger.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 using stage::PlacedModel;
@@ -199,4 +199,4 @@ void keep_hands_apart(const ecs::World& world, PianoRig& rig,
   }
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

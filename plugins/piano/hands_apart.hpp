@@ -24,7 +24,7 @@
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 inline constexpr double kApartMarginMm = 1.0;
 inline constexpr double kMostYieldSpreadRad = 0.5;
@@ -35,4 +35,4 @@ inline constexpr double kMostYieldLiftRad = 0.6;
 void keep_hands_apart(const ecs::World& world, PianoRig& rig,
                       const std::array<stage::PlacedModel*, 2>& hand_models, const SeatedFingers& seated);
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

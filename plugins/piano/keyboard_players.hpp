@@ -13,7 +13,7 @@
 
 #include <tutti/scene/scene.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 // The player plays the note of `key` starting at `time_s` with `finger` (1 = thumb .. 5); the
 // fingering is planned around it.
@@ -73,4 +73,4 @@ inline std::vector<KeyboardPlayer>& edit_keyboard_players(scene::Scene& scene) {
   return scene.section_or_add<std::vector<KeyboardPlayer>>(kKeyboardPlayersKey);
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -8,7 +8,7 @@
 #include <tutti/stage/stage.hpp>
 #include <tutti/stage/two_bone_ik.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 // A nominal curl for placing the wrist: a pianist's rounded hand.
@@ -293,4 +293,4 @@ std::array<glm::vec3, 2> pose_user_hands(const ecs::World& ecs_world, stage::Pla
   return wrists;
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -21,7 +21,7 @@
 #include <tutti/stage/fingertip_reach.hpp>
 #include <tutti/stage/performer_rig.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 // Puts a hand's wrist (its hand node's origin) at `wrist`, turned to `rotation`: an arm's IK, or
 // a free hand's root. Leaves `world` the pose's world matrices; returns how far the wrist stayed
@@ -109,4 +109,4 @@ std::array<glm::vec3, 2> pose_user_hands(const ecs::World& ecs_world, stage::Pla
 void pose_seated_pianist(const stage::BodyNodes& nodes, const model::ModelAsset& asset,
                          model::ModelPose& pose);
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

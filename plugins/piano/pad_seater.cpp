@@ -10,7 +10,7 @@
 
 #include <tutti/stage/fingertip_reach.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 double key_surface_z_mm(const PianoRig& rig, int key, double angle, double y_mm) {
   const auto k = static_cast<std::size_t>(key);
@@ -206,4 +206,4 @@ PadSeat PadSeater::clear_of(PadSeat seat, std::span<const HandCapsule> other, do
   return best;
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

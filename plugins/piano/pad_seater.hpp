@@ -16,7 +16,7 @@
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 // How far the seating may turn a finger's joints past the plan. Centring a pad on its key's
 // centre line takes at most kMostSpreadCorrectionRad: a key further away is the plan's to reach
@@ -99,4 +99,4 @@ class PadSeater {
   float mirror_;
 };
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

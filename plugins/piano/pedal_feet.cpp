@@ -10,7 +10,7 @@
 #include <tutti/piano_model/keyboard_instruments.hpp>
 #include <tutti/piano_model/pedal_geometry.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 constexpr double kSameOnset_s = 1e-3;
@@ -281,4 +281,4 @@ FootState evaluate_foot(const FeetPlan& plan, int foot, double t) {
   return state;
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -22,7 +22,7 @@ namespace tutti::piano_model {
 struct Pedalboard;
 }
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 inline constexpr int kRightFoot = 0;
 inline constexpr int kLeftFoot = 1;
@@ -82,4 +82,4 @@ FootState evaluate_foot(const FeetPlan& plan, int foot, double t);
 // Notes the feet play at once at most (one per foot).
 inline constexpr int kFeet = 2;
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -27,13 +27,13 @@
 #include <tutti/stage/performer_rig.hpp>
 #include <tutti/stage/stage.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 struct PianistPlan {
   // What the pianist plays (their parts, pins applied) and the fingering planned for it: the
   // editor shows and pins fingers on these notes.
   music::Score score;
-  piano::ScorePlan fingering;
+  fingering_planner::ScorePlan fingering;
   std::shared_ptr<const finger_motion::PianistMotion> motion;
   // `score.notes[i]` is the stage score's note full_index[i].
   std::vector<std::size_t> full_index;
@@ -42,11 +42,11 @@ struct PianistPlan {
   std::string plan_key;
   // The fingering before the scene's pins (the file's own marks pinned) and what it depends on:
   // pins re-plan only the span around them from it.
-  piano::ScorePlan base_fingering;
+  fingering_planner::ScorePlan base_fingering;
   std::string base_key;
   // Chords a hand cannot span, rolled (chord_roll.hpp): applied to `score`; planned with the
   // base fingering.
-  piano::ChordRolls rolls;
+  fingering_planner::ChordRolls rolls;
   std::vector<std::string> plan_notes;
   // An organ's pedal notes and the feet that play them (pedal_feet.hpp); a press's `note` is
   // the stage score's note index. Empty without a pedalboard.
@@ -123,4 +123,4 @@ inline FingerChains finger_chains(const PianoRig& rig, std::size_t side) {
   return chains;
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -17,7 +17,7 @@
 #include <tutti/piano_model/keyboard_instruments.hpp>
 #include <tutti/stage/family_draft.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 using nlohmann::ordered_json;
@@ -203,4 +203,4 @@ Result<stage::FamilyDraft> PianoPlugin::draft(const music::Score& score,
   return draft;
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

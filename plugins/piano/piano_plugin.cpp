@@ -25,7 +25,7 @@
 #include <tutti/stage/performer_rig.hpp>
 #include <tutti/stage/touching.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 // The pianist's notes on the stage: who plays them with which hand and finger, and, when the
@@ -262,8 +262,8 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   if (!instruments) return instruments.error();
   const piano_model::KeyboardInstrument* instrument = instruments->find(pianist.instrument);
   if (instrument == nullptr) return Error{"no keyboard instrument \"" + pianist.instrument + "\""};
-  auto model = piano::load_fingering_model("default", pianist.hand_size, builder.content_dir(),
-                                           instrument);
+  auto model = fingering_planner::load_fingering_model("default", pianist.hand_size,
+                                                       builder.content_dir(), instrument);
   if (!model) return model.error();
   auto action = key_action::load_key_action(
       key_action::key_action_path(builder.content_dir()), instrument->touch_or_piano(),
@@ -283,7 +283,8 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
                                                 finger_motion::PianistMotionHandle{plan.motion});
   PianoRig rig;
   // The generated hand models are made at hands.json's default preset (content/generator).
-  auto default_hands = piano::load_fingering_model("default", "", builder.content_dir());
+  auto default_hands =
+      fingering_planner::load_fingering_model("default", "", builder.content_dir());
   if (!default_hands) return default_hands.error();
   rig.hand_scale = static_cast<float>(model->hand.scale() / default_hands->hand.scale());
   for (int side = 0; side < 2; ++side) {
@@ -349,4 +350,4 @@ Status PianoPlugin::build_pianist(stage::StageBuilder& builder, std::size_t inde
   return Status::success();
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

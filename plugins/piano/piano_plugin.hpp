@@ -14,7 +14,7 @@
 #include <tutti/piano/piano_stops.hpp>
 #include <tutti/stage/family_plugin.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 class PianoPlugin final : public stage::FamilyPlugin {
  public:
@@ -46,4 +46,4 @@ class PianoPlugin final : public stage::FamilyPlugin {
   PianoSceneSection section_;
 };
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

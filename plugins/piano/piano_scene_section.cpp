@@ -11,7 +11,7 @@
 #include <tutti/piano/keyboard_players.hpp>
 #include <tutti/scene/performance_marks.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 namespace fs = std::filesystem;
@@ -269,4 +269,4 @@ Status PianoSceneSection::read(const json& document, const SectionContext& conte
   return {};
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -10,7 +10,7 @@
 
 #include <tutti/scene/scene_section.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 class PianoSceneSection final : public scene::SceneSection {
  public:
@@ -20,4 +20,4 @@ class PianoSceneSection final : public scene::SceneSection {
               scene::Scene& scene) const override;
 };
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -8,7 +8,7 @@
 #include <tutti/components/foot.hpp>
 #include <tutti/components/hand.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 constexpr stage::StopKind kKeyDown{"key_down", "key bottom", true};
@@ -70,4 +70,4 @@ std::unique_ptr<stage::StopTracker> track_keyboard_stops(ecs::World& world) {
   return std::make_unique<KeyboardStopTracker>(std::move(fingers), std::move(feet));
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

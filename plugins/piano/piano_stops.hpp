@@ -9,10 +9,10 @@
 
 #include <tutti/stage/contact_detector.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 std::span<const stage::StopKind* const> keyboard_stop_kinds();
 // Watches every Finger, then every Foot, each in spawn order; nullptr when the world has none.
 std::unique_ptr<stage::StopTracker> track_keyboard_stops(ecs::World& world);
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -16,7 +16,7 @@
 #include <tutti/piano_performance/performance_plan.hpp>
 #include <tutti/scene/load_scene.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 // A key outside the instrument's compass, moved by octaves onto it.
@@ -81,7 +81,8 @@ Status apply_finger_pins(const scene::Scene& scene, const KeyboardPlayer& pianis
 // The pianist's motion in the scene's performance style, and what the keys make of it.
 Result<key_action::HumanePerformance> perform_in_style(
     const scene::Scene& scene, const KeyboardPlayer& pianist, const music::Score& score,
-    const piano_performance::PianoPerformancePlan& paths, const piano::FingeringModel& model,
+    const piano_performance::PianoPerformancePlan& paths,
+    const fingering_planner::FingeringModel& model,
     const piano_model::KeyboardInstrument& instrument,
     const finger_motion::FingerMotionParams& params, const std::filesystem::path& content_dir) {
   auto styles = key_action::load_styles(key_action::styles_path(content_dir));
@@ -110,19 +111,19 @@ Result<key_action::HumanePerformance> perform_in_style(
 
 // The fingering of `unpinned`; chords a hand cannot span with it are rolled (chord_roll.hpp)
 // and the rolled score planned again with the same fingers, so hand paths and strokes follow.
-Result<piano::ScorePlan> plan_rolling_wide_chords(const music::Score& unpinned,
-                                                   const piano::FingeringModel& model,
-                                                   piano::ChordRolls& rolls) {
-  auto planned = piano::plan_score(unpinned, model);
+Result<fingering_planner::ScorePlan> plan_rolling_wide_chords(
+    const music::Score& unpinned, const fingering_planner::FingeringModel& model,
+    fingering_planner::ChordRolls& rolls) {
+  auto planned = fingering_planner::plan_score(unpinned, model);
   if (!planned) return planned.error();
-  rolls = piano::plan_chord_rolls(unpinned, *planned, model);
+  rolls = fingering_planner::plan_chord_rolls(unpinned, *planned, model);
   if (rolls.empty()) return planned;
   music::Score rolled = unpinned;
-  piano::apply_chord_rolls(rolls, rolled);
+  fingering_planner::apply_chord_rolls(rolls, rolled);
   for (std::size_t i = 0; i < rolled.notes.size() && i < planned->fingers.size(); ++i) {
     rolled.notes[i].finger = planned->fingers[i];
   }
-  return piano::plan_score(rolled, model);
+  return fingering_planner::plan_score(rolled, model);
 }
 
 }  // namespace
@@ -199,8 +200,8 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
   }
   // The editor's pins act locally: the fingering without them (the file's own marks are pins
   // there too) is planned once, then only the span around the pinned notes is searched again
-  // (piano::replan_score_locally). A pure function of the score and the pins, so the editor and
-  // `tutti render` get the same fingering whatever order the pins were placed in.
+  // (fingering_planner::replan_score_locally). A pure function of the score and the pins, so the
+  // editor and `tutti render` get the same fingering whatever order the pins were placed in.
   const music::Score unpinned = score;
   if (Status s = apply_finger_pins(scene, pianist, *instrument, score); !s) return s.error();
   std::vector<int> pinned_notes;
@@ -208,8 +209,8 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
     if (score.notes[i].finger != unpinned.notes[i].finger)
       pinned_notes.push_back(static_cast<int>(i));
   }
-  auto model =
-      piano::load_fingering_model("default", pianist.hand_size, content_dir, instrument);
+  auto model = fingering_planner::load_fingering_model("default", pianist.hand_size, content_dir,
+                                                       instrument);
   if (!model) return model.error();
   plan.base_key = pianist_base_key(scene, pianist);
   plan.plan_key = pianist_plan_key(scene, pianist);
@@ -226,7 +227,7 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
     plan.played = previous->played;
     plan.performance = previous->performance;
     plan.rolls = previous->rolls;
-    piano::apply_chord_rolls(plan.rolls, score);
+    fingering_planner::apply_chord_rolls(plan.rolls, score);
   } else {
     if (previous != nullptr && previous->base_key == plan.base_key) {
       plan.base_fingering = previous->base_fingering;
@@ -242,12 +243,12 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
                                 (plan.rolls.chords == 1 ? " chord" : " chords") +
                                 " too wide for the hand rolled");
     }
-    piano::apply_chord_rolls(plan.rolls, score);
+    fingering_planner::apply_chord_rolls(plan.rolls, score);
     plan.fingering = plan.base_fingering;
     if (!pinned_notes.empty()) {
-      piano::ScoreReplanSpan span;
-      auto replanned = piano::replan_score_locally(score, *model, {}, plan.base_fingering,
-                                                   pinned_notes, &span);
+      fingering_planner::ScoreReplanSpan span;
+      auto replanned = fingering_planner::replan_score_locally(
+          score, *model, {}, plan.base_fingering, pinned_notes, &span);
       if (!replanned) return replanned.error();
       plan.fingering = std::move(*replanned);
       builder.replanned(pianist.name + " fingering around the pins (" +
@@ -289,4 +290,4 @@ Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index
   return plan;
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -8,10 +8,10 @@
 #include <tutti/piano/piano_components.hpp>
 #include <tutti/stage/stage_builder.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 // The plan of keyboard_players(builder.scene())[index]. Adds what it planned afresh to
 // builder.replanned().
 Result<PianistPlan> plan_pianist(stage::StageBuilder& builder, std::size_t index);
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

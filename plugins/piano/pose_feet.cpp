@@ -12,7 +12,7 @@
 #include <tutti/stage/performer_rig.hpp>
 #include <tutti/stage/two_bone_ik.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 using piano_model::PedalGeometry;
@@ -133,4 +133,4 @@ void touch_pedals(const ecs::World& world, const PianoRig& rig, stage::Touching&
   }
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

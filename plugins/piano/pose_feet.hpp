@@ -10,7 +10,7 @@
 #include <tutti/stage/stage.hpp>
 #include <tutti/stage/touching.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 inline constexpr const char* kFeetSystemName = "organ_feet";
 
@@ -31,4 +31,4 @@ void pose_feet_on_pedals(const ecs::World& world, PianoRig& rig,
 // Each toe on a pedal it holds down, from the model that draws the foot.
 void touch_pedals(const ecs::World& world, const PianoRig& rig, stage::Touching& touching);
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -23,7 +23,7 @@
 #include <tutti/stage/stage.hpp>
 #include <tutti/stage/touching.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 using stage::PlacedModel;
@@ -239,4 +239,4 @@ void piano_skeleton_system(ecs::World& world, const ecs::FrameTime&) {
   });
 }
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

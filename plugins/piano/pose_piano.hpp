@@ -8,10 +8,10 @@
 #include <tutti/ecs/schedule.hpp>
 #include <tutti/ecs/world.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 
 void piano_skeleton_system(ecs::World& world, const ecs::FrameTime& frame);
 
 inline constexpr const char* kPianoSkeletonSystemName = "piano_skeleton";
 
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -14,8 +14,8 @@
 namespace tutti::brass_motion {
 
 // The brass planner's names used here (systems/fingering_planner).
-using brass::BrassPlanSummary;
-using brass::PlannerWeights;
+using fingering_planner::BrassPlanSummary;
+using fingering_planner::PlannerWeights;
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;

@@ -230,7 +230,7 @@ void settle_key_beds(HandFingerPlan& side, const FingerMotionPlan& plan,
 }  // namespace
 
 Result<FingerMotionPlan> plan_finger_motion(
-    const music::Score& score, const piano::ScorePlan& score_plan,
+    const music::Score& score, const fingering_planner::ScorePlan& score_plan,
     const spline_motion::HandPath& right_path, const spline_motion::HandPath& left_path,
     const piano_model::Keyboard& keyboard, const piano_model::HandModel& hand_model,
     const FingerMotionParams& params, std::span<const NoteStroke> strokes) {

@@ -56,7 +56,7 @@ struct NoteStroke {
 // `right_path` / `left_path`: the hands' planned paths (used for each release's lateral offset).
 // Phalanx lengths and root heights are scaled by hand_model.scale().
 Result<FingerMotionPlan> plan_finger_motion(
-    const music::Score& score, const piano::ScorePlan& score_plan,
+    const music::Score& score, const fingering_planner::ScorePlan& score_plan,
     const spline_motion::HandPath& right_path, const spline_motion::HandPath& left_path,
     const piano_model::Keyboard& keyboard, const piano_model::HandModel& hand_model,
     const FingerMotionParams& params, std::span<const NoteStroke> strokes = {});

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <string>
 
-namespace tutti::brass {
+namespace tutti::fingering_planner {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -124,4 +124,4 @@ Result<BrassLine> extract_line(const music::Score& score, int part, int voice,
   return line;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::fingering_planner

@@ -14,7 +14,7 @@
 #include <tutti/core/result.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::brass {
+namespace tutti::fingering_planner {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -39,4 +39,4 @@ int voices_in_part(const music::Score& score, int part);
 Result<BrassLine> extract_line(const music::Score& score, int part, int voice,
                                const Instrument& instrument);
 
-}  // namespace tutti::brass
+}  // namespace tutti::fingering_planner

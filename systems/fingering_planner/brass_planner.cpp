@@ -13,7 +13,7 @@
 #include <tutti/music/meter.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::brass {
+namespace tutti::fingering_planner {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -239,4 +239,4 @@ BrassPlanSummary plan_line(BrassLine& line, const PlannerWeights& w, const music
   return summary;
 }
 
-}  // namespace tutti::brass
+}  // namespace tutti::fingering_planner

@@ -25,7 +25,7 @@
 #include <tutti/core/result.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::brass {
+namespace tutti::fingering_planner {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -73,4 +73,4 @@ struct BrassPlanSummary {
 BrassPlanSummary plan_line(BrassLine& line, const PlannerWeights& w,
                            const music::Score* score = nullptr);
 
-}  // namespace tutti::brass
+}  // namespace tutti::fingering_planner

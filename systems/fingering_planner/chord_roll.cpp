@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::FingerRange;
@@ -109,4 +109,4 @@ void apply_chord_rolls(const ChordRolls& rolls, music::Score& score) {
   }
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -16,7 +16,7 @@
 #include <tutti/fingering_planner/plan_score.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 struct RolledNote {
   int note = -1;          // Score::notes index
@@ -39,4 +39,4 @@ ChordRolls plan_chord_rolls(const music::Score& score, const ScorePlan& plan,
 // are the ones the rolls were planned on.
 void apply_chord_rolls(const ChordRolls& rolls, music::Score& score);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

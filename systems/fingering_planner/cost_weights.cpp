@@ -6,7 +6,7 @@
 
 #include <tutti/piano_model/json_document.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::JsonReader;
@@ -176,4 +176,4 @@ Result<CostWeights> cost_weights_from_json(const nlohmann::json& document,
   return w;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

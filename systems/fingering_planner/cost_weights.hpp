@@ -17,7 +17,7 @@
 
 #include <tutti/core/result.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 inline constexpr double kInfiniteCost = std::numeric_limits<double>::infinity();
 
@@ -92,4 +92,4 @@ Result<CostWeights> load_cost_weights(const std::filesystem::path& path);
 Result<CostWeights> cost_weights_from_json(const nlohmann::json& document,
                                            const std::string& file_name);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 constexpr double kUnset = std::numeric_limits<double>::infinity();
@@ -100,4 +100,4 @@ void solve_event_range(const PreparedHand& hand, const FingeringModel& model,
   }
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -8,7 +8,7 @@
 
 #include <tutti/fingering_planner/hand_events.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 struct EventRange {
   int first = 0;  // first and last event searched (inclusive)
@@ -24,4 +24,4 @@ void solve_event_range(const PreparedHand& hand, const FingeringModel& model,
                        const EventRange& range, std::vector<int>& chosen,
                        std::vector<Diagnostic>& diagnostics);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -6,7 +6,7 @@
 #include <tutti/fingering_planner/event_dp.hpp>
 #include <tutti/fingering_planner/hand_events.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -31,4 +31,4 @@ Result<HandPlan> plan_hand_exact(std::span<const PlanNote> notes, music::Hand si
   return plan;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -16,7 +16,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/fingering_planner/hand_plan.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -27,4 +27,4 @@ Result<HandPlan> plan_hand_exact(std::span<const PlanNote> notes, music::Hand si
                                  const FingeringModel& model,
                                  std::span<const HandCorridor> other_hand = {});
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -3,7 +3,7 @@
 
 #include <utility>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandModel;
@@ -31,4 +31,4 @@ Result<FingeringModel> load_fingering_model(std::string_view weights, std::strin
   return FingeringModel{std::move(*keyboard), std::move(*hand), std::move(*cost)};
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

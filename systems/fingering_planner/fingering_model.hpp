@@ -14,7 +14,7 @@
 #include <tutti/piano_model/keyboard.hpp>
 #include <tutti/piano_model/keyboard_instruments.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::default_content_dir;
@@ -35,4 +35,4 @@ Result<FingeringModel> load_fingering_model(
     const std::filesystem::path& content_dir = default_content_dir(),
     const KeyboardInstrument* instrument = nullptr);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

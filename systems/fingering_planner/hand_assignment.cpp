@@ -7,7 +7,7 @@
 #include <numeric>
 #include <string>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::Keyboard;
@@ -497,4 +497,4 @@ HandAssignment assign_hands(const music::Score& score, const FingeringModel& mod
   return out;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

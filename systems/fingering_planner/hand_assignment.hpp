@@ -30,7 +30,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 enum class HandSource { file, part_name, staff, automatic, reach, unison, crossing, crowded, none };
 
@@ -41,4 +41,4 @@ struct HandAssignment {
 
 HandAssignment assign_hands(const music::Score& score, const FingeringModel& model);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

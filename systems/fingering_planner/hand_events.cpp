@@ -12,7 +12,7 @@
 #include <tutti/fingering_planner/other_hand_cost.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::FingerRange;
@@ -420,4 +420,4 @@ HandPlan finish_plan(const PreparedHand& hand, std::span<const int> chosen,
   return plan;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

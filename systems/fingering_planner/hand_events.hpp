@@ -20,7 +20,7 @@
 #include <tutti/fingering_planner/hand_plan.hpp>
 #include <tutti/fingering_planner/transition_cost.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -79,4 +79,4 @@ inline bool held_compatible(const Candidate& a, const Candidate& b) {
   return a.next_sig == b.held_sig;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

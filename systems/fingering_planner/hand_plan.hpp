@@ -16,7 +16,7 @@
 #include <tutti/music/score.hpp>
 #include <tutti/piano_model/hand_corridor.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridors;
@@ -56,4 +56,4 @@ struct HandPlan {
   std::vector<Diagnostic> diagnostics;
 };
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::Keyboard;
@@ -60,4 +60,4 @@ void LiveHandSplit::release(std::int64_t id) {
   }
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

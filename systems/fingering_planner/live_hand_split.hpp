@@ -15,7 +15,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 class LiveHandSplit {
  public:
@@ -45,4 +45,4 @@ class LiveHandSplit {
   std::array<std::vector<Down>, 2> down_;
 };
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

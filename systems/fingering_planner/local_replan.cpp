@@ -8,7 +8,7 @@
 #include <tutti/fingering_planner/event_dp.hpp>
 #include <tutti/fingering_planner/hand_events.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -163,4 +163,4 @@ Result<LocalReplan> replan_hand_locally(std::span<const PlanNote> notes, music::
   return out;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

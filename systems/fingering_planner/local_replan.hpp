@@ -16,7 +16,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/fingering_planner/hand_plan.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -43,4 +43,4 @@ Result<LocalReplan> replan_hand_locally(std::span<const PlanNote> notes, music::
                                         std::span<const int> edited,
                                         std::span<const HandCorridor> other_hand = {});
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

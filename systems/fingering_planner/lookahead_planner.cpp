@@ -7,7 +7,7 @@
 
 #include <tutti/fingering_planner/hand_events.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -77,4 +77,4 @@ Result<HandPlan> plan_hand_lookahead(std::span<const PlanNote> notes, music::Han
   return finish_plan(hand, chosen, notes, model);
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -12,7 +12,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/fingering_planner/hand_plan.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -22,4 +22,4 @@ Result<HandPlan> plan_hand_lookahead(std::span<const PlanNote> notes, music::Han
                                      const FingeringModel& model, int lookahead,
                                      std::span<const HandCorridor> other_hand = {});
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -40,4 +40,4 @@ void add_other_hand_cost(PreparedHand& hand, std::span<const HandCorridor> other
   }
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

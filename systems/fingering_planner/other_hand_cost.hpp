@@ -16,7 +16,7 @@
 #include <tutti/fingering_planner/hand_events.hpp>
 #include <tutti/piano_model/hand_corridor.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -26,4 +26,4 @@ using piano_model::HandCorridor;
 void add_other_hand_cost(PreparedHand& hand, std::span<const HandCorridor> other_hand,
                          const FingeringModel& model);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -11,7 +11,7 @@
 #include <tutti/music/meter.hpp>
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -247,4 +247,4 @@ Result<ScorePlan> replan_score_locally(const music::Score& score, const Fingerin
   return out;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -22,7 +22,7 @@
 #include <tutti/fingering_planner/hand_plan.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::HandCorridor;
@@ -76,4 +76,4 @@ Result<HandPlan> plan_hand(std::span<const PlanNote> notes, music::Hand side,
 // notes (duration-weighted; ties: major first, then the tonic of the lowest first note).
 std::vector<int> note_tonics(const music::Score& score);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 StreamingPianoPlanner::StreamingPianoPlanner(const FingeringModel& model,
                                              StreamingHandPlanner right, StreamingHandPlanner left)
@@ -63,4 +63,4 @@ void StreamingPianoPlanner::flush(double now_s, std::vector<StreamedFinger>& out
   left_.flush(now_s, out);
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -12,7 +12,7 @@
 #include <tutti/fingering_planner/live_hand_split.hpp>
 #include <tutti/fingering_planner/streaming_planner.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 class StreamingPianoPlanner {
  public:
@@ -53,4 +53,4 @@ class StreamingPianoPlanner {
   std::vector<Owner> owners_;           // sounding notes' hands, for note_off
 };
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -7,7 +7,7 @@
 
 #include <tutti/fingering_planner/exact_planner.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 // A window never holds more notes than this: keys stuck down (a lost note-off) are let go of
@@ -205,4 +205,4 @@ void StreamingHandPlanner::prune() {
   });
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

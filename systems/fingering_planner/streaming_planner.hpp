@@ -31,7 +31,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/fingering_planner/hand_plan.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 struct StreamingOptions {
   int lookahead = 0;  // future events an event waits for (>= 0)
@@ -103,4 +103,4 @@ class StreamingHandPlanner {
   std::vector<std::size_t> scratch_index_;
 };
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -10,7 +10,7 @@
 #include <tutti/fingering_planner/plan_score.hpp>
 #include <tutti/fingering_planner/streaming_piano.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 PlanNote plan_note(const music::Score& score, const FingeringModel& model,
@@ -150,4 +150,4 @@ Result<StreamingAgreement> measure_streaming_agreement(const music::Score& score
   return out;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -15,7 +15,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 struct HandAgreement {
   int notes = 0;
@@ -46,4 +46,4 @@ struct StreamingAgreement {
 Result<StreamingAgreement> measure_streaming_agreement(const music::Score& score,
                                                        const FingeringModel& model, int lookahead);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -7,7 +7,7 @@
 
 #include <tutti/music/pitch.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::FingerRange;
@@ -172,4 +172,4 @@ double transition_cost(const EventFingering& a, const EventFingering& b, double 
   return cost + pairs / count;
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -15,7 +15,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // One event's keys with their fingers, as the cost model sees them. Finger f is index f-1.
 struct EventFingering {
@@ -72,4 +72,4 @@ double transition_cost(const EventFingering& a, const EventFingering& b, double 
 //     min(shift_time_s, (1 - shift_hold_fraction) × inter_onset_s)), >= 0.
 double effective_dt(double release_to_attack_s, double inter_onset_s, const CostWeights& weights);
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

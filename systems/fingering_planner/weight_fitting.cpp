@@ -6,7 +6,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 struct Tunable {
@@ -252,4 +252,4 @@ Status save_cost_weights(const CostWeights& weights, const std::filesystem::path
   return Status::success();
 }
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -23,7 +23,7 @@
 #include <tutti/fingering_planner/plan_score.hpp>
 #include <tutti/music/score.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 
 // The piano model's names this planner uses (systems/piano_model).
 using piano_model::default_content_dir;
@@ -84,4 +84,4 @@ nlohmann::json cost_weights_to_json(const CostWeights& weights,
 Status save_cost_weights(const CostWeights& weights, const std::filesystem::path& path,
                          const std::string& description = "");
 
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -28,7 +28,7 @@ namespace tutti::key_action {
 
 struct HumaneInputs {
   const music::Score* score = nullptr;
-  const piano::ScorePlan* fingering = nullptr;
+  const fingering_planner::ScorePlan* fingering = nullptr;
   const spline_motion::HandPath* right_path = nullptr;
   const spline_motion::HandPath* left_path = nullptr;
   const piano_model::Keyboard* keyboard = nullptr;

@@ -149,7 +149,8 @@ void simulate_key(const finger_motion::FingerMotionPlan& plan, std::vector<Press
 
 }  // namespace
 
-std::vector<PlayedNote> simulate_keys(const music::Score& score, const piano::ScorePlan& fingering,
+std::vector<PlayedNote> simulate_keys(const music::Score& score,
+                                      const fingering_planner::ScorePlan& fingering,
                                       const finger_motion::PianistMotion& motion,
                                       const KeyAction& action,
                                       const KeySimulationOptions& options) {

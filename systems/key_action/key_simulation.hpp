@@ -47,7 +47,8 @@ struct KeySimulationOptions {
 
 // One PlayedNote per Score note (index = Score::notes index). A chord note that shares its
 // finger with a neighbouring key (more than five keys in a hand) sounds with that contact.
-std::vector<PlayedNote> simulate_keys(const music::Score& score, const piano::ScorePlan& fingering,
+std::vector<PlayedNote> simulate_keys(const music::Score& score,
+                                      const fingering_planner::ScorePlan& fingering,
                                       const finger_motion::PianistMotion& motion,
                                       const KeyAction& action,
                                       const KeySimulationOptions& options = {});

@@ -56,7 +56,8 @@ ContactGeometry contact_geometry(const finger_motion::FingerGeometry& g, bool bl
 
 }  // namespace
 
-NoteStrokes plan_note_strokes(const music::Score& score, const piano::ScorePlan& fingering,
+NoteStrokes plan_note_strokes(const music::Score& score,
+                              const fingering_planner::ScorePlan& fingering,
                               const piano_model::Keyboard& keyboard,
                               const piano_model::HandModel& hand_model,
                               const finger_motion::FingerMotionParams& params,

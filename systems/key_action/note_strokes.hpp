@@ -46,7 +46,8 @@ struct NoteStrokes {
 
 // `params`: the finger-motion parameters with the style applied (apply_style). Notes without a
 // hand or finger (not played) get the default stroke (bottom at the onset).
-NoteStrokes plan_note_strokes(const music::Score& score, const piano::ScorePlan& fingering,
+NoteStrokes plan_note_strokes(const music::Score& score,
+                              const fingering_planner::ScorePlan& fingering,
                               const piano_model::Keyboard& keyboard,
                               const piano_model::HandModel& hand_model,
                               const finger_motion::FingerMotionParams& params,

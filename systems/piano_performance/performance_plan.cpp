@@ -52,7 +52,7 @@ spline_motion::HandPath plan_hand_motion(const piano_model::HandCorridors& corri
   return result;
 }
 
-PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
+PianoPerformancePlan plan_performance_paths(fingering_planner::ScorePlan fingering,
                                             const PerformanceOptions& options) {
   PianoPerformancePlan plan;
   plan.fingering = std::move(fingering);
@@ -78,10 +78,10 @@ PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
 }
 
 Result<PianoPerformancePlan> plan_performance(const music::Score& score,
-                                              const piano::FingeringModel& model,
+                                              const fingering_planner::FingeringModel& model,
                                               const PerformanceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  auto fingering = piano::plan_score(score, model, options.fingering);
+  auto fingering = fingering_planner::plan_score(score, model, options.fingering);
   if (!fingering) return fingering.error();
   const double fingering_ms = ms_since(start);
   PianoPerformancePlan plan = plan_performance_paths(std::move(*fingering), options);

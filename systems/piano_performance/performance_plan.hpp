@@ -24,7 +24,7 @@
 namespace tutti::piano_performance {
 
 struct PerformanceOptions {
-  piano::PlanOptions fingering;
+  fingering_planner::PlanOptions fingering;
   spline_motion::PlanOptions path;
   RepairOptions repair;
   IdleRoomOptions idle_room;  // each hand out of the other's way while it does not play
@@ -53,19 +53,19 @@ struct PerformanceReport {
 };
 
 struct PianoPerformancePlan {
-  piano::ScorePlan fingering;
+  fingering_planner::ScorePlan fingering;
   spline_motion::HandPath right_path;
   spline_motion::HandPath left_path;
   PerformanceReport report;
 };
 
 Result<PianoPerformancePlan> plan_performance(const music::Score& score,
-                                              const piano::FingeringModel& model,
+                                              const fingering_planner::FingeringModel& model,
                                               const PerformanceOptions& options = {});
 
 // The hands' paths (repair + path + reports) for a fingering planned already, e.g. by
-// piano::replan_score_locally after a pin. report.fingering_ms is 0.
-PianoPerformancePlan plan_performance_paths(piano::ScorePlan fingering,
+// fingering_planner::replan_score_locally after a pin. report.fingering_ms is 0.
+PianoPerformancePlan plan_performance_paths(fingering_planner::ScorePlan fingering,
                                             const PerformanceOptions& options = {});
 
 // The other hand, for one hand's path: its corridors and its path (null = plan the hand alone).

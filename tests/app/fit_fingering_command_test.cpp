@@ -46,7 +46,7 @@ TEST(FitFingeringCommandTest, FitsFromThePaperPresetAndWritesLoadableWeights) {
   const FitRun r = fit(options);
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.out.find("match "), std::string::npos) << r.out;
-  auto weights = piano::load_cost_weights(output);
+  auto weights = fingering_planner::load_cost_weights(output);
   ASSERT_TRUE(weights.ok()) << weights.error().message;
   // The same inputs give the same file, byte for byte.
   std::ifstream first(output);

@@ -192,7 +192,7 @@ TEST(PoseCheck, InstrumentsComeDownBetweenPhrases) {
   ASSERT_TRUE(staged) << staged.error().message;
   stage::Stage& stage = **staged;
   const auto mouthpiece_to_mouth = [&](ecs::Entity performer) {
-    const auto& rig = stage.world().get<brass_family::BrassRig>(performer);
+    const auto& rig = stage.world().get<brass::BrassRig>(performer);
     const auto& horn = stage.world().get<stage::PlacedModel>(rig.horn);
     const auto& body = stage.world().get<stage::PlacedModel>(rig.body);
     std::vector<glm::mat4> horn_world(horn.asset->nodes.size()), body_world(body.asset->nodes.size());
@@ -205,7 +205,7 @@ TEST(PoseCheck, InstrumentsComeDownBetweenPhrases) {
   for (const double t : {-2.4, 1.0}) {
     stage.run({t, 1.0 / 30});
     for (ecs::Entity performer : stage.performers()) {
-      if (stage.world().try_get<brass_family::BrassRig>(performer) == nullptr) continue;
+      if (stage.world().try_get<brass::BrassRig>(performer) == nullptr) continue;
       const float distance = mouthpiece_to_mouth(performer);
       if (t < 0) {
         EXPECT_GT(distance, 0.1f) << "at rest, t = " << t;

@@ -14,7 +14,7 @@
 
 namespace {
 
-using namespace tutti::brass;
+using namespace tutti::fingering_planner;
 using namespace tutti::brass_model;
 using namespace tutti::brass_motion;
 

@@ -33,7 +33,7 @@ const Fixture& fixture() {
         finger_motion::load_finger_motion_params(finger_motion::finger_motion_params_path(content));
     if (!keyboard || !hand || !params) std::abort();
     music::Score score;
-    piano::ScorePlan plan;
+    fingering_planner::ScorePlan plan;
     std::mt19937_64 rng(7);
     for (int i = 0; i < 2000; ++i) {
       music::Note note;

@@ -10,7 +10,7 @@
 
 namespace {
 
-using namespace tutti::piano;
+using namespace tutti::fingering_planner;
 
 const FingeringModel& model() {
   static const FingeringModel m = *load_fingering_model("default");

@@ -18,7 +18,7 @@ using namespace tutti;
 
 struct Piece {
   music::Score score;
-  piano::FingeringModel model;
+  fingering_planner::FingeringModel model;
   piano_performance::PianoPerformancePlan plan;
   key_action::KeyAction action;
   key_action::StyleBook styles;
@@ -28,7 +28,7 @@ struct Piece {
 const Piece* load_piece(const std::filesystem::path& file) {
   const std::filesystem::path content = TUTTI_CONTENT_DIR;
   auto score = music::load_score(file);
-  auto model = piano::load_fingering_model("default", "", content);
+  auto model = fingering_planner::load_fingering_model("default", "", content);
   auto action = key_action::load_key_action(key_action::key_action_path(content));
   auto styles = key_action::load_styles(key_action::styles_path(content));
   auto params =

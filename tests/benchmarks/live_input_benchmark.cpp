@@ -21,22 +21,22 @@ namespace {
 using namespace tutti;
 
 struct Fixture {
-  piano::FingeringModel model;
+  fingering_planner::FingeringModel model;
   finger_motion::FingerMotionParams params;
-  std::vector<piano::PlanNote> notes;  // arrival order
+  std::vector<fingering_planner::PlanNote> notes;  // arrival order
   std::vector<music::Hand> hands;
 };
 
 const Fixture& fixture() {
   static const Fixture f = [] {
     Fixture out;
-    auto model = piano::load_fingering_model();
+    auto model = fingering_planner::load_fingering_model();
     auto params = finger_motion::load_finger_motion_params(
         finger_motion::finger_motion_params_path(piano_model::default_content_dir()));
     auto score = music::load_score(std::filesystem::path(TUTTI_SOURCE_DIR) /
                                    "content/music/ode_to_joy.musicxml");
     if (!model || !params || !score) std::abort();
-    auto plan = piano::plan_score(*score, *model);
+    auto plan = fingering_planner::plan_score(*score, *model);
     if (!plan) std::abort();
     std::vector<std::size_t> order(score->notes.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -57,12 +57,12 @@ const Fixture& fixture() {
 
 void BM_StreamingPlannerPerNote(benchmark::State& state) {
   const Fixture& f = fixture();
-  piano::StreamingOptions options;
+  fingering_planner::StreamingOptions options;
   options.lookahead = static_cast<int>(state.range(0));
-  std::vector<piano::StreamedFinger> out;
+  std::vector<fingering_planner::StreamedFinger> out;
   out.reserve(f.notes.size());
   for (auto _ : state) {
-    auto planner = piano::StreamingPianoPlanner::create(f.model, options);
+    auto planner = fingering_planner::StreamingPianoPlanner::create(f.model, options);
     out.clear();
     double last = -1.0;
     for (std::size_t i = 0; i < f.notes.size(); ++i) {
@@ -82,7 +82,7 @@ void BM_LivePianistUpdatePerNote(benchmark::State& state) {
   const Fixture& f = fixture();
   // The demo's notes as live events (note-ons and note-offs), one frame each.
   std::vector<live::LiveNoteEvent> events;
-  for (const piano::PlanNote& n : f.notes) {
+  for (const fingering_planner::PlanNote& n : f.notes) {
     events.push_back({n.onset_s, n.key, 90, true});
     events.push_back({n.offset_s, n.key, 0, false});
   }

@@ -35,9 +35,9 @@ FingerMotionPlan rest_plan() {
   auto params = finger_motion::load_finger_motion_params(
       finger_motion::finger_motion_params_path(content_dir()));
   EXPECT_TRUE(params.ok());
-  auto plan =
-      finger_motion::plan_finger_motion(music::Score{}, piano::ScorePlan{}, spline_motion::HandPath{},
-                                        spline_motion::HandPath{}, *keyboard, *hands, *params);
+  auto plan = finger_motion::plan_finger_motion(
+      music::Score{}, fingering_planner::ScorePlan{}, spline_motion::HandPath{},
+      spline_motion::HandPath{}, *keyboard, *hands, *params);
   EXPECT_TRUE(plan.ok()) << plan.error().message;
   return *plan;
 }

@@ -36,24 +36,24 @@ TEST(Document, EditUndoRedo) {
   auto doc = Document::open(dir.copy_scene("quartet.json"));
   ASSERT_TRUE(doc) << doc.error().message;
   const Json original = doc->json();
-  const double before = *brass_family::brass_players(doc->scene())[1].variation.sway_amount;
+  const double before = *brass::brass_players(doc->scene())[1].variation.sway_amount;
   auto edit = set_variation(doc->json(), performer_at(1), "sway_amount", 0.9);
   ASSERT_TRUE(edit) << edit.error().message;
   ASSERT_TRUE(doc->apply(*edit));
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(doc->scene())[1].variation.sway_amount, 0.9);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(doc->scene())[1].variation.sway_amount, 0.9);
   EXPECT_TRUE(doc->dirty());
   EXPECT_EQ(doc->undo_label(), "set sway_amount of Trumpet 2");
   ASSERT_TRUE(doc->undo());
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(doc->scene())[1].variation.sway_amount, before);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(doc->scene())[1].variation.sway_amount, before);
   EXPECT_TRUE(same_json(doc->json(), original));
   EXPECT_FALSE(doc->dirty());
   ASSERT_TRUE(doc->redo());
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(doc->scene())[1].variation.sway_amount, 0.9);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(doc->scene())[1].variation.sway_amount, 0.9);
   // A new edit clears the redo list.
   ASSERT_TRUE(doc->undo());
   ASSERT_TRUE(doc->apply(*set_seed(doc->json(), performer_at(0), 99)));
   EXPECT_FALSE(doc->can_redo());
-  EXPECT_EQ(brass_family::brass_players(doc->scene())[0].seed, 99u);
+  EXPECT_EQ(brass::brass_players(doc->scene())[0].seed, 99u);
 }
 
 TEST(Document, AnEditThatBreaksTheSceneIsRefused) {
@@ -84,13 +84,13 @@ TEST(Document, SaveWritesWhatWasEditedAndKeepsABackup) {
   EXPECT_EQ(read_text(backup_path(file)), original);
   auto reloaded = scene::load_scene(file, performance::scene_load_options());
   ASSERT_TRUE(reloaded) << reloaded.error().message;
-  EXPECT_EQ(brass_family::brass_players(*reloaded)[2].breaths.add_s, std::vector<double>{6.0});
-  EXPECT_EQ(brass_family::brass_players(*reloaded), brass_family::brass_players(doc->scene()));
+  EXPECT_EQ(brass::brass_players(*reloaded)[2].breaths.add_s, std::vector<double>{6.0});
+  EXPECT_EQ(brass::brass_players(*reloaded), brass::brass_players(doc->scene()));
   // Everything else as it was (the same scene, field for field).
   auto first = scene::load_scene(backup_path(file), performance::scene_load_options());
   ASSERT_TRUE(first) << first.error().message;
-  brass_family::edit_brass_players(*reloaded)[2].breaths = {};
-  EXPECT_EQ(brass_family::brass_players(*reloaded), brass_family::brass_players(*first));
+  brass::edit_brass_players(*reloaded)[2].breaths = {};
+  EXPECT_EQ(brass::brass_players(*reloaded), brass::brass_players(*first));
   EXPECT_EQ(reloaded->shots.size(), first->shots.size());
   // The saved text keeps the file's key order and short arrays on one line.
   const std::string saved = read_text(file);
@@ -116,9 +116,9 @@ TEST(Document, UnsavedEditsSurviveInTheAutosave) {
   auto doc = Document::open(file);
   ASSERT_TRUE(doc);
   ASSERT_TRUE(doc->autosave_available());
-  EXPECT_FALSE(brass_family::brass_players(doc->scene())[2].variation.breath_depth.has_value());
+  EXPECT_FALSE(brass::brass_players(doc->scene())[2].variation.breath_depth.has_value());
   ASSERT_TRUE(doc->recover_autosave());
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(doc->scene())[2].variation.breath_depth, 0.25);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(doc->scene())[2].variation.breath_depth, 0.25);
   EXPECT_TRUE(doc->dirty());
   EXPECT_EQ(doc->undo_label(), "recover unsaved changes");
   ASSERT_TRUE(doc->save());

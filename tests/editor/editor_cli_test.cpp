@@ -130,9 +130,9 @@ TEST(EditorCli, QuartetRoundTrip) {
   // Reopened: every edit is there.
   auto saved = scene::load_scene(scene, performance::scene_load_options());
   ASSERT_TRUE(saved) << saved.error().message;
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(*saved)[1].variation.sway_amount, 1.0);
-  ASSERT_EQ(brass_family::brass_players(*saved)[2].breaths.add_s.size(), 1u);
-  EXPECT_NEAR(brass_family::brass_players(*saved)[2].breaths.add_s[0], boundary,
+  EXPECT_DOUBLE_EQ(*brass::brass_players(*saved)[1].variation.sway_amount, 1.0);
+  ASSERT_EQ(brass::brass_players(*saved)[2].breaths.add_s.size(), 1u);
+  EXPECT_NEAR(brass::brass_players(*saved)[2].breaths.add_s[0], boundary,
               0.0005);  // to the millisecond
   auto reopened = Session::open(scene);
   ASSERT_TRUE(reopened);
@@ -213,7 +213,7 @@ TEST(EditorCli, ASceneMadeFromAPieceLoadsEditsAndRenders) {
   ASSERT_EQ(code, 0) << output;
   auto saved = scene::load_scene(scene, performance::scene_load_options());
   ASSERT_TRUE(saved) << saved.error().message;
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(*saved)[1].variation.sway_amount, 1.0);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(*saved)[1].variation.sway_amount, 1.0);
   EXPECT_EQ(saved->camera_at(9.0).name, "trumpet_2_front");
   const int changed = differing_pixels(still(backup_path(scene), 9.0, dir.path() / "before.png"),
                                        still(scene, 9.0, dir.path() / "after.png"));
@@ -252,8 +252,8 @@ TEST(EditorCli, ABreathAddedThenDeletedRendersAsTheOriginal) {
   EXPECT_EQ(read_text(after), read_text(before)) << "the PNGs differ byte for byte";
   auto reopened = scene::load_scene(scene, performance::scene_load_options());
   ASSERT_TRUE(reopened) << reopened.error().message;
-  EXPECT_TRUE(brass_family::brass_players(*reopened)[2].breaths.add_s.empty());
-  EXPECT_TRUE(brass_family::brass_players(*reopened)[2].breaths.remove_s.empty());
+  EXPECT_TRUE(brass::brass_players(*reopened)[2].breaths.add_s.empty());
+  EXPECT_TRUE(brass::brass_players(*reopened)[2].breaths.remove_s.empty());
 }
 
 TEST(EditorCli, KilledWhileSavingThePreviousFileIsIntact) {

@@ -81,7 +81,7 @@ TEST_F(EditorUi, DraggingASliderSetsTheVariationAsOneUndoStep) {
   }
   io.MouseDown[0] = false;
   frame(s);
-  const auto& value = brass_family::brass_players(s.document().scene())[2].variation.sway_amount;
+  const auto& value = brass::brass_players(s.document().scene())[2].variation.sway_amount;
   ASSERT_TRUE(value.has_value());
   EXPECT_NEAR(*value, 0.75, 0.06);  // the grab's width offsets the mapping a little
   EXPECT_EQ(s.document().history().size(), 1u) << "one drag, one undo step";
@@ -94,13 +94,13 @@ TEST_F(EditorUi, ClickingReRollChangesTheSeedAndUndoRestoresIt) {
   Session& s = **session;
   ui_.selected_lane = 1;
   frame(s);
-  const std::uint64_t seed = brass_family::brass_players(s.document().scene())[1].seed;
+  const std::uint64_t seed = brass::brass_players(s.document().scene())[1].seed;
   const WidgetBox reroll = widget("inspector/reroll");
   click(s, (reroll.x0 + reroll.x1) / 2, (reroll.y0 + reroll.y1) / 2);
-  EXPECT_EQ(brass_family::brass_players(s.document().scene())[1].seed, reroll_seed(seed));
+  EXPECT_EQ(brass::brass_players(s.document().scene())[1].seed, reroll_seed(seed));
   const WidgetBox undo = widget("transport/undo");
   click(s, (undo.x0 + undo.x1) / 2, (undo.y0 + undo.y1) / 2);
-  EXPECT_EQ(brass_family::brass_players(s.document().scene())[1].seed, seed);
+  EXPECT_EQ(brass::brass_players(s.document().scene())[1].seed, seed);
 }
 
 TEST_F(EditorUi, ClickingTheRulerSeeks) {
@@ -146,7 +146,7 @@ TEST_F(EditorUi, ALanesMenuAddsABreathAndDeleteRemovesIt) {
   frame(s);
   const WidgetBox item = widget("lane_popup/breathe");
   click(s, (item.x0 + item.x1) / 2, (item.y0 + item.y1) / 2);
-  const auto& marks = brass_family::brass_players(s.document().scene())[2].breaths.add_s;
+  const auto& marks = brass::brass_players(s.document().scene())[2].breaths.add_s;
   ASSERT_EQ(marks.size(), 1u) << ui_.status;
   const double boundary = s.breath_boundary(performer_at(2), 6.3);
   // The mark names the next note, where it was asked for (written to the millisecond).
@@ -164,9 +164,8 @@ TEST_F(EditorUi, ALanesMenuAddsABreathAndDeleteRemovesIt) {
   frame(s);
   io.KeysDown[ImGuiKey_Delete] = false;
   frame(s);
-  EXPECT_TRUE(brass_family::brass_players(s.document().scene())[2].breaths.add_s.empty())
-      << ui_.status;
-  EXPECT_TRUE(brass_family::brass_players(s.document().scene())[2].breaths.remove_s.empty())
+  EXPECT_TRUE(brass::brass_players(s.document().scene())[2].breaths.add_s.empty()) << ui_.status;
+  EXPECT_TRUE(brass::brass_players(s.document().scene())[2].breaths.remove_s.empty())
       << "a marked breath leaves no remove mark behind";
   EXPECT_EQ(s.document().history().size(), 2u);
 }

@@ -40,18 +40,17 @@ class SceneEdits : public ::testing::Test {
 TEST_F(SceneEdits, BreathMarks) {
   apply(add_breath(doc_->json(), performer_at(1), 7.25));
   apply(add_breath(doc_->json(), performer_at(1), 3.5));
-  EXPECT_EQ(brass_family::brass_players(scene())[1].breaths.add_s,
-            (std::vector<double>{3.5, 7.25}));
+  EXPECT_EQ(brass::brass_players(scene())[1].breaths.add_s, (std::vector<double>{3.5, 7.25}));
   // Deleting a marked breath drops the mark; deleting a planned one adds a "remove".
   apply(delete_breath(doc_->json(), performer_at(1), 7.25, /*marked_only=*/true));
   apply(delete_breath(doc_->json(), performer_at(1), 10.0));
-  EXPECT_EQ(brass_family::brass_players(scene())[1].breaths.add_s, (std::vector<double>{3.5}));
-  EXPECT_EQ(brass_family::brass_players(scene())[1].breaths.remove_s, (std::vector<double>{10.0}));
+  EXPECT_EQ(brass::brass_players(scene())[1].breaths.add_s, (std::vector<double>{3.5}));
+  EXPECT_EQ(brass::brass_players(scene())[1].breaths.remove_s, (std::vector<double>{10.0}));
   // Adding where a breath was removed undoes the removal.
   apply(add_breath(doc_->json(), performer_at(1), 10.0));
-  EXPECT_TRUE(brass_family::brass_players(scene())[1].breaths.remove_s.empty());
+  EXPECT_TRUE(brass::brass_players(scene())[1].breaths.remove_s.empty());
   apply(move_breath(doc_->json(), performer_at(1), 3.5, /*from_marked_only=*/true, 4.0));
-  EXPECT_EQ(brass_family::brass_players(scene())[1].breaths.add_s, (std::vector<double>{4.0}));
+  EXPECT_EQ(brass::brass_players(scene())[1].breaths.add_s, (std::vector<double>{4.0}));
   // Everything undone: no "breaths" key left.
   while (doc_->can_undo()) ASSERT_TRUE(doc_->undo());
   EXPECT_FALSE(doc_->json()["performers"][1].contains("breaths"));
@@ -76,17 +75,15 @@ TEST_F(SceneEdits, Expressions) {
   scene::Expression relaxed{scene::ExpressionKind::relaxed, 1.0, 2.0, 1.0};
   apply(add_expression(doc_->json(), performer_at(0), strain));
   apply(add_expression(doc_->json(), performer_at(0), relaxed));
-  ASSERT_EQ(brass_family::brass_players(scene())[0].expressions.size(), 2u);
-  EXPECT_EQ(brass_family::brass_players(scene())[0].expressions[0], relaxed);  // in start order
-  EXPECT_EQ(brass_family::brass_players(scene())[0].expressions[1], strain);
+  ASSERT_EQ(brass::brass_players(scene())[0].expressions.size(), 2u);
+  EXPECT_EQ(brass::brass_players(scene())[0].expressions[0], relaxed);  // in start order
+  EXPECT_EQ(brass::brass_players(scene())[0].expressions[1], strain);
   apply(move_expression(doc_->json(), performer_at(0), strain, 5.0));
   const scene::Expression moved{scene::ExpressionKind::strain, 5.0, 7.0, 0.8};
-  EXPECT_EQ(brass_family::brass_players(scene())[0].expressions[1], moved)
-      << "the same length, later";
+  EXPECT_EQ(brass::brass_players(scene())[0].expressions[1], moved) << "the same length, later";
   ASSERT_TRUE(doc_->undo());
   apply(delete_expression(doc_->json(), performer_at(0), strain));
-  EXPECT_EQ(brass_family::brass_players(scene())[0].expressions,
-            std::vector<scene::Expression>{relaxed});
+  EXPECT_EQ(brass::brass_players(scene())[0].expressions, std::vector<scene::Expression>{relaxed});
   EXPECT_FALSE(delete_expression(doc_->json(), performer_at(0), strain));
   // An expression the loader refuses (end before start) is refused by the document.
   auto backwards =
@@ -112,14 +109,14 @@ TEST_F(SceneEdits, CameraCuts) {
 
 TEST_F(SceneEdits, VariationAndSeed) {
   apply(set_variation(doc_->json(), performer_at(2), "head_motion", 0.75));
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(scene())[2].variation.head_motion, 0.75);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(scene())[2].variation.head_motion, 0.75);
   apply(set_variation(doc_->json(), performer_at(2), "head_motion", std::nullopt));
-  EXPECT_FALSE(brass_family::brass_players(scene())[2].variation.head_motion.has_value());
+  EXPECT_FALSE(brass::brass_players(scene())[2].variation.head_motion.has_value());
   EXPECT_FALSE(doc_->json()["performers"][2].contains("variation"));
   EXPECT_FALSE(set_variation(doc_->json(), performer_at(2), "swagger", 0.5));
-  const std::uint64_t seed = brass_family::brass_players(scene())[2].seed;
+  const std::uint64_t seed = brass::brass_players(scene())[2].seed;
   apply(set_seed(doc_->json(), performer_at(2), reroll_seed(seed)));
-  EXPECT_NE(brass_family::brass_players(scene())[2].seed, seed);
+  EXPECT_NE(brass::brass_players(scene())[2].seed, seed);
   EXPECT_EQ(reroll_seed(seed), reroll_seed(seed)) << "deterministic";
   EXPECT_FALSE(set_seed(doc_->json(), PlayerRef{"/pianist", ""}, 1))
       << "the quartet has no pianist";
@@ -132,11 +129,10 @@ TEST(SceneEditsPiano, PinAndUnpin) {
   ASSERT_TRUE(doc->apply(*pin_finger(doc->json(), kPianist, 1.5, 64, 3)));
   ASSERT_TRUE(
       doc->apply(*pin_finger(doc->json(), kPianist, 1.5, 64, 2)));  // the same note: replaced
-  ASSERT_EQ(piano_family::keyboard_players(doc->scene()).front().pins.size(), 1u);
-  EXPECT_EQ(piano_family::keyboard_players(doc->scene()).front().pins[0],
-            (piano_family::FingerPin{1.5, 64, 2}));
+  ASSERT_EQ(piano::keyboard_players(doc->scene()).front().pins.size(), 1u);
+  EXPECT_EQ(piano::keyboard_players(doc->scene()).front().pins[0], (piano::FingerPin{1.5, 64, 2}));
   ASSERT_TRUE(doc->apply(*unpin_finger(doc->json(), kPianist, 1.5, 64)));
-  EXPECT_TRUE(piano_family::keyboard_players(doc->scene()).front().pins.empty());
+  EXPECT_TRUE(piano::keyboard_players(doc->scene()).front().pins.empty());
   EXPECT_FALSE(doc->json()["pianist"].contains("pins"));
   EXPECT_FALSE(unpin_finger(doc->json(), kPianist, 1.5, 64));
 }
@@ -154,15 +150,14 @@ TEST(SceneEditsPiano, TwoPianistsEachTheirOwn) {
   ASSERT_EQ(pin->changes.size(), 1u);
   EXPECT_EQ(pin->changes[0].pointer, "/pianists/1/pins");
   ASSERT_TRUE(doc->apply(std::move(*pin)));
-  EXPECT_TRUE(piano_family::keyboard_players(doc->scene())[0].pins.empty());
-  ASSERT_EQ(piano_family::keyboard_players(doc->scene())[1].pins.size(), 1u);
-  EXPECT_EQ(piano_family::keyboard_players(doc->scene())[1].pins[0],
-            (piano_family::FingerPin{0.0, 64, 2}));
+  EXPECT_TRUE(piano::keyboard_players(doc->scene())[0].pins.empty());
+  ASSERT_EQ(piano::keyboard_players(doc->scene())[1].pins.size(), 1u);
+  EXPECT_EQ(piano::keyboard_players(doc->scene())[1].pins[0], (piano::FingerPin{0.0, 64, 2}));
   auto seed = set_seed(doc->json(), PlayerRef{"/pianists/1", "pianist 2"}, 99);
   ASSERT_TRUE(seed) << seed.error().message;
   EXPECT_EQ(seed->label, "new seed for pianist 2");
   ASSERT_TRUE(doc->apply(std::move(*seed)));
-  EXPECT_EQ(piano_family::keyboard_players(doc->scene())[1].seed, 99u);
+  EXPECT_EQ(piano::keyboard_players(doc->scene())[1].seed, 99u);
   EXPECT_EQ(doc->json()["pianists"][0], first);
   EXPECT_FALSE(pin_finger(doc->json(), PlayerRef{"/pianists/2", ""}, 0.0, 64, 2))
       << "there is no third pianist";

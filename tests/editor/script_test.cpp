@@ -95,16 +95,16 @@ TEST(Script, EditsSaveAndQuit) {
   EXPECT_EQ(*step, ScriptStep::quit);
   auto saved = scene::load_scene(file, performance::scene_load_options());
   ASSERT_TRUE(saved) << saved.error().message;
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(*saved)[1].variation.sway_amount, 0.8);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(*saved)[1].variation.sway_amount, 0.8);
   // The mark is stored at the boundary it names (the first note at or after 6 s), to the
   // millisecond.
   const double boundary = (*session)->breath_boundary(performer_at(2), 6.0);
   EXPECT_GT(boundary, 6.0);
-  ASSERT_EQ(brass_family::brass_players(*saved)[2].breaths.add_s.size(), 1u);
-  EXPECT_EQ(brass_family::brass_players(*saved)[2].breaths.add_s[0],
+  ASSERT_EQ(brass::brass_players(*saved)[2].breaths.add_s.size(), 1u);
+  EXPECT_EQ(brass::brass_players(*saved)[2].breaths.add_s[0],
             std::round(boundary * 1000.0) / 1000.0);
-  ASSERT_EQ(brass_family::brass_players(*saved)[0].expressions.size(), 1u);
-  EXPECT_DOUBLE_EQ(brass_family::brass_players(*saved)[0].expressions[0].amount, 0.7);
+  ASSERT_EQ(brass::brass_players(*saved)[0].expressions.size(), 1u);
+  EXPECT_DOUBLE_EQ(brass::brass_players(*saved)[0].expressions[0].amount, 0.7);
   EXPECT_EQ(saved->cameras[saved->shots[saved->shot_at(12.6)].camera].name, "wide");
 }
 

@@ -215,11 +215,9 @@ TEST(Session, ASliderDragIsOneUndoStep) {
                         /*coalesce=*/v > 0.1));
   }
   EXPECT_EQ(s.document().history().size(), 1u);
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(s.document().scene())[0].variation.head_motion,
-                   0.4);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(s.document().scene())[0].variation.head_motion, 0.4);
   ASSERT_TRUE(s.undo());
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(s.document().scene())[0].variation.head_motion,
-                   0.5);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(s.document().scene())[0].variation.head_motion, 0.5);
 }
 
 }  // namespace

@@ -364,7 +364,7 @@ TEST(PerformanceExport, AUsersCharacterExportsOnItsOwnSkeleton) {
   auto stage = build(dir / "scene.json");
   ASSERT_TRUE(stage);
   ASSERT_TRUE(stage->world()
-                  .get<brass_family::BrassRig>(stage->find_performer("brass", 0))
+                  .get<brass::BrassRig>(stage->find_performer("brass", 0))
                   .body_retarget.has_value());
   const float worst = worst_world_error(*stage, 15, 0, 300);
   EXPECT_LT(worst, 5e-4f);

@@ -22,7 +22,7 @@ namespace {
 constexpr double kFrameS = 1.0 / 60.0;
 
 std::unique_ptr<LivePianist> make_pianist(const LivePianistOptions& options = {}) {
-  auto model = piano::load_fingering_model();
+  auto model = fingering_planner::load_fingering_model();
   EXPECT_TRUE(model.ok());
   auto params = finger_motion::load_finger_motion_params(
       finger_motion::finger_motion_params_path(piano_model::default_content_dir()));

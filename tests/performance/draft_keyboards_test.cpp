@@ -59,18 +59,18 @@ TEST(DraftKeyboards, OrganAndSynthPartsGetPlayersBesideThePianist) {
   with_music.document["music"] =
       (std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "music" / "piano_duo.musicxml").string();
   const scene::Scene scene = parsed(with_music, std::filesystem::current_path());
-  ASSERT_EQ(piano_family::keyboard_players(scene).size(), 3u);
-  EXPECT_EQ(piano_family::keyboard_players(scene)[0].instrument, "piano");
-  EXPECT_EQ(piano_family::keyboard_players(scene)[0].parts, std::vector<std::string>{"Piano"});
-  EXPECT_EQ(piano_family::keyboard_players(scene)[1].instrument, "organ");
-  EXPECT_EQ(piano_family::keyboard_players(scene)[1].name, "organist");
-  EXPECT_EQ(piano_family::keyboard_players(scene)[1].parts, std::vector<std::string>{"Track 2"});
-  EXPECT_EQ(piano_family::keyboard_players(scene)[2].instrument, "synth");
-  EXPECT_EQ(piano_family::keyboard_players(scene)[2].name, "keyboardist");
+  ASSERT_EQ(piano::keyboard_players(scene).size(), 3u);
+  EXPECT_EQ(piano::keyboard_players(scene)[0].instrument, "piano");
+  EXPECT_EQ(piano::keyboard_players(scene)[0].parts, std::vector<std::string>{"Piano"});
+  EXPECT_EQ(piano::keyboard_players(scene)[1].instrument, "organ");
+  EXPECT_EQ(piano::keyboard_players(scene)[1].name, "organist");
+  EXPECT_EQ(piano::keyboard_players(scene)[1].parts, std::vector<std::string>{"Track 2"});
+  EXPECT_EQ(piano::keyboard_players(scene)[2].instrument, "synth");
+  EXPECT_EQ(piano::keyboard_players(scene)[2].name, "keyboardist");
   // Side by side on the audience's left of the piano, a piano's width and more apart.
-  EXPECT_LT(piano_family::keyboard_players(scene)[1].position_m.x, -1.4);
-  EXPECT_LT(piano_family::keyboard_players(scene)[2].position_m.x,
-            piano_family::keyboard_players(scene)[1].position_m.x - 1.4);
+  EXPECT_LT(piano::keyboard_players(scene)[1].position_m.x, -1.4);
+  EXPECT_LT(piano::keyboard_players(scene)[2].position_m.x,
+            piano::keyboard_players(scene)[1].position_m.x - 1.4);
   ASSERT_GE(scene.find_camera("organ_hands"), 0);
   ASSERT_GE(scene.find_camera("synth_hands"), 0);
   // The hands cameras look at each manual: the organ's stands 130 mm higher, on its platform.
@@ -115,8 +115,8 @@ TEST(DraftKeyboards, ThirdPartyOrganAndElectricPianoParts) {
     auto drafted = draft_scene(*score, path);
     ASSERT_TRUE(drafted) << drafted.error().message;
     const scene::Scene scene = parsed(*drafted, path.parent_path());
-    ASSERT_EQ(piano_family::keyboard_players(scene).size(), 1u) << file;
-    EXPECT_EQ(piano_family::keyboard_players(scene)[0].instrument, instrument) << file;
+    ASSERT_EQ(piano::keyboard_players(scene).size(), 1u) << file;
+    EXPECT_EQ(piano::keyboard_players(scene)[0].instrument, instrument) << file;
   }
 }
 
@@ -130,9 +130,9 @@ TEST(DraftKeyboards, AnOrganPieceGetsAnOrganistWhoseFeetPlayThePedalStaff) {
   auto drafted = draft_scene(*score, path);
   ASSERT_TRUE(drafted) << drafted.error().message;
   const scene::Scene scene = parsed(*drafted, path.parent_path());
-  ASSERT_EQ(piano_family::keyboard_players(scene).size(), 1u);
-  EXPECT_EQ(piano_family::keyboard_players(scene)[0].instrument, "organ");
-  EXPECT_EQ(piano_family::keyboard_players(scene)[0].name, "organist");
+  ASSERT_EQ(piano::keyboard_players(scene).size(), 1u);
+  EXPECT_EQ(piano::keyboard_players(scene)[0].instrument, "organ");
+  EXPECT_EQ(piano::keyboard_players(scene)[0].name, "organist");
   auto stage = build_stage(scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
   const auto& notes = (*stage)->notes();

@@ -56,7 +56,7 @@ std::string joined_notes(const DraftedScene& draft) {
 // Onsets of the performers a camera shows (by the camera's name), within [from, to).
 int onsets_for_camera(const Drafted& d, const std::string& camera, double from, double to) {
   std::set<int> parts;
-  for (const brass_family::BrassPlayer& p : brass_family::brass_players(d.scene)) {
+  for (const brass::BrassPlayer& p : brass::brass_players(d.scene)) {
     std::string stem;
     for (char c : p.name) stem += c == ' ' ? '_' : static_cast<char>(std::tolower(c));
     const std::string section = stem.substr(0, stem.find('_'));
@@ -64,8 +64,8 @@ int onsets_for_camera(const Drafted& d, const std::string& camera, double from, 
       parts.insert(scene::find_part(d.score, p.part));
     }
   }
-  if (!piano_family::keyboard_players(d.scene).empty() && camera.rfind("piano", 0) == 0) {
-    for (const std::string& part : piano_family::keyboard_players(d.scene).front().parts) {
+  if (!piano::keyboard_players(d.scene).empty() && camera.rfind("piano", 0) == 0) {
+    for (const std::string& part : piano::keyboard_players(d.scene).front().parts) {
       parts.insert(scene::find_part(d.score, part));
     }
   }
@@ -92,13 +92,13 @@ void expect_cuts_follow_the_players(const Drafted& d) {
 TEST(DraftScene, AChoraleWithTrumpetsGetsThreeTrumpetersAndNamesTheVoicesItLeavesOut) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/music21/bwv29.8.mxl");
-  ASSERT_EQ(brass_family::brass_players(d.scene).size(), 3u);
+  ASSERT_EQ(brass::brass_players(d.scene).size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_EQ(brass_family::brass_players(d.scene)[i].instrument, "trumpet_bb");
-    EXPECT_EQ(brass_family::brass_players(d.scene)[i].part, "Trumpet " + std::to_string(i + 1));
-    EXPECT_EQ(brass_family::brass_players(d.scene)[i].lead, i == 0);
+    EXPECT_EQ(brass::brass_players(d.scene)[i].instrument, "trumpet_bb");
+    EXPECT_EQ(brass::brass_players(d.scene)[i].part, "Trumpet " + std::to_string(i + 1));
+    EXPECT_EQ(brass::brass_players(d.scene)[i].lead, i == 0);
   }
-  EXPECT_TRUE(piano_family::keyboard_players(d.scene).empty())
+  EXPECT_TRUE(piano::keyboard_players(d.scene).empty())
       << "Soprano, Alto, ... are not piano parts (their program is 0 "
          "only because the file states none)";
   const std::string notes = joined_notes(d.draft);
@@ -112,26 +112,26 @@ TEST(DraftScene, AChoraleWithTrumpetsGetsThreeTrumpetersAndNamesTheVoicesItLeave
 TEST(DraftScene, ASymphonysHornsAndTrumpetsGetAPlayerPerVoiceSeatedBySection) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("midi/tonejs/symphony_7_2.mid");
-  ASSERT_EQ(brass_family::brass_players(d.scene).size(), 4u);
+  ASSERT_EQ(brass::brass_players(d.scene).size(), 4u);
   const char* instruments[] = {"trumpet_bb", "trumpet_bb", "horn_double", "horn_double"};
   const int voices[] = {1, 2, 1, 2};
   for (std::size_t i = 0; i < 4; ++i) {
-    EXPECT_EQ(brass_family::brass_players(d.scene)[i].instrument, instruments[i]) << i;
-    EXPECT_EQ(brass_family::brass_players(d.scene)[i].voice, voices[i]) << i;
+    EXPECT_EQ(brass::brass_players(d.scene)[i].instrument, instruments[i]) << i;
+    EXPECT_EQ(brass::brass_players(d.scene)[i].voice, voices[i]) << i;
     if (i > 0) {
-      EXPECT_NEAR(brass_family::brass_players(d.scene)[i].position_m.x -
-                      brass_family::brass_players(d.scene)[i - 1].position_m.x,
+      EXPECT_NEAR(brass::brass_players(d.scene)[i].position_m.x -
+                      brass::brass_players(d.scene)[i - 1].position_m.x,
                   1.0, 1e-9)
           << "seated a metre apart, trumpets on the audience's left";
     }
   }
-  EXPECT_EQ(brass_family::brass_players(d.scene)[0].part, "2 Trumpets in D");
-  EXPECT_EQ(brass_family::brass_players(d.scene)[2].part, "2 Horns in E");
+  EXPECT_EQ(brass::brass_players(d.scene)[0].part, "2 Trumpets in D");
+  EXPECT_EQ(brass::brass_players(d.scene)[2].part, "2 Horns in E");
   // The middle of the arc sits forward, the ends turn in.
-  EXPECT_GT(brass_family::brass_players(d.scene)[1].position_m.z,
-            brass_family::brass_players(d.scene)[0].position_m.z);
-  EXPECT_GT(brass_family::brass_players(d.scene)[0].facing_deg, 0.0);
-  EXPECT_LT(brass_family::brass_players(d.scene)[3].facing_deg, 0.0);
+  EXPECT_GT(brass::brass_players(d.scene)[1].position_m.z,
+            brass::brass_players(d.scene)[0].position_m.z);
+  EXPECT_GT(brass::brass_players(d.scene)[0].facing_deg, 0.0);
+  EXPECT_LT(brass::brass_players(d.scene)[3].facing_deg, 0.0);
   EXPECT_NE(joined_notes(d.draft).find("Violins 1"), std::string::npos);
   EXPECT_GT(d.scene.shots.size(), 10u);
   expect_cuts_follow_the_players(d);
@@ -140,7 +140,7 @@ TEST(DraftScene, ASymphonysHornsAndTrumpetsGetAPlayerPerVoiceSeatedBySection) {
 TEST(DraftScene, EachPlayersCameraLooksAtThatPlayer) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("midi/tonejs/symphony_7_2.mid");
-  for (const brass_family::BrassPlayer& p : brass_family::brass_players(d.scene)) {
+  for (const brass::BrassPlayer& p : brass::brass_players(d.scene)) {
     std::string stem;
     for (char c : p.name) stem += c == ' ' ? '_' : static_cast<char>(std::tolower(c));
     const int index = d.scene.find_camera(stem + "_front");
@@ -158,28 +158,27 @@ TEST(DraftScene, EachPlayersCameraLooksAtThatPlayer) {
 TEST(DraftScene, APianoPieceGoesToThePianistWithThePianosCameras) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/pianoplayer/mozart_sonfacile.mxl");
-  EXPECT_TRUE(brass_family::brass_players(d.scene).empty());
-  ASSERT_EQ(piano_family::keyboard_players(d.scene).size(), 1u);
-  EXPECT_EQ(piano_family::keyboard_players(d.scene).front().parts.size(), 2u);
+  EXPECT_TRUE(brass::brass_players(d.scene).empty());
+  ASSERT_EQ(piano::keyboard_players(d.scene).size(), 1u);
+  EXPECT_EQ(piano::keyboard_players(d.scene).front().parts.size(), 2u);
   EXPECT_GE(d.scene.find_camera("piano_hands"), 0);
   EXPECT_TRUE(d.draft.notes.empty()) << joined_notes(d.draft);
   expect_cuts_follow_the_players(d);
 
   const Drafted bach = draft_of("midi/tonejs/bach_846.mid");
-  ASSERT_EQ(piano_family::keyboard_players(bach.scene).size(), 1u);
-  EXPECT_EQ(piano_family::keyboard_players(bach.scene).front().parts.front(), "Piano right");
+  ASSERT_EQ(piano::keyboard_players(bach.scene).size(), 1u);
+  EXPECT_EQ(piano::keyboard_players(bach.scene).front().parts.front(), "Piano right");
 }
 
 TEST(DraftScene, BrassAndPianoTogetherSitSideBySide) {
   TUTTI_REQUIRE_TESTDATA();
   const Drafted d = draft_of("musicxml/lilypond-test-suite/72a-TransposingInstruments.xml");
-  ASSERT_EQ(brass_family::brass_players(d.scene).size(), 2u);
-  EXPECT_EQ(brass_family::brass_players(d.scene)[0].instrument, "trumpet_bb");
-  EXPECT_EQ(brass_family::brass_players(d.scene)[1].instrument, "horn_double");
-  ASSERT_EQ(piano_family::keyboard_players(d.scene).size(), 1u);
-  EXPECT_EQ(piano_family::keyboard_players(d.scene).front().parts,
-            std::vector<std::string>{"Piano"});
-  for (const brass_family::BrassPlayer& p : brass_family::brass_players(d.scene)) {
+  ASSERT_EQ(brass::brass_players(d.scene).size(), 2u);
+  EXPECT_EQ(brass::brass_players(d.scene)[0].instrument, "trumpet_bb");
+  EXPECT_EQ(brass::brass_players(d.scene)[1].instrument, "horn_double");
+  ASSERT_EQ(piano::keyboard_players(d.scene).size(), 1u);
+  EXPECT_EQ(piano::keyboard_players(d.scene).front().parts, std::vector<std::string>{"Piano"});
+  for (const brass::BrassPlayer& p : brass::brass_players(d.scene)) {
     EXPECT_GT(p.position_m.x, 1.5) << p.name << " clear of the piano at the origin";
   }
 }

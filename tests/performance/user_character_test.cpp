@@ -95,7 +95,7 @@ double head_sway_m(const std::filesystem::path& dir, const std::string& characte
   if (!staged) return 0.0;
   stage::Stage& stage = **staged;
   const ecs::Entity performer = stage.performers().at(0);
-  const auto* rig = stage.world().try_get<brass_family::BrassRig>(performer);
+  const auto* rig = stage.world().try_get<brass::BrassRig>(performer);
   EXPECT_NE(rig, nullptr);
   if (rig == nullptr) return 0.0;
   double sum = 0.0, sum2 = 0.0;
@@ -205,7 +205,7 @@ TEST(UserCharacter, TheUsersJointsSitOnTheStandInsJoints) {
     for (double t = 0.0; t < 20.0; t += 0.7) {
       stage::evaluate_stage(stage, t);
       for (const ecs::Entity performer : stage.performers()) {
-        const auto& rig = stage.world().get<brass_family::BrassRig>(performer);
+        const auto& rig = stage.world().get<brass::BrassRig>(performer);
         ASSERT_TRUE(rig.body_retarget.has_value());
         const auto& user = stage.world().get<stage::PlacedModel>(rig.body);
         const auto& proxy = rig.body_retarget->proxy;
@@ -241,7 +241,7 @@ TEST(UserCharacter, ARigsFaceMorphsFollowTheMouth) {
   auto staged = build_stage(*scene, {});
   ASSERT_TRUE(staged) << staged.error().message;
   stage::Stage& stage = **staged;
-  const auto& rig = stage.world().get<brass_family::BrassRig>(stage.find_performer("brass", 0));
+  const auto& rig = stage.world().get<brass::BrassRig>(stage.find_performer("brass", 0));
   const auto& user = stage.world().get<stage::PlacedModel>(rig.body);
   const int pucker = stage::morph_index(*user.asset, "mouthPucker");
   const int open = stage::morph_index(*user.asset, "jawOpen");
@@ -275,8 +275,7 @@ TEST(UserCharacter, AMappingFileOnlyOverrides) {
   };
   auto staged = stage_with({{"head", "spine.005"}});
   ASSERT_TRUE(staged) << staged.error().message;
-  const auto& rig =
-      (*staged)->world().get<brass_family::BrassRig>((*staged)->find_performer("brass", 0));
+  const auto& rig = (*staged)->world().get<brass::BrassRig>((*staged)->find_performer("brass", 0));
   ASSERT_TRUE(rig.body_retarget.has_value());
   const auto& user = (*staged)->world().get<stage::PlacedModel>(rig.body);
   const auto name_of = [&](int proxy_node) {

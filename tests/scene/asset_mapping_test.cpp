@@ -15,10 +15,10 @@
 namespace tutti::scene {
 namespace {
 
+using brass::kBrassAssetKinds;
 using nlohmann::json;
 using test::scenes_dir;
 using test::ScratchDir;
-using brass_family::kBrassAssetKinds;
 
 bool has(std::span<const std::string_view> roles, std::string_view role) {
   return std::find(roles.begin(), roles.end(), role) != roles.end();
@@ -35,16 +35,16 @@ TEST(AssetMappingRoles, TheDocumentedNames) {
     EXPECT_TRUE(has(character, role)) << role;
   }
   EXPECT_FALSE(has(character, "little_4_r"));
-  EXPECT_EQ(brass_family::trumpet_kind().node_roles.size(), 6u);
-  EXPECT_TRUE(has(brass_family::trumpet_kind().node_roles, "valve_3"));
-  EXPECT_EQ(brass_family::trombone_kind().node_roles.size(), 5u);
-  EXPECT_TRUE(has(brass_family::trombone_kind().node_roles, "bell_section"));
+  EXPECT_EQ(brass::trumpet_kind().node_roles.size(), 6u);
+  EXPECT_TRUE(has(brass::trumpet_kind().node_roles, "valve_3"));
+  EXPECT_EQ(brass::trombone_kind().node_roles.size(), 5u);
+  EXPECT_TRUE(has(brass::trombone_kind().node_roles, "bell_section"));
   EXPECT_EQ(hand_kind().node_roles.size(), 4u + 30u);
   EXPECT_EQ(hand_kind().required_node_roles.size(), 2u + 30u);
   EXPECT_EQ(character_kind().morph_roles.size(), 2u);
-  EXPECT_TRUE(brass_family::trumpet_kind().morph_roles.empty());
-  for (const AssetKind* kind : {&character_kind(), &hand_kind(), &brass_family::trumpet_kind(),
-                                &brass_family::trombone_kind()}) {
+  EXPECT_TRUE(brass::trumpet_kind().morph_roles.empty());
+  for (const AssetKind* kind :
+       {&character_kind(), &hand_kind(), &brass::trumpet_kind(), &brass::trombone_kind()}) {
     for (std::string_view role : kind->required_node_roles) {
       EXPECT_TRUE(has(kind->node_roles, role)) << role;
     }

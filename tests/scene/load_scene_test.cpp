@@ -34,12 +34,12 @@ TEST(ShippedScenes, QuartetLoads) {
   ASSERT_EQ(scene->music.size(), 1u);
   EXPECT_EQ(scene->music[0].filename(), "quartet.musicxml");
   EXPECT_TRUE(std::filesystem::is_regular_file(scene->music[0]));
-  ASSERT_EQ(brass_family::brass_players(*scene).size(), 4u);
-  EXPECT_TRUE(piano_family::keyboard_players(*scene).empty());
+  ASSERT_EQ(brass::brass_players(*scene).size(), 4u);
+  EXPECT_TRUE(piano::keyboard_players(*scene).empty());
   const char* instruments[] = {"trumpet_bb", "trumpet_bb", "trombone_tenor", "trombone_tenor"};
   int leads = 0;
   for (std::size_t i = 0; i < 4; ++i) {
-    const brass_family::BrassPlayer& p = brass_family::brass_players(*scene)[i];
+    const brass::BrassPlayer& p = brass::brass_players(*scene)[i];
     EXPECT_EQ(p.instrument, instruments[i]) << p.name;
     EXPECT_EQ(p.voice, 1);
     EXPECT_EQ(p.position_m.y, 0.0);
@@ -48,15 +48,15 @@ TEST(ShippedScenes, QuartetLoads) {
     leads += p.lead ? 1 : 0;
   }
   EXPECT_EQ(leads, 1);
-  EXPECT_TRUE(brass_family::brass_players(*scene)[0].lead);
-  EXPECT_DOUBLE_EQ(*brass_family::brass_players(*scene)[0].variation.sway_amount, 0.6);
-  EXPECT_FALSE(brass_family::brass_players(*scene)[0].variation.sway_phase.has_value());
+  EXPECT_TRUE(brass::brass_players(*scene)[0].lead);
+  EXPECT_DOUBLE_EQ(*brass::brass_players(*scene)[0].variation.sway_amount, 0.6);
+  EXPECT_FALSE(brass::brass_players(*scene)[0].variation.sway_phase.has_value());
   // Seeds: Trombone 1 gives its own; the others derive from the scene seed (7).
-  EXPECT_TRUE(brass_family::brass_players(*scene)[2].seed_given);
-  EXPECT_EQ(brass_family::brass_players(*scene)[2].seed, 11u);
-  EXPECT_FALSE(brass_family::brass_players(*scene)[0].seed_given);
-  EXPECT_EQ(brass_family::brass_players(*scene)[0].seed, derive_seed(7, 1));
-  EXPECT_EQ(brass_family::brass_players(*scene)[3].seed, derive_seed(7, 4));
+  EXPECT_TRUE(brass::brass_players(*scene)[2].seed_given);
+  EXPECT_EQ(brass::brass_players(*scene)[2].seed, 11u);
+  EXPECT_FALSE(brass::brass_players(*scene)[0].seed_given);
+  EXPECT_EQ(brass::brass_players(*scene)[0].seed, derive_seed(7, 1));
+  EXPECT_EQ(brass::brass_players(*scene)[3].seed, derive_seed(7, 4));
   // Several cuts over the piece.
   EXPECT_GE(scene->cameras.size(), 4u);
   EXPECT_GE(scene->shots.size(), 6u);
@@ -75,15 +75,13 @@ TEST(ShippedScenes, QuartetLoads) {
 TEST(ShippedScenes, PianoLoads) {
   auto scene = load_scene(scenes_dir() / "piano.json", performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_TRUE(brass_family::brass_players(*scene).empty());
-  ASSERT_EQ(piano_family::keyboard_players(*scene).size(), 1u);
-  EXPECT_EQ(piano_family::keyboard_players(*scene).front().parts,
-            std::vector<std::string>{"Piano"});
-  EXPECT_EQ(piano_family::keyboard_players(*scene).front().hand_size, "medium");
-  EXPECT_GT(piano_family::keyboard_players(*scene).front().position_m.z, 0.0)
-      << "the pianist sits at +Z";
-  EXPECT_DOUBLE_EQ(piano_family::keyboard_players(*scene).front().facing_deg, 180.0);
-  EXPECT_EQ(piano_family::keyboard_players(*scene).front().seed, derive_seed(3, 0));
+  EXPECT_TRUE(brass::brass_players(*scene).empty());
+  ASSERT_EQ(piano::keyboard_players(*scene).size(), 1u);
+  EXPECT_EQ(piano::keyboard_players(*scene).front().parts, std::vector<std::string>{"Piano"});
+  EXPECT_EQ(piano::keyboard_players(*scene).front().hand_size, "medium");
+  EXPECT_GT(piano::keyboard_players(*scene).front().position_m.z, 0.0) << "the pianist sits at +Z";
+  EXPECT_DOUBLE_EQ(piano::keyboard_players(*scene).front().facing_deg, 180.0);
+  EXPECT_EQ(piano::keyboard_players(*scene).front().seed, derive_seed(3, 0));
   EXPECT_GE(scene->cameras.size(), 2u);
   EXPECT_GE(scene->shots.size(), 3u);
   EXPECT_EQ(scene->camera_at(0.0).name, "wide");
@@ -97,14 +95,12 @@ TEST(ShippedScenes, MusicLoadsAndHasEveryPart) {
     auto scores = load_scene_music(*scene);
     ASSERT_TRUE(scores.ok()) << scores.error().message;
     ASSERT_EQ(scores->size(), scene->music.size());
-    for (const brass_family::BrassPlayer& p : brass_family::brass_players(*scene)) {
+    for (const brass::BrassPlayer& p : brass::brass_players(*scene)) {
       EXPECT_GE(find_part((*scores)[p.music_file], p.part), 0) << name << ": " << p.part;
     }
-    if (!piano_family::keyboard_players(*scene).empty()) {
-      for (const std::string& part : piano_family::keyboard_players(*scene).front().parts) {
-        EXPECT_GE(
-            find_part((*scores)[piano_family::keyboard_players(*scene).front().music_file], part),
-            0)
+    if (!piano::keyboard_players(*scene).empty()) {
+      for (const std::string& part : piano::keyboard_players(*scene).front().parts) {
+        EXPECT_GE(find_part((*scores)[piano::keyboard_players(*scene).front().music_file], part), 0)
             << name << ": " << part;
       }
     }
@@ -163,7 +159,7 @@ json valid_scene() {
 TEST(SceneErrors, TheValidBaseLoads) {
   auto scene = parse_scene(valid_scene(), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(brass_family::brass_players(*scene).size(), 2u);
+  EXPECT_EQ(brass::brass_players(*scene).size(), 2u);
   EXPECT_EQ(scene->shots.size(), 3u);
   EXPECT_EQ(scene->output.width, 1280);  // defaults
   EXPECT_FALSE(scene->output.soft_shadows);
@@ -367,7 +363,7 @@ TEST(SceneErrors, Pianist) {
   doc["pianist"] = {{"parts", {"Trombone 2"}}};
   auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(piano_family::keyboard_players(*scene).front().hand_size,
+  EXPECT_EQ(piano::keyboard_players(*scene).front().hand_size,
             "medium");  // hands.json's default_preset
 }
 
@@ -395,7 +391,7 @@ TEST(SceneErrors, UserAssetMappings) {
   doc["performers"][0]["character"] = example;
   auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(brass_family::brass_players(*scene)[0].character_mapping.filename(),
+  EXPECT_EQ(brass::brass_players(*scene)[0].character_mapping.filename(),
             "mixamo_character.mapping.json");
 
   doc["performers"][0]["character"] = "examples/nope.mapping.json";

@@ -38,7 +38,7 @@ json scene_with_marks() {
 TEST(PerformanceMarks, AreReadAndSorted) {
   auto scene = parse_scene(scene_with_marks(), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  const brass_family::BrassPlayer& t1 = brass_family::brass_players(*scene)[0];
+  const brass::BrassPlayer& t1 = brass::brass_players(*scene)[0];
   EXPECT_EQ(t1.breaths.add_s, (std::vector<double>{3.25, 9.5}));
   EXPECT_EQ(t1.breaths.remove_s, (std::vector<double>{12.0}));
   ASSERT_EQ(t1.expressions.size(), 2u);
@@ -48,13 +48,11 @@ TEST(PerformanceMarks, AreReadAndSorted) {
   EXPECT_DOUBLE_EQ(t1.expressions[0].amount, 0.7);
   EXPECT_EQ(t1.expressions[1].kind, ExpressionKind::relaxed);
   EXPECT_DOUBLE_EQ(t1.expressions[1].amount, 1.0);  // the default
-  ASSERT_EQ(piano_family::keyboard_players(*scene).size(), 1u);
-  ASSERT_EQ(piano_family::keyboard_players(*scene).front().pins.size(), 2u);
-  EXPECT_EQ(piano_family::keyboard_players(*scene).front().pins[0],
-            (piano_family::FingerPin{2.5, 50, 3}))
+  ASSERT_EQ(piano::keyboard_players(*scene).size(), 1u);
+  ASSERT_EQ(piano::keyboard_players(*scene).front().pins.size(), 2u);
+  EXPECT_EQ(piano::keyboard_players(*scene).front().pins[0], (piano::FingerPin{2.5, 50, 3}))
       << "pins keep the file's order";
-  EXPECT_EQ(piano_family::keyboard_players(*scene).front().pins[1],
-            (piano_family::FingerPin{1.0, 48, 1}));
+  EXPECT_EQ(piano::keyboard_players(*scene).front().pins[1], (piano::FingerPin{1.0, 48, 1}));
   ASSERT_TRUE(scene->cues_s.has_value());
   EXPECT_EQ(*scene->cues_s, (std::vector<double>{4.5, 16.0}));
 }
@@ -68,9 +66,9 @@ TEST(PerformanceMarks, AbsentMeansNone) {
   auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   EXPECT_FALSE(scene->cues_s.has_value()) << "no list: the automatic cue";
-  EXPECT_TRUE(brass_family::brass_players(*scene)[0].breaths.add_s.empty());
-  EXPECT_TRUE(brass_family::brass_players(*scene)[0].expressions.empty());
-  EXPECT_TRUE(piano_family::keyboard_players(*scene).front().pins.empty());
+  EXPECT_TRUE(brass::brass_players(*scene)[0].breaths.add_s.empty());
+  EXPECT_TRUE(brass::brass_players(*scene)[0].expressions.empty());
+  EXPECT_TRUE(piano::keyboard_players(*scene).front().pins.empty());
   doc["cues"] = json::array();
   auto no_cues = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(no_cues.ok());

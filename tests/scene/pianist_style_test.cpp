@@ -30,16 +30,16 @@ json piano_scene(const json& pianist_extra) {
 TEST(PianistStyle, AbsentMeansTheWrittenSoundAndNoStyle) {
   auto scene = parse_scene(piano_scene(json::object()), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(piano_family::keyboard_players(*scene).front().style, "");
-  EXPECT_FALSE(piano_family::keyboard_players(*scene).front().sound_from_keys);
+  EXPECT_EQ(piano::keyboard_players(*scene).front().style, "");
+  EXPECT_FALSE(piano::keyboard_players(*scene).front().sound_from_keys);
 }
 
 TEST(PianistStyle, AStyleAndTheKeysSound) {
   auto scene =
       parse_scene(piano_scene({{"style", "beginner"}, {"sound", "keys"}}), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(piano_family::keyboard_players(*scene).front().style, "beginner");
-  EXPECT_TRUE(piano_family::keyboard_players(*scene).front().sound_from_keys);
+  EXPECT_EQ(piano::keyboard_players(*scene).front().style, "beginner");
+  EXPECT_TRUE(piano::keyboard_players(*scene).front().sound_from_keys);
 }
 
 TEST(PianistStyle, BadValuesAreOneLineErrors) {

@@ -42,13 +42,13 @@ std::string load_error_of(const json& document) {
 TEST(Pianists, TheDuoLoadsWithTwoPianists) {
   auto scene = load_scene(scenes_dir() / "piano_duo.json", performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  ASSERT_EQ(piano_family::keyboard_players(*scene).size(), 2u);
-  EXPECT_TRUE(brass_family::brass_players(*scene).empty());
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[0].name, "pianist");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[1].name, "pianist 2");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[0].pointer, "/pianists/0");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[1].pointer, "/pianists/1");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[1].hand_size, "small");
+  ASSERT_EQ(piano::keyboard_players(*scene).size(), 2u);
+  EXPECT_TRUE(brass::brass_players(*scene).empty());
+  EXPECT_EQ(piano::keyboard_players(*scene)[0].name, "pianist");
+  EXPECT_EQ(piano::keyboard_players(*scene)[1].name, "pianist 2");
+  EXPECT_EQ(piano::keyboard_players(*scene)[0].pointer, "/pianists/0");
+  EXPECT_EQ(piano::keyboard_players(*scene)[1].pointer, "/pianists/1");
+  EXPECT_EQ(piano::keyboard_players(*scene)[1].hand_size, "small");
   auto scores = load_scene_music(*scene);
   ASSERT_TRUE(scores.ok()) << scores.error().message;
 }
@@ -56,25 +56,25 @@ TEST(Pianists, TheDuoLoadsWithTwoPianists) {
 TEST(Pianists, NamesAndSeedsWhenNotGiven) {
   auto scene = parse_scene(duo(), "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[0].name, "pianist");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[1].name, "pianist 2");
+  EXPECT_EQ(piano::keyboard_players(*scene)[0].name, "pianist");
+  EXPECT_EQ(piano::keyboard_players(*scene)[1].name, "pianist 2");
   // The first pianist's seed is the one a single-pianist scene always had; the second's is
   // its own, and differs from every performer's stream.
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[0].seed, derive_seed(5, 0));
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[1].seed, derive_seed(5, piano_family::keyboard_seed_stream(1)));
-  EXPECT_NE(piano_family::keyboard_players(*scene)[1].seed,
-            piano_family::keyboard_players(*scene)[0].seed);
+  EXPECT_EQ(piano::keyboard_players(*scene)[0].seed, derive_seed(5, 0));
+  EXPECT_EQ(piano::keyboard_players(*scene)[1].seed,
+            derive_seed(5, piano::keyboard_seed_stream(1)));
+  EXPECT_NE(piano::keyboard_players(*scene)[1].seed, piano::keyboard_players(*scene)[0].seed);
   for (std::uint64_t stream = 1; stream < 1000; ++stream) {
-    ASSERT_NE(piano_family::keyboard_players(*scene)[1].seed, derive_seed(5, stream));
+    ASSERT_NE(piano::keyboard_players(*scene)[1].seed, derive_seed(5, stream));
   }
 }
 
 TEST(Pianists, TheOlderSinglePianistStillLoads) {
   auto scene = load_scene(scenes_dir() / "piano.json", performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  ASSERT_EQ(piano_family::keyboard_players(*scene).size(), 1u);
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[0].name, "pianist");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[0].pointer, "/pianist");
+  ASSERT_EQ(piano::keyboard_players(*scene).size(), 1u);
+  EXPECT_EQ(piano::keyboard_players(*scene)[0].name, "pianist");
+  EXPECT_EQ(piano::keyboard_players(*scene)[0].pointer, "/pianist");
 }
 
 TEST(Pianists, Refused) {
@@ -120,15 +120,15 @@ TEST(Pianists, EachPlaysAKeyboardInstrumentOfTheirOwn) {
   doc["pianists"][1]["instrument"] = "organ";
   auto scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[0].instrument, "piano");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[1].instrument, "organ");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[1].name, "organist")
+  EXPECT_EQ(piano::keyboard_players(*scene)[0].instrument, "piano");
+  EXPECT_EQ(piano::keyboard_players(*scene)[1].instrument, "organ");
+  EXPECT_EQ(piano::keyboard_players(*scene)[1].name, "organist")
       << "an unnamed player is named for the instrument";
   doc["pianists"][0]["instrument"] = "organ";
   scene = parse_scene(doc, "s.json", scenes_dir(), performance::scene_load_options());
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[0].name, "organist");
-  EXPECT_EQ(piano_family::keyboard_players(*scene)[1].name, "organist 2");
+  EXPECT_EQ(piano::keyboard_players(*scene)[0].name, "organist");
+  EXPECT_EQ(piano::keyboard_players(*scene)[1].name, "organist 2");
   doc["pianists"][1]["instrument"] = "orgen";
   EXPECT_EQ(load_error_of(doc),
             "s.json: /pianists/1/instrument: unknown keyboard instrument \"orgen\" (did you mean "

@@ -23,9 +23,9 @@
 namespace tutti::stage {
 namespace {
 
-using piano_family::FeetPlan;
-using piano_family::PedalPress;
-using piano_family::PianoRig;
+using piano::FeetPlan;
+using piano::PedalPress;
+using piano::PianoRig;
 
 TEST(Organist, PlaysABachChoralesBassOnThePedals) {
   const std::filesystem::path chorale = tutti::test::testdata("musicxml/music21/bwv29.8.mxl");
@@ -85,8 +85,8 @@ TEST(Organist, PlaysABachChoralesBassOnThePedals) {
     model::compute_world_matrices(*body.asset, body.pose, body.root, body_world);
     for (const PedalPress& press : feet.presses) {
       if (t < press.down_s || t > press.up_s) continue;
-      const int toe = press.foot == piano_family::kRightFoot ? rig.body_nodes.toe_right
-                                                             : rig.body_nodes.toe_left;
+      const int toe =
+          press.foot == piano::kRightFoot ? rig.body_nodes.toe_right : rig.body_nodes.toe_left;
       const int pedal = rig.pedal_nodes[static_cast<std::size_t>(press.key)];
       ASSERT_GE(toe, 0);
       ASSERT_GE(pedal, 0);
@@ -124,8 +124,8 @@ TEST(Organist, TheThirdStaffIsThePedals) {
     third_staff += score.notes[i].staff == 3 ? 1 : 0;
   }
   EXPECT_GT(third_staff, 25u);
-  EXPECT_FALSE(rig.feet->by_foot[piano_family::kLeftFoot].empty());
-  EXPECT_FALSE(rig.feet->by_foot[piano_family::kRightFoot].empty());
+  EXPECT_FALSE(rig.feet->by_foot[piano::kLeftFoot].empty());
+  EXPECT_FALSE(rig.feet->by_foot[piano::kRightFoot].empty());
 }
 
 }  // namespace

@@ -243,8 +243,8 @@ TEST(StageBuilder, AFamilyReadsItsOwnSectionOfTheSceneFile) {
   auto scene = parse_with(bell_scene({{"ringer", "Quasimodo"}, {"part", "Piano"}}),
                           {&bells.scene_section()});
   ASSERT_TRUE(scene) << scene.error().message;
-  EXPECT_TRUE(piano_family::keyboard_players(*scene).empty());
-  EXPECT_TRUE(brass_family::brass_players(*scene).empty());
+  EXPECT_TRUE(piano::keyboard_players(*scene).empty());
+  EXPECT_TRUE(brass::brass_players(*scene).empty());
   ASSERT_NE(scene->section<Bells>("bells"), nullptr);
   EXPECT_EQ(scene->section<Bells>("bells")->ringer, "Quasimodo");
   EXPECT_EQ(scene->section<int>("bells"), nullptr) << "read back only as the family's own type";
@@ -362,7 +362,7 @@ TEST(StageBuilder, AFamilyDraftsItsPlayersForSceneNew) {
 
   auto scene = parse_with(nlohmann::json::parse(document.dump()), {&bells.scene_section()});
   ASSERT_TRUE(scene) << scene.error().message;
-  EXPECT_EQ(brass_family::brass_players(*scene).size(), 3u);
+  EXPECT_EQ(brass::brass_players(*scene).size(), 3u);
   ASSERT_NE(scene->section<Bells>("bells"), nullptr);
   const Status parts = scene::check_scene_parts(*scene, {&*score, 1});
   EXPECT_TRUE(parts) << parts.error().message;
@@ -393,14 +393,14 @@ TEST(StageBuilder, EveryNoteIsAnEntityWithItsPerformer) {
   EXPECT_EQ(claimed, score.notes.size()) << "each of the four parts has its player";
   EXPECT_TRUE(stage.note_entity(0, score.notes.size()).is_null());
   // Each player stands where the scene says (Transform: mm, a turn about +Y).
-  for (std::size_t seat = 0; seat < brass_family::brass_players(*scene).size(); ++seat) {
+  for (std::size_t seat = 0; seat < brass::brass_players(*scene).size(); ++seat) {
     const auto& where =
         stage.world().get<components::Transform>(stage.find_performer("brass", seat));
-    EXPECT_DOUBLE_EQ(where.x_mm, brass_family::brass_players(*scene)[seat].position_m.x * 1000.0);
-    EXPECT_DOUBLE_EQ(where.z_mm, brass_family::brass_players(*scene)[seat].position_m.z * 1000.0);
+    EXPECT_DOUBLE_EQ(where.x_mm, brass::brass_players(*scene)[seat].position_m.x * 1000.0);
+    EXPECT_DOUBLE_EQ(where.z_mm, brass::brass_players(*scene)[seat].position_m.z * 1000.0);
     const double turned =
         2.0 * std::atan2(where.rotation.y, where.rotation.w) * 180.0 / 3.14159265358979323846;
-    EXPECT_NEAR(turned, brass_family::brass_players(*scene)[seat].facing_deg, 1e-9);
+    EXPECT_NEAR(turned, brass::brass_players(*scene)[seat].facing_deg, 1e-9);
   }
   EXPECT_TRUE(stage.note_entity(1, 0).is_null());
 }

@@ -30,9 +30,9 @@
 namespace tutti::stage {
 namespace {
 
-using brass_family::BrassRig;
-using piano_family::PianistPlan;
-using piano_family::PianoRig;
+using brass::BrassRig;
+using piano::PianistPlan;
+using piano::PianoRig;
 
 Result<std::unique_ptr<Stage>> build_stage(const scene::Scene& scene, const StageOptions& options) {
   return performance::build_stage(scene, options);
@@ -220,8 +220,8 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
   const int planned = before.fingering.fingers[i];
   ASSERT_GE(planned, 1);
   const int pinned = planned == 1 ? 2 : 1;
-  piano_family::edit_keyboard_players(*scene).front().pins.push_back(
-      piano_family::FingerPin{note.onset_s, note.pitch, pinned});
+  piano::edit_keyboard_players(*scene).front().pins.push_back(
+      piano::FingerPin{note.onset_s, note.pitch, pinned});
   auto stage = build_stage(*scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
   const PianistPlan& seat = pianist_plan(**stage);
@@ -234,7 +234,7 @@ TEST(Stage, APinnedFingerPlaysItsNote) {
   EXPECT_EQ(finger.key, note.pitch);
   EXPECT_GT(finger.press_depth, 0.9);
 
-  piano_family::edit_keyboard_players(*scene).front().pins.back().key =
+  piano::edit_keyboard_players(*scene).front().pins.back().key =
       note.pitch + 1;  // a note that is not there
   auto wrong = build_stage(*scene, {});
   ASSERT_FALSE(wrong);
@@ -254,8 +254,8 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
   EXPECT_FALSE(pianist_plan(**written).played) << "no style: no key simulation";
   ASSERT_EQ((*written)->heard_scores()[0].notes.size(), (*written)->scores()[0].notes.size());
 
-  piano_family::edit_keyboard_players(*scene).front().style = "beginner";
-  piano_family::edit_keyboard_players(*scene).front().sound_from_keys = true;
+  piano::edit_keyboard_players(*scene).front().style = "beginner";
+  piano::edit_keyboard_players(*scene).front().sound_from_keys = true;
   auto stage = build_stage(*scene, {});
   ASSERT_TRUE(stage) << stage.error().message;
   const PianistPlan& seat = pianist_plan(**stage);
@@ -294,7 +294,7 @@ TEST(Stage, ThePianoSoundsAsItsKeysArePressed) {
   auto same = build_stage(*scene, again);
   ASSERT_TRUE(same) << same.error().message;
   EXPECT_EQ(pianist_plan(**same).played, seat.played);
-  piano_family::edit_keyboard_players(*scene).front().seed += 1;
+  piano::edit_keyboard_players(*scene).front().seed += 1;
   again.reuse_models = same->get();
   auto reseeded = build_stage(*scene, again);
   ASSERT_TRUE(reseeded) << reseeded.error().message;

@@ -23,7 +23,7 @@
 namespace tutti::stage {
 namespace {
 
-using piano_family::PianoRig;
+using piano::PianoRig;
 
 TEST(TwoPianists, EachPlaysTheirOwnPartAtTheirOwnPiano) {
   auto stage = test::stage_bundled_scene("piano_duo.json");
@@ -122,7 +122,7 @@ TEST(TwoPianists, APianistAndAnOrganistUsingThePedals) {
             0.0f);
   EXPECT_NEAR(rig.keyboard_to_world[3].y, 0.72f + 0.13f, 1e-6f) << "the manual raised with it";
   ASSERT_TRUE(rig.feet);
-  const piano_family::FeetPlan& feet = *rig.feet;
+  const piano::FeetPlan& feet = *rig.feet;
   EXPECT_GT(feet.presses.size(), 20u);
   const auto& notes = stage.notes();
   EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
@@ -131,7 +131,7 @@ TEST(TwoPianists, APianistAndAnOrganistUsingThePedals) {
   })) << "Piano II goes down to G1";
   // The pianist has no pedals; the organist's pedal notes are theirs, at the score's onsets.
   EXPECT_FALSE(world.get<PianoRig>(stage.find_performer("piano", 0)).feet);
-  for (const piano_family::PedalPress& press : feet.presses) {
+  for (const piano::PedalPress& press : feet.presses) {
     const auto& note = world.get<components::Note>(stage.note_entity(0, press.note));
     EXPECT_EQ(note.performer, organist);
     EXPECT_EQ(note.onset_s, press.down_s);
@@ -156,10 +156,10 @@ TEST(TwoPianists, APianistAndAnOrganistUsingThePedals) {
     body_world.resize(body.asset->nodes.size());
     model::compute_world_matrices(*organ.asset, organ.pose, organ.root, organ_world);
     model::compute_world_matrices(*body.asset, body.pose, body.root, body_world);
-    for (const piano_family::PedalPress& press : feet.presses) {
+    for (const piano::PedalPress& press : feet.presses) {
       if (t < press.down_s || t > press.up_s) continue;
-      const int toe = press.foot == piano_family::kRightFoot ? rig.body_nodes.toe_right
-                                                             : rig.body_nodes.toe_left;
+      const int toe =
+          press.foot == piano::kRightFoot ? rig.body_nodes.toe_right : rig.body_nodes.toe_left;
       ASSERT_GE(toe, 0);
       const int pedal = rig.pedal_nodes[static_cast<std::size_t>(press.key)];
       const double along = piano_model::pedal_is_sharp(press.key)
@@ -208,9 +208,8 @@ TEST(TwoPianists, EachKeyboardSoundsWithItsOwnTouch) {
     auto scene = scene::load_scene(std::filesystem::path(TUTTI_SOURCE_DIR) / "tests" / "data" /
                                    "keyboards" / "piano_and_organ.json", performance::scene_load_options());
     ASSERT_TRUE(scene) << scene.error().message;
-    piano_family::edit_keyboard_players(*scene)[1].instrument = instrument;
-    for (piano_family::KeyboardPlayer& p : piano_family::edit_keyboard_players(*scene))
-      p.sound_from_keys = true;
+    piano::edit_keyboard_players(*scene)[1].instrument = instrument;
+    for (piano::KeyboardPlayer& p : piano::edit_keyboard_players(*scene)) p.sound_from_keys = true;
     auto built = performance::build_stage(*scene, {});
     ASSERT_TRUE(built) << built.error().message;
     const Stage& stage = **built;

@@ -10,7 +10,7 @@
 
 #include "scratch_dir.hpp"
 
-namespace tutti::brass_family {
+namespace tutti::brass {
 namespace {
 
 const std::filesystem::path kHolds =
@@ -106,4 +106,4 @@ TEST(Hold, BrokenFilesAreRefusedWithTheFileAndThePath) {
 }
 
 }  // namespace
-}  // namespace tutti::brass_family
+}  // namespace tutti::brass

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 glm::mat4 at(float x, float y, float z) { return glm::translate(glm::mat4(1.0f), {x, y, z}); }
@@ -57,4 +57,4 @@ TEST(HandCapsules, OverlapIsTheRadiiLessTheDistance) {
 }
 
 }  // namespace
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -9,7 +9,7 @@
 #include <tutti/piano_model/keyboard_instruments.hpp>
 #include <tutti/piano_model/pedal_geometry.hpp>
 
-namespace tutti::piano_family {
+namespace tutti::piano {
 namespace {
 
 // The organ's pedalboard as content/piano/instruments.json has it (AGO: C2-G4, 63.5 mm).
@@ -208,4 +208,4 @@ TEST(PedalGeometry, NaturalsEvenlySpacedSharpsBetweenThemCentredOnMiddleE) {
 }
 
 }  // namespace
-}  // namespace tutti::piano_family
+}  // namespace tutti::piano

@@ -13,8 +13,8 @@
 namespace tutti::brass_motion {
 
 // The brass planner's names used here (systems/fingering_planner).
-using brass::load_planner_weights;
-using brass::plan_line;
+using fingering_planner::load_planner_weights;
+using fingering_planner::plan_line;
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;

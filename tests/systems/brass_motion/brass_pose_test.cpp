@@ -29,15 +29,15 @@
 namespace tutti::brass_motion {
 
 // The brass planner's names used here (systems/fingering_planner).
-using brass::BrassDiagnostic;
-using brass::BrassIssue;
-using brass::BrassPart;
-using brass::BrassPlanSummary;
-using brass::extract_line;
-using brass::find_brass_parts;
-using brass::load_planner_weights;
-using brass::plan_line;
-using brass::PlannerWeights;
+using fingering_planner::BrassDiagnostic;
+using fingering_planner::BrassIssue;
+using fingering_planner::BrassPart;
+using fingering_planner::BrassPlanSummary;
+using fingering_planner::extract_line;
+using fingering_planner::find_brass_parts;
+using fingering_planner::load_planner_weights;
+using fingering_planner::plan_line;
+using fingering_planner::PlannerWeights;
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;

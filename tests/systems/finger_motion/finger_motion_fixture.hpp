@@ -56,7 +56,7 @@ struct TestNote {
 
 struct TestScore {
   music::Score score;
-  piano::ScorePlan plan;
+  fingering_planner::ScorePlan plan;
 };
 
 inline TestScore make_score(const std::vector<TestNote>& notes) {

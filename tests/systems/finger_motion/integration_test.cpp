@@ -31,9 +31,9 @@ TEST(FingerMotionIntegration, OdeToJoy) {
   auto score = music::load_score(std::filesystem::path(TUTTI_SOURCE_DIR) / "content" / "music" /
                                  "ode_to_joy.musicxml");
   ASSERT_TRUE(score.ok()) << score.error().message;
-  auto model = piano::load_fingering_model("default", "", test::content_dir());
+  auto model = fingering_planner::load_fingering_model("default", "", test::content_dir());
   ASSERT_TRUE(model.ok()) << model.error().message;
-  auto fingering = piano::plan_score(*score, *model);
+  auto fingering = fingering_planner::plan_score(*score, *model);
   ASSERT_TRUE(fingering.ok()) << fingering.error().message;
   auto right = spline_motion::plan_hand_path(trimmed(fingering->right.corridors));
   ASSERT_TRUE(right.ok()) << right.error().message;

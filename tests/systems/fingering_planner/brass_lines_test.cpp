@@ -7,7 +7,7 @@
 #include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
-namespace tutti::brass {
+namespace tutti::fingering_planner {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -71,4 +71,4 @@ TEST(BrassLines, ChoraleTrumpetsAreOnePlayerEach) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::fingering_planner

@@ -15,7 +15,7 @@
 #include <tutti/music/load_score.hpp>
 #include "testdata.hpp"
 
-namespace tutti::brass {
+namespace tutti::fingering_planner {
 
 // The brass model's names used here (systems/brass_model).
 using brass_model::BrassLine;
@@ -272,9 +272,9 @@ TEST(BrassPlanner, BadWeightsFileIsAOneLineError) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::fingering_planner
 
-namespace tutti::brass {
+namespace tutti::fingering_planner {
 namespace {
 
 // Horii's claim made true: a new instrument is only a new data file. An E♭ soprano cornet
@@ -321,4 +321,4 @@ TEST(BrassPlanner, ANewInstrumentNeedsOnlyADataFile) {
 }
 
 }  // namespace
-}  // namespace tutti::brass
+}  // namespace tutti::fingering_planner

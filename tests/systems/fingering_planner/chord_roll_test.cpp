@@ -13,7 +13,7 @@
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 music::Note note(int pitch, std::int64_t onset_ticks, std::int64_t offset_ticks, music::Hand hand) {
@@ -104,4 +104,4 @@ TEST(ChordRoll, ThirdPartyChordsTooWideForTheHandAreRolledAndNoneRemain) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -9,7 +9,7 @@
 #include <tutti/fingering_planner/transition_cost.hpp>
 #include "planner_test_util.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 using music::Hand;
@@ -125,4 +125,4 @@ TEST(DefaultRules, TheHandOfAnEventFollowsFromItsArea) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

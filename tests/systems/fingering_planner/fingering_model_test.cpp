@@ -5,7 +5,7 @@
 
 #include <tutti/piano_model/keyboard_instruments.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 // Each keyboard's own key sizes, one hand: on the harpsichord's narrower keys (a 152.4 mm
@@ -30,4 +30,4 @@ TEST(FingeringModel, EachInstrumentsKeysTheSameHand) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

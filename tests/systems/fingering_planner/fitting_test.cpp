@@ -22,7 +22,7 @@
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 namespace fs = std::filesystem;
@@ -269,4 +269,4 @@ TEST(FittingFigures, DISABLED_FullFitFromDefault) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -12,7 +12,7 @@
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 using music::Hand;
@@ -339,4 +339,4 @@ TEST(HandAssignment, ScarlattisWideRightHandChordsAreShared) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -17,7 +17,7 @@
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 using music::Hand;
@@ -237,4 +237,4 @@ TEST(LocalReplan, RejectsAPlanOfAnotherPiece) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

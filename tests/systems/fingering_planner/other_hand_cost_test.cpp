@@ -13,7 +13,7 @@
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 using music::Hand;
@@ -104,4 +104,4 @@ TEST(OtherHandCost, ThirdPartyLeftHandsCrowdTheRightHandLess) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

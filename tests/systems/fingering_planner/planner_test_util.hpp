@@ -10,7 +10,7 @@
 #include <tutti/fingering_planner/fingering_model.hpp>
 #include <tutti/fingering_planner/hand_plan.hpp>
 
-namespace tutti::piano::test {
+namespace tutti::fingering_planner::test {
 
 inline const FingeringModel& model(const std::string& weights) {
   static const FingeringModel paper = [] {
@@ -41,4 +41,4 @@ inline std::string fingers_text(const std::vector<int>& fingers) {
   return text;
 }
 
-}  // namespace tutti::piano::test
+}  // namespace tutti::fingering_planner::test

@@ -13,7 +13,7 @@
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 using music::Hand;
@@ -191,4 +191,4 @@ TEST(Scales, AllKeysMatchTheFileMarks) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -15,7 +15,7 @@
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 using music::Hand;
@@ -268,9 +268,9 @@ TEST(ScorePlan, PolonaisesAgreeWithTheEditorsMarks) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 // A legato leap (C4 then C6, each held until the next): the hand areas cannot overlap, so the
@@ -295,4 +295,4 @@ TEST(ScorePlan, CorridorsLeaveTheBudgetedTravelTimeBeforeALeap) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

@@ -20,7 +20,7 @@
 #include "planner_test_util.hpp"
 #include "testdata.hpp"
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 using music::Hand;
@@ -288,4 +288,4 @@ TEST(StreamingAgreement, Deterministic) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

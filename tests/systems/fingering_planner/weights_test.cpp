@@ -9,7 +9,7 @@
 #include <tutti/fingering_planner/cost_weights.hpp>
 #include <tutti/fingering_planner/fingering_model.hpp>
 
-namespace tutti::piano {
+namespace tutti::fingering_planner {
 namespace {
 
 TEST(CostWeights, BothPresetsLoad) {
@@ -94,4 +94,4 @@ TEST(CostWeights, ShiftAndSpeedLimitKeysAreChecked) {
 }
 
 }  // namespace
-}  // namespace tutti::piano
+}  // namespace tutti::fingering_planner

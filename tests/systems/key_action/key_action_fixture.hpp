@@ -22,7 +22,7 @@ struct Content {
   KeyAction action;
   StyleBook styles;
   finger_motion::FingerMotionParams params;
-  piano::FingeringModel model;
+  fingering_planner::FingeringModel model;
 };
 
 inline const Content& content() {
@@ -34,7 +34,7 @@ inline const Content& content() {
     auto params = finger_motion::load_finger_motion_params(
         finger_motion::finger_motion_params_path(content_dir()));
     EXPECT_TRUE(params.ok());
-    auto model = piano::load_fingering_model("default", "", content_dir());
+    auto model = fingering_planner::load_fingering_model("default", "", content_dir());
     EXPECT_TRUE(model.ok());
     return Content{*action, *styles, *params, *model};
   }();

@@ -11,7 +11,7 @@ namespace tutti::key_action {
 namespace {
 
 NoteStrokes strokes_for(const music::Score& score, const PerformanceStyle& style,
-                        std::uint64_t seed, piano::ScorePlan* fingering_out = nullptr) {
+                        std::uint64_t seed, fingering_planner::ScorePlan* fingering_out = nullptr) {
   auto plan = piano_performance::plan_performance(score, test::content().model);
   EXPECT_TRUE(plan.ok());
   if (fingering_out != nullptr) *fingering_out = plan->fingering;

@@ -29,15 +29,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const piano::FingeringModel& model(std::string_view weights = "default",
-                                   std::string_view hand = "") {
-  static std::map<std::pair<std::string, std::string>, piano::FingeringModel> models;
+const fingering_planner::FingeringModel& model(std::string_view weights = "default",
+                                               std::string_view hand = "") {
+  static std::map<std::pair<std::string, std::string>, fingering_planner::FingeringModel> models;
   const std::pair<std::string, std::string> key{weights, hand};
   auto it = models.find(key);
   if (it == models.end()) {
-    auto loaded = piano::load_fingering_model(weights, hand);
+    auto loaded = fingering_planner::load_fingering_model(weights, hand);
     EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message);
-    it = models.emplace(key, loaded.ok() ? std::move(*loaded) : piano::FingeringModel{}).first;
+    it = models.emplace(key, loaded.ok() ? std::move(*loaded) : fingering_planner::FingeringModel{})
+             .first;
   }
   return it->second;
 }
@@ -260,12 +261,13 @@ TEST(PerformancePlanPieces, DefaultSmoothingStaysInsideUnderOtherSettings) {
     const char* weights;
     const char* hand;
     bool pins;
-    piano::PlannerMode mode;
+    fingering_planner::PlannerMode mode;
   };
   const Setting settings[] = {
-      {"paper weights, small hand", "paper", "small", false, piano::PlannerMode::exact},
-      {"the files' marks pinned, large hand", "default", "large", true, piano::PlannerMode::exact},
-      {"lookahead planner", "default", "", false, piano::PlannerMode::lookahead},
+      {"paper weights, small hand", "paper", "small", false, fingering_planner::PlannerMode::exact},
+      {"the files' marks pinned, large hand", "default", "large", true,
+       fingering_planner::PlannerMode::exact},
+      {"lookahead planner", "default", "", false, fingering_planner::PlannerMode::lookahead},
   };
   int paper_jumps = 0;
   for (const Setting& setting : settings) {

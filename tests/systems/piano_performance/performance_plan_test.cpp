@@ -14,11 +14,11 @@
 namespace tutti::piano_performance {
 namespace {
 
-const piano::FingeringModel& default_model() {
-  static const piano::FingeringModel m = [] {
-    auto loaded = piano::load_fingering_model("default");
+const fingering_planner::FingeringModel& default_model() {
+  static const fingering_planner::FingeringModel m = [] {
+    auto loaded = fingering_planner::load_fingering_model("default");
     EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message);
-    return loaded.ok() ? std::move(*loaded) : piano::FingeringModel{};
+    return loaded.ok() ? std::move(*loaded) : fingering_planner::FingeringModel{};
   }();
   return m;
 }
