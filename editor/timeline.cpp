@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <tutti/components/breath_schedule.hpp>
 #include <tutti/components/note.hpp>
@@ -35,6 +36,18 @@ const stage::FamilyPlugin* family_of(const stage::Stage& stage, const stage::Sea
     if (family->name() == seat.family) return family;
   }
   return nullptr;
+}
+
+// The family's marking of note `note` of score `score`, or nullptr (`markings` sorted by
+// (score, note), as PlayerView::notes is: a re-plan builds every lane, so no linear scan per note).
+const stage::NoteMarking* find_marking(const std::vector<stage::NoteMarking>& markings,
+                                       std::size_t score, std::size_t note) {
+  const auto it =
+      std::lower_bound(markings.begin(), markings.end(), std::make_pair(score, note),
+                       [](const stage::NoteMarking& m, std::pair<std::size_t, std::size_t> key) {
+                         return std::make_pair(m.score, m.note) < key;
+                       });
+  return it != markings.end() && it->score == score && it->note == note ? &*it : nullptr;
 }
 
 // A performer's lane: their notes (as written), their planned breaths, and what their family
@@ -73,12 +86,11 @@ TimelineLane performer_lane(const stage::Stage& stage, ecs::Entity performer) {
       n.end_s = note->written_offset_s;
       n.key = note->pitch;
       n.playable = note->playable;
-      for (const stage::NoteMarking& marking : view.notes) {
-        if (marking.score != s || marking.note != i) continue;
-        n.finger = marking.finger;
-        n.right_hand = marking.right_hand;
-        n.foot = marking.foot;
-        n.pinned = marking.pinned;
+      if (const stage::NoteMarking* marking = find_marking(view.notes, s, i)) {
+        n.finger = marking->finger;
+        n.right_hand = marking->right_hand;
+        n.foot = marking->foot;
+        n.pinned = marking->pinned;
       }
       lane.notes.push_back(n);
       lane.lowest_key = std::min(lane.lowest_key, note->pitch);

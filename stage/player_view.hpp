@@ -47,7 +47,7 @@ struct PlayerView {
   // Notes played by fingers: each may be pinned to a finger (pins, the scene file's "pins").
   bool fingered = false;
   std::vector<PinView> pins;
-  std::vector<NoteMarking> notes;
+  std::vector<NoteMarking> notes;  // sorted by (score, note): looked up by binary search
   // Takes expression spans (the scene file's "expressions"), as written.
   bool expressive = false;
   std::vector<scene::Expression> expressions;

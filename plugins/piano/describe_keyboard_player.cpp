@@ -2,7 +2,9 @@
 // What the editor shows of a keyboard player (stage/player_view.hpp): their hand size, pins,
 // each note's planned finger and hand (or the foot that plays a pedal note), and the hands'
 // allowed bands and paths.
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <tutti/components/note.hpp>
 #include <tutti/finger_motion/finger_pose_system.hpp>
@@ -74,11 +76,15 @@ void PianoPlugin::describe_player(const stage::Stage& stage, ecs::Entity perform
   }
   // An organist's pedal notes: the foot that plays each (pins are for fingers only).
   if (const auto* plan = world.try_get<PianistPlan>(performer); plan != nullptr && plan->feet) {
+    // out.notes is in (score, note) order, as built above.
     for (const PedalPress& press : plan->feet->presses) {
-      for (stage::NoteMarking& marking : out.notes) {
-        if (marking.score == player.music_file && marking.note == press.note) {
-          marking.foot = press.foot;
-        }
+      const auto it = std::lower_bound(
+          out.notes.begin(), out.notes.end(), std::make_pair(player.music_file, press.note),
+          [](const stage::NoteMarking& m, std::pair<std::size_t, std::size_t> key) {
+            return std::make_pair(m.score, m.note) < key;
+          });
+      if (it != out.notes.end() && it->score == player.music_file && it->note == press.note) {
+        it->foot = press.foot;
       }
     }
   }
